@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Fuzzes the PDDL parser, checker and writer with libFuzzer under ASan and
+# UBSan for SECONDS seconds (default 60). Seeds: the IPC files and the
+# project's test data. Exit status is non-zero on any finding; a crashing
+# input is left in build-fuzz/ for replay: build-fuzz/fuzz_parser FILE
+set -euo pipefail
+seconds=${1:-60}
+root=$(cd "$(dirname "$0")/.." && pwd)
+shared=${ALPLAN_SHARED_DIR:-$root/../shared}
+out=${ALPLAN_FUZZ_DIR:-$root/build-fuzz}
+mkdir -p "$out/corpus"
+
+sources=("$root"/pddl_parser/*.cpp "$root/benchmarks/fuzz_parser.cpp")
+binary="$out/fuzz_parser"
+newest=$(ls -t "${sources[@]}" "$root"/pddl_parser/*.h | head -1)
+if [ ! -x "$binary" ] || [ "$newest" -nt "$binary" ]; then
+  echo "fuzz: building $binary"
+  clang++ -std=c++20 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
+    -I "$root" "${sources[@]}" -o "$binary"
+fi
+
+seeds="$out/seeds"
+if [ ! -d "$seeds" ]; then
+  mkdir -p "$seeds"
+  # Every domain, and the smaller problems (libFuzzer truncates at -max_len).
+  find "$shared/benchmarks/ipc" -name '*.pddl' -size -24k -print0 |
+    while IFS= read -r -d '' f; do cp "$f" "$seeds/$(echo "$f" | md5sum | cut -c1-16).pddl"; done
+  find "$root/tests/data" -name '*.pddl' -exec cp {} "$seeds/" \;
+fi
+
+echo "fuzz: running for ${seconds}s"
+cd "$out"
+"$binary" -max_total_time="$seconds" -max_len=24576 -timeout=10 -rss_limit_mb=2048 \
+  -dict="$root/benchmarks/pddl.dict" -print_final_stats=1 corpus "$seeds" 2>&1 | tail -n 25

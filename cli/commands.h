@@ -1,0 +1,17 @@
+// The subcommands of `alplan`. Each registers its options on the app and, when
+// chosen, leaves its exit code in `exit_code`. Exit codes shared by all:
+// 0 success, 2 input error (unreadable or invalid files, bad options).
+#pragma once
+
+namespace CLI {
+class App;
+}
+
+namespace alplan::cli {
+
+constexpr int kExitOk = 0;
+constexpr int kExitInputError = 2;
+
+void add_parse_command(CLI::App& app, int& exit_code);
+
+}  // namespace alplan::cli

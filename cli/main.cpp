@@ -1,0 +1,25 @@
+// alplan: a thin shell over the libraries; the only place CLI11 is used.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "cli/commands.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"alplan: PDDL 2.2 temporal planning toolkit for assisted-living deliberation"};
+  app.require_subcommand(1);
+  app.set_help_all_flag("--help-all", "Print help for every subcommand");
+  int exit_code = alplan::cli::kExitOk;
+  alplan::cli::add_parse_command(app, exit_code);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return alplan::cli::kExitInputError;
+  }
+  return exit_code;
+}

@@ -1,0 +1,62 @@
+; Every construct of PDDL 2.2 the parser supports, in one domain. Not meant to
+; be planned on: it exercises the parser, the checker and the writer.
+(define (domain Constructs)
+  (:requirements :strips :typing :negative-preconditions :disjunctive-preconditions :equality
+                 :quantified-preconditions :conditional-effects :numeric-fluents :durative-actions
+                 :duration-inequalities :continuous-effects :derived-predicates :timed-initial-literals
+                 :preferences :constraints :action-costs)
+  (:types vehicle place - object
+          truck - vehicle
+          amphibian - (either vehicle boat)
+          city airport - place)
+  (:constants depot - place)
+  (:predicates (at ?v - (either vehicle boat) ?p - place)
+               (road ?from ?to - place)
+               (fuelled ?v - vehicle)
+               (reachable ?from ?to - place)
+               (busy))
+  (:functions (distance ?a ?b - place) - number
+              (fuel ?v - vehicle)
+              (total-cost))
+  (:constraints (and (always (not (busy)))
+                     (preference visit (sometime (road depot depot)))
+                     (within 10 (busy))
+                     (sometime-after (busy) (not (busy)))
+                     (always-within 5 (busy) (not (busy)))
+                     (hold-during 1 2 (busy))
+                     (hold-after 3 (busy))
+                     (at-most-once (busy))
+                     (sometime-before (busy) (busy))
+                     (at end (busy))))
+  (:derived (reachable ?a ?b - place) (road ?a ?b))
+  (:derived (reachable ?a ?b - place)
+            (exists (?c - place) (and (road ?a ?c) (reachable ?c ?b))))
+  (:action refuel
+    :parameters (?v - vehicle ?p - place)
+    :precondition (and (at ?v ?p) (not (fuelled ?v)) (or (= ?p depot) (imply (busy) (road ?p ?p)))
+                       (forall (?q - place) (reachable ?p ?q))
+                       (< (fuel ?v) 10)
+                       (preference cheap (<= (total-cost) 100)))
+    :effect (and (fuelled ?v)
+                 (assign (fuel ?v) 10)
+                 (increase (total-cost) (* 2 (- 10 (fuel ?v))))
+                 (scale-up (fuel ?v) 1.5)
+                 (scale-down (fuel ?v) 2)
+                 (forall (?w - vehicle) (when (and (at ?w ?p) (not (= ?w ?v))) (not (fuelled ?w))))))
+  (:durative-action Drive
+    :parameters (?v - vehicle ?from ?to - place)
+    :duration (and (>= ?duration (/ (distance ?from ?to) 2)) (<= ?duration (distance ?from ?to)))
+    :condition (and (at start (at ?v ?from))
+                    (over all (road ?from ?to))
+                    (at end (>= (fuel ?v) 0))
+                    (at start (> (fuel ?v) (- (distance ?from ?to)))))
+    :effect (and (at start (not (at ?v ?from)))
+                 (at end (at ?v ?to))
+                 (at end (decrease (fuel ?v) (* 0.5 ?duration)))
+                 (decrease (fuel ?v) (* #t 1))
+                 (forall (?w - truck) (at end (when (at ?w ?to) (fuelled ?w))))))
+  (:durative-action wait
+    :parameters ()
+    :duration (at end (= ?duration 1))
+    :condition ()
+    :effect (at end (busy))))

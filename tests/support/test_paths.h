@@ -1,0 +1,18 @@
+// Where tests find the shared benchmarks and the project's test data.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace alplan::test {
+
+// ../shared beside the checkout (set at configure time).
+std::string shared_dir();
+std::string benchmarks_dir();  // shared_dir() + "/benchmarks"
+std::string source_dir();
+std::string data_dir();  // tests/data
+std::string read_text(const std::string& path);
+// Every regular file below `root` whose name ends in `suffix`, sorted.
+std::vector<std::string> files_below(const std::string& root, const std::string& suffix);
+
+}  // namespace alplan::test
