@@ -1,5 +1,5 @@
 // libFuzzer target for the PDDL parser, checker and writer.
-// Properties checked on any input bytes: no crash, leak, hang or undefined
+// Properties checked on any input bytes (also read as a plan file): no crash, leak, hang or undefined
 // behaviour (the sanitizers), and for every input that parses, the writer's
 // output parses back to the same AST.
 #include <cstddef>
@@ -10,6 +10,7 @@
 #include "pddl_parser/checker.h"
 #include "pddl_parser/parser.h"
 #include "pddl_parser/writer.h"
+#include "planner/plan.h"
 
 namespace {
 
@@ -37,6 +38,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const ProblemParseResult again = parse_problem(write_problem(*problem.ast), "written");
       require(again.ok() && *again.ast == *problem.ast);
     }
+  }
+  // The plan reader sees the same bytes: it must not crash either.
+  const alplan::PlanReadResult plan = alplan::read_plan(text, "fuzz");
+  if (plan.ok()) {
+    const alplan::PlanReadResult again = alplan::read_plan(alplan::write_plan(plan.plan, 17), "written");
+    require(again.ok() && again.plan.steps.size() == plan.plan.steps.size());
   }
   return 0;
 }

@@ -10,9 +10,9 @@ shared=${ALPLAN_SHARED_DIR:-$root/../shared}
 out=${ALPLAN_FUZZ_DIR:-$root/build-fuzz}
 mkdir -p "$out/corpus"
 
-sources=("$root"/pddl_parser/*.cpp "$root/benchmarks/fuzz_parser.cpp")
+sources=("$root"/pddl_parser/*.cpp "$root/planner/plan.cpp" "$root/benchmarks/fuzz_parser.cpp")
 binary="$out/fuzz_parser"
-newest=$(ls -t "${sources[@]}" "$root"/pddl_parser/*.h | head -1)
+newest=$(ls -t "${sources[@]}" "$root"/pddl_parser/*.h "$root"/planner/plan.h | head -1)
 if [ ! -x "$binary" ] || [ "$newest" -nt "$binary" ]; then
   echo "fuzz: building $binary"
   clang++ -std=c++20 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \

@@ -10,8 +10,12 @@ class App;
 namespace alplan::cli {
 
 constexpr int kExitOk = 0;
+constexpr int kExitInvalid = 1;
 constexpr int kExitInputError = 2;
 
 void add_parse_command(CLI::App& app, int& exit_code);
+void add_ground_command(CLI::App& app, int& exit_code);
+void add_validate_command(CLI::App& app, int& exit_code);
+void add_bench_command(CLI::App& app, int& exit_code);
 
 }  // namespace alplan::cli

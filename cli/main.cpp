@@ -11,6 +11,9 @@ int main(int argc, char** argv) {
   app.set_help_all_flag("--help-all", "Print help for every subcommand");
   int exit_code = alplan::cli::kExitOk;
   alplan::cli::add_parse_command(app, exit_code);
+  alplan::cli::add_ground_command(app, exit_code);
+  alplan::cli::add_validate_command(app, exit_code);
+  alplan::cli::add_bench_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

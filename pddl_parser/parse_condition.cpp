@@ -158,8 +158,8 @@ Condition parse_condition(ParserCore& core) {
     const bool start = core.take().text == "start";
     return parse_timed(core, start ? TimeSpecifier::AtStart : TimeSpecifier::AtEnd, where);
   }
-  if (h == "over") {
-    core.expect_exact_symbol("all", "after 'over' (a durative condition is (over all C))");
+  if (h == "over" && core.at_symbol("all") && core.peek_second().kind == TokenKind::LeftParen) {
+    core.take();
     return parse_timed(core, TimeSpecifier::OverAll, where);
   }
   if (h == "preference") return parse_preference(core, where);

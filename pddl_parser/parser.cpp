@@ -73,7 +73,13 @@ DomainParseResult parse_domain(std::string_view text, const std::string& file_na
 
 ProblemParseResult parse_problem(std::string_view text, const std::string& file_name,
                                  const ParserOptions& options) {
-  return parse_definition<Problem>(text, file_name, options, "problem", detail::parse_problem_section);
+  ProblemParseResult result =
+      parse_definition<Problem>(text, file_name, options, "problem", detail::parse_problem_section);
+  if (result.ast && result.ast->domain_name.empty()) {
+    result.diagnostics.push_back({Severity::Error, file_name, result.ast->location.line, result.ast->location.column,
+                                  "the problem does not name its domain: add (:domain NAME)"});
+  }
+  return result;
 }
 
 FileKind detect_file_kind(std::string_view text) {

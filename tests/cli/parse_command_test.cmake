@@ -1,16 +1,6 @@
 # Runs `alplan parse` as a user would and checks exit codes and output.
 # Variables: ALPLAN (the executable), SHARED (../shared), DATA (tests/data).
-
-function(expect_run expected_code expected_output)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT code EQUAL expected_code)
-    message(FATAL_ERROR "${ARGN}\nexited ${code}, expected ${expected_code}\nstdout: ${out}\nstderr: ${err}")
-  endif()
-  string(FIND "${out}${err}" "${expected_output}" at)
-  if(at EQUAL -1)
-    message(FATAL_ERROR "${ARGN}\noutput lacks '${expected_output}'\nstdout: ${out}\nstderr: ${err}")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/expect_run.cmake)
 
 set(zeno ${SHARED}/benchmarks/ipc/ipc-2002/zenotravel-time-simple-automatic)
 expect_run(0 "durative actions: 5" ${ALPLAN} parse ${zeno}/domain.pddl ${zeno}/instances/instance-1.pddl)

@@ -217,3 +217,16 @@ TEST_CASE("(at start ...) is timed while (at x y) is the predicate at") {
   CHECK(m.condition->children[1].children[0].atom.args[1].name == "start");
   CHECK(m.effect->kind == Effect::Kind::Timed);
 }
+
+TEST_CASE("a problem must name its domain") {
+  ProblemParseResult r = parse_problem("(define (problem p)\n (:objects a) (:init) (:goal (and)))", "p.pddl");
+  REQUIRE_FALSE(r.ok());
+  CHECK(r.diagnostics.back().to_string() == "p.pddl:1:1: error: the problem does not name its domain: add (:domain NAME)");
+}
+
+TEST_CASE("fuzzer finding: a problem without (:domain ...) no longer round-trips into garbage") {
+  // libFuzzer found that such a problem was accepted and written as
+  // (:domain ), which does not parse back. It is now an input error.
+  const std::string text = alplan::test::read_text(alplan::test::data_dir() + "/fuzz/problem_without_domain.pddl");
+  CHECK_FALSE(parse_problem(text, "f.pddl").ok());
+}

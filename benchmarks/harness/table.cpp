@@ -1,0 +1,64 @@
+#include "benchmarks/harness/table.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <ostream>
+
+namespace alplan::bench {
+
+std::string fixed(double value, int decimals) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+  return buffer;
+}
+
+void Table::print(std::ostream& out) const {
+  std::vector<std::size_t> width(header_.size(), 0);
+  for (std::size_t c = 0; c < header_.size(); ++c) width[c] = header_[c].size();
+  for (const auto& row : rows_) {
+    for (std::size_t c = 0; c < row.size() && c < width.size(); ++c) width[c] = std::max(width[c], row[c].size());
+  }
+  auto line = [&](const std::vector<std::string>& cells) {
+    for (std::size_t c = 0; c < header_.size(); ++c) {
+      const std::string cell = c < cells.size() ? cells[c] : "";
+      out << cell << std::string(width[c] - cell.size() + (c + 1 < header_.size() ? 2 : 0), ' ');
+    }
+    out << '\n';
+  };
+  line(header_);
+  for (const auto& row : rows_) line(row);
+}
+
+void Table::print_markdown(std::ostream& out) const {
+  auto line = [&](const std::vector<std::string>& cells) {
+    out << '|';
+    for (std::size_t c = 0; c < header_.size(); ++c) out << ' ' << (c < cells.size() ? cells[c] : "") << " |";
+    out << '\n';
+  };
+  line(header_);
+  out << '|';
+  for (std::size_t c = 0; c < header_.size(); ++c) out << "---|";
+  out << '\n';
+  for (const auto& row : rows_) line(row);
+}
+
+void Table::write_csv(std::ostream& out) const {
+  auto line = [&](const std::vector<std::string>& cells) {
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      const bool quote = cells[c].find_first_of(",\"\n") != std::string::npos;
+      if (c) out << ',';
+      if (!quote) {
+        out << cells[c];
+        continue;
+      }
+      out << '"';
+      for (char ch : cells[c]) out << (ch == '"' ? "\"\"" : std::string(1, ch));
+      out << '"';
+    }
+    out << '\n';
+  };
+  line(header_);
+  for (const auto& row : rows_) line(row);
+}
+
+}  // namespace alplan::bench

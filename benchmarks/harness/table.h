@@ -1,0 +1,28 @@
+// A text table with aligned columns, and the same rows as CSV, for harness
+// reports that people read and scripts parse.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace alplan::bench {
+
+class Table {
+ public:
+  explicit Table(std::vector<std::string> header) : header_(std::move(header)) {}
+  void add(std::vector<std::string> row) { rows_.push_back(std::move(row)); }
+  void print(std::ostream& out) const;       // aligned, for the terminal
+  void print_markdown(std::ostream& out) const;
+  void write_csv(std::ostream& out) const;
+  std::size_t size() const { return rows_.size(); }
+
+ private:
+  std::vector<std::string> header_;
+  std::vector<std::vector<std::string>> rows_;
+};
+
+// Fixed-point text with `decimals` digits.
+std::string fixed(double value, int decimals);
+
+}  // namespace alplan::bench

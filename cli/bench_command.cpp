@@ -1,0 +1,54 @@
+// alplan bench grounding|...: the benchmark harness, one process per run.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <memory>
+
+#include "benchmarks/harness/grounding_bench.h"
+#include "benchmarks/harness/process_runner.h"
+#include "cli/commands.h"
+
+namespace alplan::cli {
+namespace {
+
+struct BenchGroundingOptions {
+  std::string suite;
+  std::string out;
+  double time_limit = 60;
+  double memory_limit = 4096;
+  bool all = false;
+};
+
+int run_grounding(const BenchGroundingOptions& options) {
+  bench::GroundingBenchOptions o;
+  o.suite = options.suite;
+  o.out_dir = options.out;
+  o.alplan = bench::self_executable();
+  o.limits = {options.time_limit, options.memory_limit};
+  o.largest_only = !options.all;
+  try {
+    return bench::run_grounding_bench(o, std::cout, std::cerr) == 0 ? kExitOk : kExitInvalid;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitInputError;
+  }
+}
+
+}  // namespace
+
+void add_bench_command(CLI::App& app, int& exit_code) {
+  CLI::App* bench = app.add_subcommand("bench", "Benchmark harness: runs in separate processes under limits");
+  bench->require_subcommand(1);
+
+  auto grounding = std::make_shared<BenchGroundingOptions>();
+  CLI::App* g = bench->add_subcommand("grounding", "Ground the largest problem of every domain; time and memory");
+  g->add_option("--suite", grounding->suite, "Suite folder (like shared/benchmarks/ipc) or list file")->required();
+  g->add_option("--out", grounding->out, "Folder for grounding.csv, .json and .md");
+  g->add_option("--time-limit", grounding->time_limit, "Seconds per problem")->check(CLI::PositiveNumber);
+  g->add_option("--memory-limit", grounding->memory_limit, "MiB of address space per problem")
+      ->check(CLI::PositiveNumber);
+  g->add_flag("--all", grounding->all, "Every problem, not only the largest of each domain");
+  g->callback([grounding, &exit_code] { exit_code = run_grounding(*grounding); });
+}
+
+}  // namespace alplan::cli

@@ -1,0 +1,143 @@
+// The grounded task: facts and numeric variables by id, ground actions with
+// their at-start / over-all / at-end conditions and start / end effects (the
+// snap actions of POPF), duration constraints, timed initial literals sorted
+// by time, axioms by stratum, the goal and the metric.
+//
+// Contract: immutable once built (shared as std::shared_ptr<const
+// GroundTask>); deterministic (the same files give the same ids). Conditions
+// are conjunctions of literals and numeric comparisons, with general
+// formulas kept only where a disjunction survives simplification.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "planner/fact_table.h"
+#include "planner/ids.h"
+#include "planner/normalized_task.h"
+
+namespace alplan {
+
+struct GroundExpression {
+  enum class Kind : unsigned char {
+    Constant, Variable, Add, Subtract, Multiply, Divide, Negate, Duration, TotalTime,
+    Undefined,  // a static function term the problem gives no value
+  };
+  Kind kind = Kind::Constant;
+  double value = 0.0;
+  NumericVarId variable = kNoId;  // Variable
+  std::string undefined_term;     // Undefined, for messages
+  std::vector<GroundExpression> operands;
+};
+
+struct GroundComparison {
+  pddl::Comparison comparison = pddl::Comparison::Equal;
+  GroundExpression left, right;
+};
+
+// A condition that did not reduce to a conjunction (a disjunction over
+// fluents survived simplification).
+struct GroundFormula {
+  enum class Kind : unsigned char { True, False, Literal, Comparison, And, Or };
+  Kind kind = Kind::True;
+  FactId fact = kNoId;  // Literal
+  bool positive = true;
+  GroundComparison comparison;
+  std::vector<GroundFormula> children;
+  std::string reason;  // False: the instantiated condition that made it false
+};
+
+struct ConditionSet {
+  std::vector<FactId> positive;
+  std::vector<FactId> negative;
+  std::vector<GroundComparison> numeric;
+  std::vector<GroundFormula> complex;
+  // Set when the condition can never hold, with the condition that fails.
+  std::optional<std::string> never;
+
+  bool empty() const {
+    return positive.empty() && negative.empty() && numeric.empty() && complex.empty() && !never;
+  }
+};
+
+struct NumericAssignment {
+  NumericVarId variable = kNoId;
+  pddl::AssignOperator assign = pddl::AssignOperator::Assign;
+  GroundExpression value;
+};
+
+struct ConditionalEffect {
+  ConditionSet condition;
+  Moment condition_moment = Moment::Start;
+  std::vector<FactId> add, del;
+  std::vector<NumericAssignment> numeric;
+};
+
+struct HappeningEffects {
+  std::vector<FactId> add, del;
+  std::vector<NumericAssignment> numeric;
+  std::vector<ConditionalEffect> conditional;
+
+  bool empty() const { return add.empty() && del.empty() && numeric.empty() && conditional.empty(); }
+};
+
+struct GroundDurationConstraint {
+  pddl::Comparison comparison = pddl::Comparison::Equal;
+  GroundExpression value;
+  Moment moment = Moment::Start;
+};
+
+struct GroundAction {
+  std::uint32_t schema = 0;  // index into NormalizedTask::actions
+  std::vector<ObjectId> args;
+  bool durative = false;
+  ConditionSet at_start, over_all, at_end;  // instantaneous: at_start
+  HappeningEffects start, end;               // instantaneous: start
+  std::vector<GroundDurationConstraint> duration;
+};
+
+struct GroundAxiom {
+  FactId head = kNoId;
+  ConditionSet body;
+  std::uint32_t stratum = 0;
+};
+
+struct GroundTimedLiteral {
+  double time = 0.0;
+  FactId fact = kNoId;
+  bool positive = true;
+};
+
+struct GroundMetric {
+  bool minimize = true;
+  GroundExpression expression;
+};
+
+// Wall-clock seconds of each grounding pass.
+struct GroundingTimes {
+  double normalize = 0, reachability = 0, instantiate = 0, axioms = 0;
+};
+
+struct GroundTask {
+  std::shared_ptr<const NormalizedTask> lifted;
+  GroundKeyTable facts;    // head: PredicateId
+  GroundKeyTable numeric;  // head: FunctionId
+  std::vector<FactId> initial_facts;
+  std::vector<double> initial_values;  // per numeric variable; NaN when undefined
+  std::vector<GroundAction> actions;
+  std::vector<GroundAxiom> axioms;  // sorted by stratum
+  std::uint32_t strata = 0;
+  std::vector<GroundTimedLiteral> timed_literals;  // sorted by time
+  ConditionSet goal;
+  std::optional<GroundMetric> metric;
+  GroundingTimes times;
+
+  std::string fact_name(FactId fact) const;
+  std::string variable_name(NumericVarId variable) const;
+  std::string action_name(const GroundAction& action) const;
+  bool is_derived(FactId fact) const;
+};
+
+}  // namespace alplan

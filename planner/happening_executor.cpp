@@ -1,0 +1,391 @@
+#include "planner/happening_executor.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "pddl_parser/writer.h"
+#include "planner/evaluation.h"
+#include "planner/ground_printer.h"
+
+namespace alplan {
+namespace {
+
+void collect_facts(const GroundFormula& f, std::set<FactId>& out) {
+  if (f.kind == GroundFormula::Kind::Literal) out.insert(f.fact);
+  for (const GroundFormula& child : f.children) collect_facts(child, out);
+}
+
+void collect_variables(const GroundExpression& e, std::set<NumericVarId>& out) {
+  if (e.kind == GroundExpression::Kind::Variable) out.insert(e.variable);
+  for (const GroundExpression& operand : e.operands) collect_variables(operand, out);
+}
+
+void collect_variables(const GroundFormula& f, std::set<NumericVarId>& out) {
+  if (f.kind == GroundFormula::Kind::Comparison) {
+    collect_variables(f.comparison.left, out);
+    collect_variables(f.comparison.right, out);
+  }
+  for (const GroundFormula& child : f.children) collect_variables(child, out);
+}
+
+void collect_reads(const ConditionSet& c, std::set<FactId>& facts, std::set<NumericVarId>& values) {
+  facts.insert(c.positive.begin(), c.positive.end());
+  facts.insert(c.negative.begin(), c.negative.end());
+  for (const GroundComparison& cmp : c.numeric) {
+    collect_variables(cmp.left, values);
+    collect_variables(cmp.right, values);
+  }
+  for (const GroundFormula& f : c.complex) {
+    collect_facts(f, facts);
+    collect_variables(f, values);
+  }
+}
+
+bool additive(pddl::AssignOperator op) {
+  return op == pddl::AssignOperator::Increase || op == pddl::AssignOperator::Decrease;
+}
+
+double updated(double current, pddl::AssignOperator op, double value) {
+  if (std::isnan(current)) current = 0.0;  // VAL starts an undefined fluent at 0
+  switch (op) {
+    case pddl::AssignOperator::Assign: return value;
+    case pddl::AssignOperator::Increase: return current + value;
+    case pddl::AssignOperator::Decrease: return current - value;
+    case pddl::AssignOperator::ScaleUp: return current * value;
+    case pddl::AssignOperator::ScaleDown: return current / value;
+  }
+  return value;
+}
+
+}  // namespace
+
+std::string HappeningExecutor::explain(const EvaluationError& error) const {
+  if (error.variable() == kNoId) return error.what();
+  return "the value of " + task_.variable_name(error.variable()) + " is undefined";
+}
+
+HappeningExecutor::HappeningExecutor(const GroundTask& task, const ValidatorOptions& options)
+    : task_(task), epsilon_(options.epsilon), val_total_time_(options.val_total_time) {}
+
+const GroundAction* HappeningExecutor::action_of(const Event& e) const {
+  if (e.point == Point::Til) return nullptr;
+  return &task_.actions[steps_[e.scheduled].action];
+}
+
+std::string HappeningExecutor::event_name(const Event& e) const {
+  switch (e.point) {
+    case Point::Start: return steps_[e.scheduled].name + " - start";
+    case Point::End: return steps_[e.scheduled].name + " - end";
+    case Point::Instant: return steps_[e.scheduled].name;
+    case Point::Til: {
+      const GroundTimedLiteral& til = task_.timed_literals[e.scheduled];
+      const std::string fact = task_.fact_name(til.fact);
+      return "(timed initial literal " + (til.positive ? fact : "(not " + fact + ")") + ")";
+    }
+  }
+  return "?";
+}
+
+EvaluationContext HappeningExecutor::context_of(const Event& e) const {
+  EvaluationContext context;
+  if (e.point != Point::Til) context.duration = steps_[e.scheduled].duration;
+  return context;
+}
+
+Violation HappeningExecutor::violation(Violation::Kind kind, const Event& e) const {
+  Violation v;
+  v.kind = kind;
+  v.time = time_;
+  v.action = event_name(e);
+  if (e.point != Point::Til) {
+    v.step = steps_[e.scheduled].step;
+    v.line = steps_[e.scheduled].line;
+  }
+  return v;
+}
+
+void HappeningExecutor::load(const std::vector<ScheduledStep>& steps) {
+  steps_ = steps;
+  std::vector<Event> events;
+  for (std::size_t s = 0; s < steps_.size(); ++s) {
+    const bool durative = task_.actions[steps_[s].action].durative;
+    if (durative) {
+      events.push_back({Point::Start, steps_[s].start, s});
+      events.push_back({Point::End, steps_[s].start + steps_[s].duration, s});
+    } else {
+      events.push_back({Point::Instant, steps_[s].start, s});
+    }
+  }
+  for (std::size_t t = 0; t < task_.timed_literals.size(); ++t) {
+    events.push_back({Point::Til, task_.timed_literals[t].time, t});
+  }
+  std::stable_sort(events.begin(), events.end(), [](const Event& a, const Event& b) { return a.time < b.time; });
+  // A happening takes every point within epsilon/10 of its first point.
+  happenings_.clear();
+  happening_times_.clear();
+  for (std::size_t i = 0; i < events.size();) {
+    const double first = events[i].time;
+    std::vector<Event> group;
+    while (i < events.size() && events[i].time <= first + epsilon_ / 10.0) group.push_back(events[i++]);
+    happenings_.push_back(std::move(group));
+    happening_times_.push_back(first);
+  }
+  last_action_happening_ = 0;
+  for (std::size_t h = 0; h < happenings_.size(); ++h) {
+    for (const Event& e : happenings_[h]) {
+      if (e.point != Point::Til) last_action_happening_ = h;
+    }
+  }
+  state_ = ExplicitState();
+  for (FactId f : task_.initial_facts) state_.set_fact(f, true);
+  for (NumericVarId v = 0; v < task_.initial_values.size(); ++v) state_.set_value(v, task_.initial_values[v]);
+  derive(task_, state_);
+  running_.clear();
+  next_ = 0;
+  time_ = 0.0;
+  last_action_state_.reset();
+  last_action_time_ = 0.0;
+}
+
+std::optional<Violation> HappeningExecutor::check_conditions(const Event& e) {
+  const GroundAction* action = action_of(e);
+  if (!action) return std::nullopt;
+  const EvaluationContext context = context_of(e);
+  const Moment moment = e.point == Point::End ? Moment::End : Moment::Start;
+  if (e.point != Point::Instant) {
+    for (const GroundDurationConstraint& d : action->duration) {
+      if (d.moment != moment) continue;
+      const double bound = evaluate(d.value, state_, context);
+      const double given = steps_[e.scheduled].duration;
+      const bool ok = d.comparison == pddl::Comparison::Equal          ? std::fabs(given - bound) < epsilon_
+                      : d.comparison == pddl::Comparison::LessEqual    ? given - bound <= epsilon_
+                      : d.comparison == pddl::Comparison::GreaterEqual ? bound - given <= epsilon_
+                                                                        : true;
+      if (!ok) {
+        Violation v = violation(Violation::Kind::DurationViolation, e);
+        v.condition = "[" + pddl::format_number(given) + "] against (" + pddl::to_string(d.comparison) +
+                      " ?duration " + pddl::format_number(bound) + ")";
+        return v;
+      }
+    }
+  }
+  const ConditionSet& condition = e.point == Point::End ? action->at_end : action->at_start;
+  if (auto failed = first_unsatisfied(condition, state_, context, kNumericSlack)) {
+    Violation v = violation(Violation::Kind::UnsatisfiedPrecondition, e);
+    v.condition = describe(task_, condition, *failed);
+    return v;
+  }
+  return std::nullopt;
+}
+
+HappeningExecutor::Footprint HappeningExecutor::footprint(const Event& e) const {
+  Footprint f;
+  if (e.point == Point::Til) {
+    const GroundTimedLiteral& til = task_.timed_literals[e.scheduled];
+    (til.positive ? f.adds : f.dels).insert(til.fact);
+    return f;
+  }
+  const GroundAction& action = *action_of(e);
+  collect_reads(e.point == Point::End ? action.at_end : action.at_start, f.reads, f.reads_values);
+  for (const GroundDurationConstraint& d : action.duration) collect_variables(d.value, f.reads_values);
+  const HappeningEffects& effects = e.point == Point::End ? action.end : action.start;
+  const EvaluationContext context = context_of(e);
+  auto add_effects = [&](const std::vector<FactId>& adds, const std::vector<FactId>& dels,
+                         const std::vector<NumericAssignment>& numeric) {
+    f.adds.insert(adds.begin(), adds.end());
+    f.dels.insert(dels.begin(), dels.end());
+    for (const NumericAssignment& a : numeric) {
+      collect_variables(a.value, f.reads_values);
+      f.writes.emplace_back(a.variable, a.assign);
+    }
+  };
+  add_effects(effects.add, effects.del, effects.numeric);
+  for (const ConditionalEffect& c : effects.conditional) {
+    if (holds(c.condition, state_, context, kNumericSlack)) add_effects(c.add, c.del, c.numeric);
+  }
+  return f;
+}
+
+std::optional<Violation> HappeningExecutor::check_mutex(const std::vector<Event>& events) {
+  std::vector<Footprint> prints;
+  for (const Event& e : events) prints.push_back(footprint(e));
+  auto clash = [&](std::size_t a, std::size_t b, std::string what) {
+    Violation v = violation(Violation::Kind::MutexViolation, events[a]);
+    v.condition = std::move(what);
+    v.other_action = event_name(events[b]);
+    return v;
+  };
+  for (std::size_t a = 0; a < events.size(); ++a) {
+    const Footprint& fa = prints[a];
+    for (std::size_t i = 0; i < fa.writes.size(); ++i) {
+      for (std::size_t j = i + 1; j < fa.writes.size(); ++j) {
+        if (fa.writes[i].first == fa.writes[j].first && !(additive(fa.writes[i].second) && additive(fa.writes[j].second))) {
+          return clash(a, a, "assigns to " + task_.variable_name(fa.writes[i].first) + " twice");
+        }
+      }
+    }
+    for (std::size_t b = 0; b < events.size(); ++b) {
+      if (a == b) continue;
+      const Footprint& fb = prints[b];
+      for (FactId p : fa.reads) {
+        if (fb.adds.count(p)) return clash(b, a, "adds " + task_.fact_name(p) + ", which the other requires");
+        if (fb.dels.count(p)) return clash(b, a, "deletes " + task_.fact_name(p) + ", which the other requires");
+      }
+      for (FactId p : fa.adds) {
+        if (fb.dels.count(p)) return clash(a, b, "adds " + task_.fact_name(p) + ", which the other deletes");
+      }
+      for (const auto& [variable, op] : fb.writes) {
+        if (fa.reads_values.count(variable)) {
+          return clash(b, a, "changes " + task_.variable_name(variable) + ", which the other reads");
+        }
+        for (const auto& [other, other_op] : fa.writes) {
+          if (other == variable && !(additive(op) && additive(other_op))) {
+            return clash(b, a, "changes " + task_.variable_name(variable) + ", which the other also changes");
+          }
+        }
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<Violation> HappeningExecutor::apply(const std::vector<Event>& events) {
+  std::vector<FactId> adds, dels;
+  std::vector<Update> updates;
+  for (const Event& e : events) {
+    if (e.point == Point::Til) {
+      const GroundTimedLiteral& til = task_.timed_literals[e.scheduled];
+      (til.positive ? adds : dels).push_back(til.fact);
+      continue;
+    }
+    const GroundAction& action = *action_of(e);
+    const HappeningEffects& effects = e.point == Point::End ? action.end : action.start;
+    const EvaluationContext context = context_of(e);
+    auto collect = [&](const std::vector<FactId>& a, const std::vector<FactId>& d,
+                       const std::vector<NumericAssignment>& numeric) {
+      adds.insert(adds.end(), a.begin(), a.end());
+      dels.insert(dels.end(), d.begin(), d.end());
+      for (const NumericAssignment& n : numeric) {
+        updates.push_back({n.variable, n.assign, evaluate(n.value, state_, context)});
+      }
+    };
+    collect(effects.add, effects.del, effects.numeric);
+    for (const ConditionalEffect& c : effects.conditional) {
+      if (holds(c.condition, state_, context, kNumericSlack)) collect(c.add, c.del, c.numeric);
+    }
+  }
+  for (FactId f : dels) state_.set_fact(f, false);
+  for (FactId f : adds) state_.set_fact(f, true);
+  for (const Update& u : updates) state_.set_value(u.variable, updated(state_.value(u.variable), u.assign, u.value));
+  derive(task_, state_);
+  return std::nullopt;
+}
+
+std::optional<Violation> HappeningExecutor::check_invariants(double until) {
+  for (const auto& [scheduled, action] : running_) {
+    const ConditionSet& invariant = task_.actions[action].over_all;
+    if (invariant.empty()) continue;
+    EvaluationContext context;
+    context.duration = steps_[scheduled].duration;
+    if (auto failed = first_unsatisfied(invariant, state_, context, 0.0)) {
+      Violation v;
+      v.kind = Violation::Kind::UnsatisfiedInvariant;
+      v.time = time_;
+      v.until = until;
+      v.action = steps_[scheduled].name;
+      v.step = steps_[scheduled].step;
+      v.line = steps_[scheduled].line;
+      v.condition = describe(task_, invariant, *failed);
+      return v;
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<Violation> HappeningExecutor::step() {
+  const std::vector<Event>& events = happenings_[next_];
+  time_ = happening_times_[next_];
+  ++next_;
+  const Event* current = &events.front();
+  try {
+    for (const Event& e : events) {
+      current = &e;
+      if (auto v = check_conditions(e)) return v;
+    }
+    current = &events.front();
+    if (events.size() > 1) {
+      if (auto v = check_mutex(events)) return v;
+    }
+    if (auto v = apply(events)) return v;
+  } catch (const EvaluationError& error) {
+    Violation v = violation(Violation::Kind::UndefinedValue, *current);
+    v.condition = explain(error);
+    return v;
+  }
+  for (const Event& e : events) {
+    if (e.point == Point::Start) running_.emplace(e.scheduled, steps_[e.scheduled].action);
+    if (e.point == Point::End) running_.erase(e.scheduled);
+  }
+  if (next_ - 1 == last_action_happening_ && !steps_.empty()) {
+    last_action_state_ = state_;
+    last_action_time_ = time_;
+  }
+  if (next_ < happenings_.size() && !running_.empty()) {
+    try {
+      return check_invariants(happening_times_[next_]);
+    } catch (const EvaluationError& error) {
+      Violation v;
+      v.kind = Violation::Kind::UndefinedValue;
+      v.time = time_;
+      v.condition = explain(error);
+      return v;
+    }
+  }
+  return std::nullopt;
+}
+
+ValidationResult HappeningExecutor::run(const std::vector<ScheduledStep>& steps, std::size_t plan_steps) {
+  ValidationResult result;
+  load(steps);
+  result.happenings = happenings_.size();
+  while (!done()) {
+    if (auto v = step()) {
+      result.violation = std::move(v);
+      return result;
+    }
+  }
+  if (auto failed = first_unsatisfied(task_.goal, state_, EvaluationContext{}, kNumericSlack)) {
+    Violation v;
+    v.kind = Violation::Kind::GoalNotReached;
+    v.time = time_;
+    v.condition = describe(task_, task_.goal, *failed);
+    result.violation = v;
+    return result;
+  }
+  // VAL's value: the metric after the last action happening; (total-time)
+  // is its time, or the step count when the domain is not temporal.
+  const double steps_and_literals = static_cast<double>(plan_steps + task_.timed_literals.size());
+  result.makespan = last_action_time_;
+  EvaluationContext context;
+  const bool timed = val_total_time_ ? task_.lifted->declares_time : task_.lifted->temporal;
+  context.total_time = timed ? last_action_time_ : steps_and_literals;
+  if (task_.metric) {
+    try {
+      result.metric = evaluate(task_.metric->expression, last_action_state_ ? *last_action_state_ : state_, context);
+    } catch (const EvaluationError& error) {
+      Violation v;
+      v.kind = Violation::Kind::UndefinedValue;
+      v.action = "the metric";
+      v.condition = explain(error);
+      result.violation = v;
+      return result;
+    }
+    result.value = *result.metric;
+  } else {
+    result.value = steps_and_literals;
+  }
+  result.valid = true;
+  return result;
+}
+
+}  // namespace alplan

@@ -1,0 +1,93 @@
+// Executes a scheduled plan happening by happening, with VAL's semantics
+// (see validator.h). `step()` advances one happening, so a caller can watch
+// the state between happenings; `run()` goes to the end and judges the goal.
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "planner/evaluation.h"
+#include "planner/explicit_state.h"
+#include "planner/ground_task.h"
+#include "planner/validator.h"
+#include "planner/violation.h"
+
+namespace alplan {
+
+// A plan step bound to its ground action and its times.
+struct ScheduledStep {
+  std::size_t action = 0;  // index into GroundTask::actions
+  std::size_t step = 0;    // index in the plan
+  std::uint32_t line = 0;
+  double start = 0.0;
+  double duration = 0.0;   // durative actions only
+  std::string name;        // "(act args)" as the plan wrote it
+};
+
+class HappeningExecutor {
+ public:
+  HappeningExecutor(const GroundTask& task, const ValidatorOptions& options);
+
+  // Whole-plan validation; `plan_steps` counts the lines for VAL's value.
+  ValidationResult run(const std::vector<ScheduledStep>& steps, std::size_t plan_steps);
+
+  // Step-wise use: load a schedule, then step until done() or a violation.
+  void load(const std::vector<ScheduledStep>& steps);
+  bool done() const { return next_ >= happenings_.size(); }
+  std::optional<Violation> step();
+  double time() const { return time_; }
+  std::size_t happenings() const { return happenings_.size(); }
+  const ExplicitState& state() const { return state_; }
+
+ private:
+  enum class Point : unsigned char { Start, End, Instant, Til };
+  struct Event {
+    Point point = Point::Instant;
+    double time = 0.0;
+    std::size_t scheduled = 0;  // index into steps_, or TIL index
+  };
+  struct Update {
+    NumericVarId variable;
+    pddl::AssignOperator assign;
+    double value;
+  };
+  // What one event reads and writes, for the mutex check.
+  struct Footprint {
+    std::set<FactId> reads, adds, dels;
+    std::set<NumericVarId> reads_values;
+    std::vector<std::pair<NumericVarId, pddl::AssignOperator>> writes;
+  };
+
+  std::optional<Violation> check_conditions(const Event& e);
+  std::optional<Violation> check_mutex(const std::vector<Event>& events);
+  std::optional<Violation> apply(const std::vector<Event>& events);
+  std::optional<Violation> check_invariants(double until);
+  Footprint footprint(const Event& e) const;
+  std::string event_name(const Event& e) const;
+  EvaluationContext context_of(const Event& e) const;
+  const GroundAction* action_of(const Event& e) const;
+  Violation violation(Violation::Kind kind, const Event& e) const;
+  std::string explain(const EvaluationError& error) const;
+
+  const GroundTask& task_;
+  double epsilon_;
+  bool val_total_time_;
+  std::vector<ScheduledStep> steps_;
+  std::vector<std::vector<Event>> happenings_;
+  std::vector<double> happening_times_;
+  std::size_t next_ = 0;
+  double time_ = 0.0;
+  ExplicitState state_;
+  std::map<std::size_t, std::size_t> running_;  // scheduled step -> its action
+  // The state right after the last happening that holds an action (VAL
+  // evaluates the metric there, before any later timed literal).
+  std::size_t last_action_happening_ = 0;
+  std::optional<ExplicitState> last_action_state_;
+  double last_action_time_ = 0.0;
+};
+
+}  // namespace alplan

@@ -1,0 +1,74 @@
+// Instantiation of lifted conditions, expressions, effects and action schemas
+// under a binding of variable slots to objects, with simplification: equality
+// is decided, quantifiers are expanded over their (finite) types, static
+// atoms and static numeric terms are replaced by their values, and what
+// remains is flattened into ConditionSets.
+#pragma once
+
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+#include "planner/fact_table.h"
+#include "planner/ground_task.h"
+#include "planner/normalized_task.h"
+
+namespace alplan {
+
+// What never changes: the initial facts of static predicates and the initial
+// values of static functions.
+struct StaticFacts {
+  std::unordered_set<GroundKey, GroundKeyHash> true_atoms;
+  std::unordered_map<GroundKey, double, GroundKeyHash> values;
+
+  static StaticFacts of(const NormalizedTask& task);
+};
+
+struct InstantiationOptions {
+  // Replace static atoms by true/false (the planner); the validator keeps
+  // them as facts so that a violation can name them.
+  bool simplify_static = true;
+  // Intern atoms not yet in the fact table (the validator); otherwise an
+  // unknown fluent atom is unreachable and a positive literal on it is false.
+  bool intern_unknown = false;
+  // Record, for a condition that can never hold, which part fails (the
+  // validator reports it; the grounder just drops the action).
+  bool explain = false;
+};
+
+class Instantiator {
+ public:
+  Instantiator(const NormalizedTask& task, const StaticFacts& statics, GroundKeyTable& facts,
+               GroundKeyTable& numeric, InstantiationOptions options);
+
+  GroundAction action(std::uint32_t schema, const std::vector<ObjectId>& args);
+  ConditionSet condition(const LiftedCondition& condition, std::vector<ObjectId>& binding);
+  GroundFormula formula(const LiftedCondition& condition, std::vector<ObjectId>& binding);
+  GroundExpression expression(const LiftedExpression& expression, const std::vector<ObjectId>& binding);
+  // The id of a ground atom if it is (or, when interning, becomes) a fact.
+  std::optional<FactId> fact(const GroundKey& key);
+
+ private:
+  void effects(const ActionSchema& schema, std::vector<ObjectId>& binding, GroundAction& action);
+  void primitive(const PrimitiveEffect& effect, std::vector<ObjectId>& binding, std::size_t forall_index,
+                 GroundAction& action);
+  GroundKey key(const LiftedAtom& atom, const std::vector<ObjectId>& binding) const;
+  GroundKey key(const LiftedFunctionTerm& term, const std::vector<ObjectId>& binding) const;
+  // Fills the reusable scratch key: lookups then allocate nothing.
+  const GroundKey& scratch(std::uint32_t head, const std::vector<LiftedTerm>& args,
+                           const std::vector<ObjectId>& binding);
+  std::string name(const GroundKey& key, bool function) const;
+
+  const NormalizedTask& task_;
+  const StaticFacts& statics_;
+  GroundKeyTable& facts_;
+  GroundKeyTable& numeric_;
+  InstantiationOptions options_;
+  GroundKey scratch_;
+};
+
+// Flattens a formula: top-level conjunctions of literals and comparisons go
+// to the lists, anything else stays a complex formula.
+ConditionSet flatten(GroundFormula formula);
+
+}  // namespace alplan

@@ -1,0 +1,343 @@
+// Conditions to negation normal form, durative conditions split by time,
+// effects flattened into primitive effects.
+#include <stdexcept>
+
+#include "planner/normalize_internal.h"
+#include "pddl_parser/writer.h"
+
+namespace alplan::detail {
+
+using pddl::Comparison;
+using CKind = pddl::Condition::Kind;
+
+std::uint32_t VariableScope::bind(const std::string& name) {
+  bound_.emplace_back(name, next_slot_);
+  return next_slot_++;
+}
+
+std::uint32_t VariableScope::slot_of(const std::string& name) const {
+  for (auto it = bound_.rbegin(); it != bound_.rend(); ++it) {
+    if (it->first == name) return it->second;
+  }
+  throw std::logic_error("unbound variable " + name + " reached normalisation");
+}
+
+LiftedCondition make_and(std::vector<LiftedCondition> children) {
+  LiftedCondition result;
+  result.kind = LiftedCondition::Kind::And;
+  for (LiftedCondition& c : children) {
+    if (c.kind == LiftedCondition::Kind::True) continue;
+    if (c.kind == LiftedCondition::Kind::False) return c;
+    if (c.kind == LiftedCondition::Kind::And) {
+      for (LiftedCondition& grandchild : c.children) result.children.push_back(std::move(grandchild));
+    } else {
+      result.children.push_back(std::move(c));
+    }
+  }
+  if (result.children.empty()) return LiftedCondition{};
+  if (result.children.size() == 1) return std::move(result.children.front());
+  return result;
+}
+
+LiftedCondition make_or(std::vector<LiftedCondition> children) {
+  LiftedCondition result;
+  result.kind = LiftedCondition::Kind::Or;
+  for (LiftedCondition& c : children) {
+    if (c.kind == LiftedCondition::Kind::False) continue;
+    if (c.kind == LiftedCondition::Kind::True) return c;
+    if (c.kind == LiftedCondition::Kind::Or) {
+      for (LiftedCondition& grandchild : c.children) result.children.push_back(std::move(grandchild));
+    } else {
+      result.children.push_back(std::move(c));
+    }
+  }
+  if (result.children.empty()) {
+    result.kind = LiftedCondition::Kind::False;
+    return result;
+  }
+  if (result.children.size() == 1) return std::move(result.children.front());
+  return result;
+}
+
+namespace {
+
+Comparison negate(Comparison c) {
+  switch (c) {
+    case Comparison::Less: return Comparison::GreaterEqual;
+    case Comparison::LessEqual: return Comparison::Greater;
+    case Comparison::GreaterEqual: return Comparison::Less;
+    case Comparison::Greater: return Comparison::LessEqual;
+    case Comparison::Equal: return Comparison::Equal;  // handled by the caller
+  }
+  return c;
+}
+
+bool has_timed(const pddl::Condition& c) {
+  if (c.kind == CKind::Timed) return true;
+  for (const pddl::Condition& child : c.children) {
+    if (has_timed(child)) return true;
+  }
+  return false;
+}
+
+LiftedCondition quantified(LiftedCondition::Kind kind, std::vector<QuantifiedVariable> variables,
+                           LiftedCondition body) {
+  if (body.kind == LiftedCondition::Kind::True || body.kind == LiftedCondition::Kind::False) return body;
+  LiftedCondition q;
+  q.kind = kind;
+  q.variables = std::move(variables);
+  q.children.push_back(std::move(body));
+  return q;
+}
+
+}  // namespace
+
+std::string FormulaConverter::where(pddl::SourceLocation location) const {
+  return file_ + ":" + std::to_string(location.line) + ":" + std::to_string(location.column);
+}
+
+void FormulaConverter::unsupported(pddl::SourceLocation location, const std::string& what) {
+  unsupported_.push_back(where(location) + ": " + what);
+}
+
+TypeId FormulaConverter::type_of(const pddl::TypeNames& types) {
+  if (types.empty()) return 0;
+  std::string key = pddl::write_type(types);
+  auto it = names_.types.find(key);
+  if (it != names_.types.end()) return it->second;
+  // A union type for (either a b ...) used in a signature.
+  TypeInfo info;
+  info.name = key;
+  std::vector<bool> member(task_.objects.size(), false);
+  for (const std::string& t : types) {
+    for (ObjectId o : task_.types.at(names_.types.at(t)).objects) member[o] = true;
+  }
+  for (ObjectId o = 0; o < member.size(); ++o) {
+    if (member[o]) info.objects.push_back(o);
+  }
+  const auto id = static_cast<TypeId>(task_.types.size());
+  task_.types.push_back(std::move(info));
+  names_.types.emplace(std::move(key), id);
+  return id;
+}
+
+std::vector<QuantifiedVariable> FormulaConverter::bind_all(const std::vector<pddl::TypedName>& variables,
+                                                           VariableScope& scope) {
+  std::vector<QuantifiedVariable> result;
+  for (const pddl::TypedName& v : variables) {
+    const TypeId type = type_of(v.types);
+    result.push_back({scope.bind(v.name), type, v.name});
+  }
+  return result;
+}
+
+LiftedTerm FormulaConverter::term(const pddl::Term& t, const VariableScope& scope) {
+  if (t.is_variable()) return {true, scope.slot_of(t.name)};
+  return {false, names_.objects.at(t.name)};
+}
+
+LiftedAtom FormulaConverter::atom(const pddl::Atom& a, const VariableScope& scope) {
+  LiftedAtom result;
+  result.predicate = names_.predicates.at(a.name);
+  for (const pddl::Term& t : a.args) result.args.push_back(term(t, scope));
+  return result;
+}
+
+LiftedExpression FormulaConverter::expression(const pddl::NumericExpression& e, const VariableScope& scope) {
+  using K = pddl::NumericExpression::Kind;
+  LiftedExpression result;
+  switch (e.kind) {
+    case K::Number: result.kind = LiftedExpression::Kind::Constant; result.value = e.value; return result;
+    case K::Function:
+      result.kind = LiftedExpression::Kind::Function;
+      result.term.function = names_.functions.at(e.function.name);
+      for (const pddl::Term& t : e.function.args) result.term.args.push_back(term(t, scope));
+      return result;
+    case K::Add: result.kind = LiftedExpression::Kind::Add; break;
+    case K::Subtract: result.kind = LiftedExpression::Kind::Subtract; break;
+    case K::Multiply: result.kind = LiftedExpression::Kind::Multiply; break;
+    case K::Divide: result.kind = LiftedExpression::Kind::Divide; break;
+    case K::Negate: result.kind = LiftedExpression::Kind::Negate; break;
+    case K::Duration: result.kind = LiftedExpression::Kind::Duration; return result;
+    case K::TotalTime: result.kind = LiftedExpression::Kind::TotalTime; return result;
+    case K::ContinuousTime:
+      unsupported(e.location, "continuous change (#t) is not supported");
+      return result;
+    case K::IsViolated:
+      unsupported(e.location, "PDDL 3 preferences (is-violated) are not supported");
+      return result;
+  }
+  for (const pddl::NumericExpression& operand : e.operands) result.operands.push_back(expression(operand, scope));
+  return result;
+}
+
+LiftedCondition FormulaConverter::condition(const pddl::Condition& c, VariableScope& scope, bool negated) {
+  LiftedCondition result;
+  switch (c.kind) {
+    case CKind::And:
+    case CKind::Or: {
+      std::vector<LiftedCondition> children;
+      for (const pddl::Condition& child : c.children) children.push_back(condition(child, scope, negated));
+      return (c.kind == CKind::And) != negated ? make_and(std::move(children)) : make_or(std::move(children));
+    }
+    case CKind::Not: return condition(c.children.front(), scope, !negated);
+    case CKind::Imply: {
+      std::vector<LiftedCondition> children;
+      children.push_back(condition(c.children[0], scope, !negated));
+      children.push_back(condition(c.children[1], scope, negated));
+      return negated ? make_and(std::move(children)) : make_or(std::move(children));
+    }
+    case CKind::Exists:
+    case CKind::Forall: {
+      std::vector<QuantifiedVariable> variables = bind_all(c.variables, scope);
+      LiftedCondition body = condition(c.children.front(), scope, negated);
+      scope.unbind(c.variables.size());
+      const bool universal = (c.kind == CKind::Forall) != negated;
+      return quantified(universal ? LiftedCondition::Kind::Forall : LiftedCondition::Kind::Exists,
+                        std::move(variables), std::move(body));
+    }
+    case CKind::Atom:
+      result.kind = LiftedCondition::Kind::Atom;
+      result.positive = !negated;
+      result.atom = atom(c.atom, scope);
+      return result;
+    case CKind::Equality:
+      result.kind = LiftedCondition::Kind::Equality;
+      result.positive = !negated;
+      result.left = term(c.atom.args[0], scope);
+      result.right = term(c.atom.args[1], scope);
+      return result;
+    case CKind::Comparison: {
+      result.kind = LiftedCondition::Kind::Comparison;
+      result.sides = {expression(c.expressions[0], scope), expression(c.expressions[1], scope)};
+      if (negated && c.comparison == Comparison::Equal) {  // not (= a b): a < b or a > b
+        LiftedCondition less = result;
+        less.comparison = Comparison::Less;
+        result.comparison = Comparison::Greater;
+        return make_or({std::move(less), std::move(result)});
+      }
+      result.comparison = negated ? negate(c.comparison) : c.comparison;
+      return result;
+    }
+    case CKind::Timed:
+      unsupported(c.location, "a timed condition nested where it cannot be split by time");
+      return result;
+    case CKind::Preference:
+      unsupported(c.location, "PDDL 3 preferences are not supported");
+      return result;
+    default:
+      unsupported(c.location, "PDDL 3 trajectory constraints are not supported");
+      return result;
+  }
+}
+
+LiftedCondition FormulaConverter::timed_part(const pddl::Condition& c, pddl::TimeSpecifier time,
+                                             VariableScope& scope) {
+  switch (c.kind) {
+    case CKind::Timed:
+      return c.time == time ? condition(c.children.front(), scope) : LiftedCondition{};
+    case CKind::And: {
+      std::vector<LiftedCondition> children;
+      for (const pddl::Condition& child : c.children) children.push_back(timed_part(child, time, scope));
+      return make_and(std::move(children));
+    }
+    case CKind::Forall: {
+      std::vector<QuantifiedVariable> variables = bind_all(c.variables, scope);
+      LiftedCondition body = timed_part(c.children.front(), time, scope);
+      scope.unbind(c.variables.size());
+      return quantified(LiftedCondition::Kind::Forall, std::move(variables), std::move(body));
+    }
+    default:
+      if (has_timed(c)) {
+        unsupported(c.location, "timed conditions inside (" + pddl::write_condition(c).substr(1, 6) +
+                                    "...) cannot be split by time");
+      }
+      // The checker rejects untimed conditions of durative actions; treat
+      // what remains as an invariant so nothing is silently dropped.
+      return time == pddl::TimeSpecifier::OverAll ? condition(c, scope) : LiftedCondition{};
+  }
+}
+
+struct FormulaConverter::EffectContext {
+  bool durative = false;
+  bool timed = false;
+  Moment moment = Moment::Start;
+  std::vector<QuantifiedVariable> forall;
+  std::vector<LiftedCondition> conditions;
+  bool condition_timed = false;
+  Moment condition_moment = Moment::Start;
+};
+
+void FormulaConverter::effects(const pddl::Effect& e, bool durative, VariableScope& scope, ActionSchema& schema) {
+  EffectContext context;
+  context.durative = durative;
+  effect(e, context, scope, schema);
+}
+
+void FormulaConverter::effect(const pddl::Effect& e, EffectContext& context, VariableScope& scope,
+                              ActionSchema& schema) {
+  using EKind = pddl::Effect::Kind;
+  switch (e.kind) {
+    case EKind::And:
+      for (const pddl::Effect& child : e.children) effect(child, context, scope, schema);
+      return;
+    case EKind::Forall: {
+      std::vector<QuantifiedVariable> variables = bind_all(e.variables, scope);
+      context.forall.insert(context.forall.end(), variables.begin(), variables.end());
+      effect(e.children.front(), context, scope, schema);
+      context.forall.resize(context.forall.size() - variables.size());
+      scope.unbind(e.variables.size());
+      return;
+    }
+    case EKind::When: {
+      EffectContext inner = context;
+      if (context.durative && has_timed(*e.condition)) {
+        LiftedCondition at_start = timed_part(*e.condition, pddl::TimeSpecifier::AtStart, scope);
+        LiftedCondition at_end = timed_part(*e.condition, pddl::TimeSpecifier::AtEnd, scope);
+        if (at_start.kind != LiftedCondition::Kind::True && at_end.kind != LiftedCondition::Kind::True) {
+          unsupported(e.location, "a conditional effect with conditions at both start and end");
+        }
+        inner.condition_timed = true;
+        inner.condition_moment = at_end.kind != LiftedCondition::Kind::True ? Moment::End : Moment::Start;
+        inner.conditions.push_back(inner.condition_moment == Moment::End ? std::move(at_end) : std::move(at_start));
+      } else {
+        inner.conditions.push_back(condition(*e.condition, scope));
+      }
+      effect(e.children.front(), inner, scope, schema);
+      return;
+    }
+    case EKind::Timed: {
+      EffectContext inner = context;
+      inner.timed = true;
+      inner.moment = e.time == pddl::TimeSpecifier::AtEnd ? Moment::End : Moment::Start;
+      effect(e.children.front(), inner, scope, schema);
+      return;
+    }
+    case EKind::Add:
+    case EKind::Delete:
+    case EKind::Numeric: {
+      PrimitiveEffect p;
+      p.moment = context.moment;
+      p.forall = context.forall;
+      p.condition = make_and(context.conditions);
+      p.condition_moment = context.condition_timed ? context.condition_moment : context.moment;
+      if (e.kind == EKind::Numeric) {
+        p.kind = PrimitiveEffect::Kind::Numeric;
+        p.target.function = names_.functions.at(e.atom.name);
+        for (const pddl::Term& t : e.atom.args) p.target.args.push_back(term(t, scope));
+        p.assign = e.assign;
+        p.value = expression(*e.value, scope);
+      } else {
+        p.kind = e.kind == EKind::Add ? PrimitiveEffect::Kind::Add : PrimitiveEffect::Kind::Delete;
+        p.atom = atom(e.atom, scope);
+      }
+      if (context.durative && !context.timed && p.kind != PrimitiveEffect::Kind::Numeric) {
+        unsupported(e.location, "an untimed effect in a durative action");
+      }
+      schema.effects.push_back(std::move(p));
+      return;
+    }
+  }
+}
+
+}  // namespace alplan::detail

@@ -1,0 +1,185 @@
+// The first pass of grounding: the PDDL AST made plain (Fast Downward's
+// translator calls this normalisation). Names become ids, types become object
+// sets, conditions are in negation normal form with `imply` removed, durative
+// conditions and effects are split by time, and effects are flattened into
+// primitive effects with their enclosing forall variables and when-condition.
+// Nothing here is ground yet except the initial state, the timed initial
+// literals and the goal (which may still quantify).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pddl_parser/ast.h"
+#include "planner/ids.h"
+
+namespace alplan {
+
+// A term of a lifted formula: a variable slot of the enclosing schema (its
+// parameters first, then quantified variables) or an object.
+struct LiftedTerm {
+  bool is_variable = false;
+  std::uint32_t index = 0;  // variable slot, or ObjectId
+  bool operator==(const LiftedTerm&) const = default;
+};
+
+struct LiftedAtom {
+  PredicateId predicate = kNoId;
+  std::vector<LiftedTerm> args;
+};
+
+struct LiftedFunctionTerm {
+  FunctionId function = kNoId;
+  std::vector<LiftedTerm> args;
+};
+
+struct LiftedExpression {
+  enum class Kind : unsigned char { Constant, Function, Add, Subtract, Multiply, Divide, Negate, Duration, TotalTime };
+  Kind kind = Kind::Constant;
+  double value = 0.0;
+  LiftedFunctionTerm term;  // Function
+  std::vector<LiftedExpression> operands;
+};
+
+// A quantified variable: its slot and the objects it ranges over.
+struct QuantifiedVariable {
+  std::uint32_t slot = 0;
+  TypeId type = kNoId;
+  std::string name;
+};
+
+// Negation normal form: negation only on atoms, equalities and comparisons
+// (a negated comparison is stored with the opposite comparison).
+struct LiftedCondition {
+  enum class Kind : unsigned char { True, False, And, Or, Atom, Equality, Comparison, Forall, Exists };
+  Kind kind = Kind::True;
+  bool positive = true;  // Atom, Equality
+  LiftedAtom atom;
+  LiftedTerm left, right;  // Equality
+  pddl::Comparison comparison = pddl::Comparison::Equal;
+  std::vector<LiftedExpression> sides;  // Comparison: left, right
+  std::vector<QuantifiedVariable> variables;
+  std::vector<LiftedCondition> children;
+};
+
+enum class Moment : unsigned char { Start, End };
+
+// One add, delete or numeric change, with what encloses it.
+struct PrimitiveEffect {
+  enum class Kind : unsigned char { Add, Delete, Numeric };
+  Kind kind = Kind::Add;
+  Moment moment = Moment::Start;  // instantaneous actions use Start
+  std::vector<QuantifiedVariable> forall;
+  LiftedCondition condition;  // True when unconditional
+  Moment condition_moment = Moment::Start;
+  LiftedAtom atom;           // Add, Delete
+  LiftedFunctionTerm target;  // Numeric
+  pddl::AssignOperator assign = pddl::AssignOperator::Assign;
+  LiftedExpression value;
+};
+
+struct LiftedDurationConstraint {
+  pddl::Comparison comparison = pddl::Comparison::Equal;
+  LiftedExpression value;
+  Moment moment = Moment::Start;  // state the value is evaluated in
+};
+
+struct Parameter {
+  std::string name;
+  TypeId type = kNoId;
+};
+
+struct ActionSchema {
+  std::string name;
+  bool durative = false;
+  std::vector<Parameter> parameters;
+  std::uint32_t variable_slots = 0;  // parameters + every quantified variable
+  // Instantaneous actions use at_start for the precondition.
+  LiftedCondition at_start, over_all, at_end;
+  std::vector<PrimitiveEffect> effects;
+  std::vector<LiftedDurationConstraint> duration;
+  // Set when the schema has #t effects: the planner and validator refuse it
+  // with this message naming the construct and its position.
+  std::string unsupported;
+};
+
+struct DerivedRule {
+  PredicateId head = kNoId;
+  std::vector<Parameter> parameters;
+  std::uint32_t variable_slots = 0;
+  LiftedCondition body;
+};
+
+struct TypeInfo {
+  std::string name;
+  std::vector<ObjectId> objects;  // every object of this type or a subtype
+};
+
+struct PredicateInfo {
+  std::string name;
+  std::vector<TypeId> parameter_types;
+  bool derived = false;
+  bool fluent = false;  // changed by an effect or a timed initial literal
+};
+
+struct FunctionInfo {
+  std::string name;
+  std::vector<TypeId> parameter_types;
+  bool fluent = false;  // changed by an effect
+};
+
+struct GroundAtom {
+  PredicateId predicate = kNoId;
+  std::vector<ObjectId> args;
+  bool operator==(const GroundAtom&) const = default;
+};
+
+struct NumericInitialValue {
+  FunctionId function = kNoId;
+  std::vector<ObjectId> args;
+  double value = 0.0;
+};
+
+struct NormalizedTimedLiteral {
+  double time = 0.0;
+  bool positive = true;
+  GroundAtom atom;
+};
+
+struct NormalizedMetric {
+  bool minimize = true;
+  LiftedExpression expression;
+};
+
+struct NormalizedTask {
+  std::string domain_name;
+  std::string problem_name;
+  std::vector<std::string> objects;
+  std::vector<TypeInfo> types;  // types[0] is object
+  std::vector<PredicateInfo> predicates;
+  std::vector<FunctionInfo> functions;
+  std::vector<ActionSchema> actions;  // instantaneous and durative, in domain order
+  std::vector<DerivedRule> derived_rules;
+  std::vector<GroundAtom> initial_facts;
+  std::vector<NumericInitialValue> initial_values;  // last value wins, as in VAL
+  std::vector<NormalizedTimedLiteral> timed_literals;  // sorted by time (stable)
+  LiftedCondition goal;
+  std::uint32_t goal_variable_slots = 0;
+  std::optional<NormalizedMetric> metric;
+  // The domain has durative actions or declares :durative-actions / :time.
+  bool temporal = false;
+  // The domain declares :durative-actions or :time. VAL looks only at this
+  // flag: without it, (total-time) is the number of steps (see validator.h).
+  bool declares_time = false;
+  // Constructs the planner and validator refuse (PDDL 3 constraints and
+  // preferences), each with its position: "file:line:col: what".
+  std::vector<std::string> unsupported;
+
+  std::optional<PredicateId> find_predicate(const std::string& name) const;
+  std::optional<ObjectId> find_object(const std::string& name) const;
+  std::optional<std::uint32_t> find_action(const std::string& name) const;
+  std::string atom_name(const GroundAtom& atom) const;
+};
+
+}  // namespace alplan

@@ -1,0 +1,39 @@
+// Plans in the IPC format that OPTIC, POPF and VAL use:
+//   12.003: (move robot1 bedroom1 corridor1)  [30.000]
+// with `;` comments and blank lines, and sequential plans `(action args)`,
+// one step a line. Names are case-insensitive and kept in lower case.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "pddl_parser/source_location.h"
+
+namespace alplan {
+
+struct PlanStep {
+  std::optional<double> time;  // absent in sequential plans
+  std::string action;
+  std::vector<std::string> args;
+  std::optional<double> duration;
+  std::uint32_t line = 0;
+};
+
+struct Plan {
+  std::vector<PlanStep> steps;
+};
+
+struct PlanReadResult {
+  Plan plan;
+  std::vector<pddl::Diagnostic> diagnostics;
+  bool ok() const { return !pddl::has_errors(diagnostics); }
+};
+
+PlanReadResult read_plan(std::string_view text, const std::string& file_name);
+
+// IPC format, times and durations with the given number of decimals.
+std::string write_plan(const Plan& plan, int decimals = 3);
+
+}  // namespace alplan

@@ -1,0 +1,43 @@
+// Relaxed reachability: which ground atoms, action instantiations and axiom
+// instantiations can ever occur, computed as a Datalog fixpoint in the manner
+// of Fast Downward's translator (Helmert 2009, "Concise finite-domain
+// representations for PDDL planning tasks", Section 5). Delete effects,
+// negative and numeric conditions are ignored; disjunctive preconditions are
+// split into one rule per disjunct; existential variables become rule
+// variables. An instantiation exists only if every positive atom of some
+// disjunct of its relaxed precondition is reachable.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "planner/fact_table.h"
+#include "planner/normalized_task.h"
+
+namespace alplan {
+
+struct ReachabilityOptions {
+  // The planner requires the at-start and over-all atoms of a durative action
+  // (over-all ones unless the action adds them itself at start). The
+  // validator, which must follow any plan it is given, requires only
+  // at-start atoms: a superset.
+  bool require_over_all = true;
+  // Disjunctive preconditions whose DNF would exceed this many disjuncts are
+  // relaxed to true instead of split.
+  std::size_t max_disjuncts = 32;
+};
+
+struct Instantiation {
+  std::uint32_t schema = 0;  // action schema or derived rule index
+  std::vector<ObjectId> args;
+};
+
+struct ReachableSet {
+  GroundKeyTable atoms;  // every reachable atom, static and fluent, in discovery order
+  std::vector<Instantiation> actions;
+  std::vector<Instantiation> axioms;
+};
+
+ReachableSet compute_reachable(const NormalizedTask& task, const ReachabilityOptions& options = {});
+
+}  // namespace alplan

@@ -1,0 +1,259 @@
+// Every violation kind on small hand-written domains, timed initial literals,
+// required concurrency and derived predicates.
+#include <catch2/catch.hpp>
+
+#include "planner/validator.h"
+#include "tests/support/task_loader.h"
+
+using namespace alplan;
+
+namespace {
+
+// A robot carries a cup between rooms; the kitchen closes at time 20 (TIL).
+const char* kDomain = R"(
+(define (domain carry)
+  (:requirements :typing :durative-actions :timed-initial-literals :fluents :negative-preconditions)
+  (:types room cup robot)
+  (:predicates (at ?r - robot ?x - room) (cup-at ?c - cup ?x - room) (holding ?r - robot ?c - cup)
+               (free ?r - robot) (open ?x - room) (door ?a ?b - room))
+  (:functions (distance ?a ?b - room) (battery ?r - robot) (moves))
+  (:durative-action move
+    :parameters (?r - robot ?a ?b - room)
+    :duration (= ?duration (distance ?a ?b))
+    :condition (and (at start (at ?r ?a)) (over all (door ?a ?b)) (at start (>= (battery ?r) 5)))
+    :effect (and (at start (not (at ?r ?a))) (at end (at ?r ?b))
+                 (at end (decrease (battery ?r) 5)) (at end (increase (moves) 1))))
+  (:durative-action pick
+    :parameters (?r - robot ?c - cup ?x - room)
+    :duration (= ?duration 2)
+    :condition (and (at start (free ?r)) (at start (cup-at ?c ?x)) (over all (at ?r ?x)) (over all (open ?x)))
+    :effect (and (at start (not (free ?r))) (at start (not (cup-at ?c ?x))) (at end (holding ?r ?c))))
+  (:action charge
+    :parameters (?r - robot)
+    :precondition (< (battery ?r) 50)
+    :effect (assign (battery ?r) 100)))
+)";
+
+const char* kProblem = R"(
+(define (problem fetch) (:domain carry)
+  (:objects r1 - robot hall kitchen - room c1 - cup)
+  (:init (at r1 hall) (free r1) (cup-at c1 kitchen) (door hall kitchen) (door kitchen hall)
+         (open kitchen) (= (distance hall kitchen) 10) (= (distance kitchen hall) 10)
+         (= (battery r1) 20) (= (moves) 0)
+         (at 20 (not (open kitchen))))
+  (:goal (holding r1 c1))
+  (:metric minimize (+ (total-time) (* 2 (moves)))))
+)";
+
+ValidationResult check(const std::string& plan_text, ValidatorOptions options = {}) {
+  const test::LoadedTask task = test::load_task_text(kDomain, kProblem);
+  PlanValidator validator(task.normalized, options);
+  const PlanReadResult plan = read_plan(plan_text, "plan");
+  REQUIRE(plan.ok());
+  return validator.validate(plan.plan);
+}
+
+void require_violation(const ValidationResult& r, Violation::Kind kind) {
+  INFO((r.valid ? std::string("valid") : r.violation->message()));
+  REQUIRE_FALSE(r.valid);
+  REQUIRE(r.violation->kind == kind);
+}
+
+}  // namespace
+
+TEST_CASE("a valid plan: makespan, metric value and happenings") {
+  const ValidationResult r = check("0.000: (move r1 hall kitchen) [10.000]\n10.001: (pick r1 c1 kitchen) [2.000]\n");
+  INFO((r.valid ? "" : r.violation->message()));
+  REQUIRE(r.valid);
+  CHECK(r.makespan == Approx(12.001));
+  REQUIRE(r.metric);
+  CHECK(*r.metric == Approx(12.001 + 2));
+  CHECK(r.value == *r.metric);
+  CHECK(r.happenings == 5);  // two starts, two ends, the TIL
+}
+
+TEST_CASE("unsatisfied precondition: an end effect used at start at the very time it happens") {
+  const ValidationResult r = check("0: (move r1 hall kitchen) [10]\n10: (move r1 kitchen hall) [10]\n");
+  require_violation(r, Violation::Kind::UnsatisfiedPrecondition);
+  CHECK(r.violation->time == 10);
+  CHECK(r.violation->action == "(move r1 kitchen hall) - start");
+  CHECK(r.violation->condition == "(at r1 kitchen)");
+  CHECK(r.violation->line == 2);
+}
+
+TEST_CASE("an over-all condition may use an end effect of the same instant") {
+  // Invariants hold on the open interval after the start (VAL checks them
+  // after the happening), so pick may start as the move ends.
+  CHECK(check("0: (move r1 hall kitchen) [10]\n10: (pick r1 c1 kitchen) [2]\n").valid);
+}
+
+TEST_CASE("unsatisfied precondition of a second use") {
+  const ValidationResult r = check("0: (move r1 hall kitchen) [10]\n10.001: (pick r1 c1 kitchen) [2]\n"
+                                   "10.002: (pick r1 c1 kitchen) [2]\n");
+  require_violation(r, Violation::Kind::UnsatisfiedPrecondition);
+  CHECK(r.violation->condition == "(free r1)");
+  CHECK(r.violation->step == 2);
+}
+
+TEST_CASE("unsatisfied numeric precondition") {
+  const ValidationResult r = check("0: (move r1 hall kitchen) [10]\n10.001: (move r1 kitchen hall) [10]\n"
+                                   "20.002: (move r1 hall kitchen) [10]\n30.003: (move r1 kitchen hall) [10]\n"
+                                   "40.004: (move r1 hall kitchen) [10]\n");
+  require_violation(r, Violation::Kind::UnsatisfiedPrecondition);
+  CHECK(r.violation->time == Approx(40.004));
+  CHECK(r.violation->condition == "(>= (battery r1) 5)");
+}
+
+TEST_CASE("unsatisfied invariant: a timed initial literal closes the kitchen during pick") {
+  const ValidationResult r = check("0: (move r1 hall kitchen) [10]\n18.5: (pick r1 c1 kitchen) [2]\n");
+  require_violation(r, Violation::Kind::UnsatisfiedInvariant);
+  CHECK(r.violation->action == "(pick r1 c1 kitchen)");
+  CHECK(r.violation->condition == "(open kitchen)");
+  CHECK(r.violation->time == 20);
+  CHECK(r.violation->until == Approx(20.5));
+}
+
+TEST_CASE("a timed initial literal that deletes a precondition just before it is needed") {
+  // The kitchen closes at 20; pick would need it open until 21.
+  const ValidationResult r = check("0: (move r1 hall kitchen) [10]\n19: (pick r1 c1 kitchen) [2]\n");
+  require_violation(r, Violation::Kind::UnsatisfiedInvariant);
+  CHECK(r.violation->time == 20);
+  // Done in time, the same pick is fine.
+  CHECK(check("0: (move r1 hall kitchen) [10]\n17.9: (pick r1 c1 kitchen) [2]\n").valid);
+}
+
+TEST_CASE("duration violation") {
+  const ValidationResult r = check("0: (move r1 hall kitchen) [12.5]\n20: (pick r1 c1 kitchen) [2]\n");
+  require_violation(r, Violation::Kind::DurationViolation);
+  CHECK(r.violation->action == "(move r1 hall kitchen) - start");
+  CHECK(r.violation->condition == "[12.5] against (= ?duration 10)");
+  // Within epsilon is accepted, as VAL does.
+  CHECK(check("0: (move r1 hall kitchen) [10.0005]\n10.002: (pick r1 c1 kitchen) [2]\n").valid);
+}
+
+TEST_CASE("goal not reached") {
+  const ValidationResult r = check("0: (move r1 hall kitchen) [10]\n");
+  require_violation(r, Violation::Kind::GoalNotReached);
+  CHECK(r.violation->condition == "(holding r1 c1)");
+}
+
+TEST_CASE("mutex violation: two happenings at one time that interfere") {
+  // Both moves read and decrease the battery... at the same end time, and the
+  // second start needs (at r1 hall) that the first start deletes.
+  const ValidationResult r = check("0: (move r1 hall kitchen) [10]\n0.00005: (move r1 hall kitchen) [10]\n");
+  require_violation(r, Violation::Kind::MutexViolation);
+  CHECK(r.violation->time == 0);
+  // Further apart than epsilon/10 they are separate happenings, and the
+  // second simply lacks its precondition.
+  require_violation(check("0: (move r1 hall kitchen) [10]\n0.001: (move r1 hall kitchen) [10]\n"),
+                    Violation::Kind::UnsatisfiedPrecondition);
+}
+
+TEST_CASE("bad plans: unknown action, unknown object, wrong arity, wrong type, missing duration") {
+  require_violation(check("0: (fly r1 hall kitchen) [10]\n"), Violation::Kind::UnknownAction);
+  require_violation(check("0: (move r1 hall attic) [10]\n"), Violation::Kind::UnknownObject);
+  require_violation(check("0: (move r1 hall) [10]\n"), Violation::Kind::BadStep);
+  require_violation(check("0: (move c1 hall kitchen) [10]\n"), Violation::Kind::BadStep);
+  require_violation(check("0: (move r1 hall kitchen)\n"), Violation::Kind::BadStep);
+}
+
+TEST_CASE("instantaneous actions and numeric effects") {
+  const ValidationResult r = check("0: (move r1 hall kitchen) [10]\n10.001: (charge r1)\n"
+                                   "10.002: (pick r1 c1 kitchen) [2]\n");
+  INFO((r.valid ? "" : r.violation->message()));
+  CHECK(r.valid);
+  // Charging is only possible below 50.
+  const ValidationResult twice = check("0: (charge r1)\n1: (charge r1)\n");
+  require_violation(twice, Violation::Kind::UnsatisfiedPrecondition);
+  CHECK(twice.violation->condition == "(< (battery r1) 50)");
+}
+
+TEST_CASE("undefined numeric values are reported, not guessed") {
+  const char* problem = R"(
+(define (problem fetch) (:domain carry)
+  (:objects r1 - robot hall kitchen - room c1 - cup)
+  (:init (at r1 hall) (free r1) (door hall kitchen) (= (distance hall kitchen) 10) (= (moves) 0))
+  (:goal (at r1 kitchen)))
+)";
+  const test::LoadedTask task = test::load_task_text(kDomain, problem);
+  PlanValidator validator(task.normalized);
+  const ValidationResult r = validator.validate(read_plan("0: (move r1 hall kitchen) [10]\n", "p").plan);
+  require_violation(r, Violation::Kind::UndefinedValue);
+  CHECK(r.violation->condition == "the value of (battery r1) is undefined");
+}
+
+TEST_CASE("malformed plan files are reported with line numbers") {
+  const PlanReadResult r = read_plan("; a plan\n0.0: (move r1 a b) [10]\n1.0 (move r1 b a)\n2: move\n", "p.plan");
+  REQUIRE(r.diagnostics.size() == 2);
+  CHECK(r.diagnostics[0].to_string() == "p.plan:3:5: error: expected ':' after the time of a plan step");
+  CHECK(r.diagnostics[1].line == 4);
+  CHECK(r.plan.steps.size() == 1);
+}
+
+TEST_CASE("sequential plans are timed 1, 2, 3 as VAL does") {
+  const char* domain = R"(
+(define (domain switches) (:requirements :strips)
+  (:predicates (on ?s) (off ?s))
+  (:action flip :parameters (?s) :precondition (off ?s) :effect (and (on ?s) (not (off ?s)))))
+)";
+  const char* problem = "(define (problem p) (:domain switches) (:objects a b) (:init (off a) (off b))"
+                        " (:goal (and (on a) (on b))))";
+  const test::LoadedTask task = test::load_task_text(domain, problem);
+  PlanValidator validator(task.normalized);
+  const ValidationResult r = validator.validate(read_plan("(FLIP a)\n(flip B)\n", "p").plan);
+  REQUIRE(r.valid);
+  CHECK(r.makespan == 2);
+  CHECK(r.value == 2);  // no metric: VAL counts the steps
+  require_violation(validator.validate(read_plan("(flip a)\n(flip a)\n", "p").plan),
+                    Violation::Kind::UnsatisfiedPrecondition);
+}
+
+TEST_CASE("required concurrency: an action possible only while another runs") {
+  // match-cellar in miniature: mending needs light, which only lighting a
+  // match gives, and only while it burns.
+  const char* domain = R"(
+(define (domain cellar) (:requirements :typing :durative-actions)
+  (:types match fuse)
+  (:predicates (unused ?m - match) (light ?m - match) (handfree) (mended ?f - fuse))
+  (:durative-action light-match :parameters (?m - match) :duration (= ?duration 8)
+    :condition (at start (unused ?m))
+    :effect (and (at start (not (unused ?m))) (at start (light ?m)) (at end (not (light ?m)))))
+  (:durative-action mend :parameters (?f - fuse ?m - match) :duration (= ?duration 5)
+    :condition (and (at start (handfree)) (over all (light ?m)))
+    :effect (and (at start (not (handfree))) (at end (handfree)) (at end (mended ?f)))))
+)";
+  const char* problem = "(define (problem p) (:domain cellar) (:objects m1 - match f1 - fuse)"
+                        " (:init (unused m1) (handfree)) (:goal (mended f1)))";
+  const test::LoadedTask task = test::load_task_text(domain, problem);
+  PlanValidator validator(task.normalized);
+  const ValidationResult inside = validator.validate(read_plan("0: (light-match m1) [8]\n0.001: (mend f1 m1) [5]\n", "p").plan);
+  INFO((inside.valid ? "" : inside.violation->message()));
+  CHECK(inside.valid);
+  CHECK(inside.makespan == 8);
+  // Mending past the match's end breaks the invariant.
+  require_violation(validator.validate(read_plan("0: (light-match m1) [8]\n4: (mend f1 m1) [5]\n", "p").plan),
+                    Violation::Kind::UnsatisfiedInvariant);
+  // Without the match there is no light.
+  require_violation(validator.validate(read_plan("0: (mend f1 m1) [5]\n", "p").plan),
+                    Violation::Kind::UnsatisfiedInvariant);
+}
+
+TEST_CASE("derived predicates are re-evaluated after every happening") {
+  const char* domain = R"(
+(define (domain power) (:requirements :typing :derived-predicates :negative-preconditions)
+  (:types node)
+  (:predicates (link ?a ?b - node) (source ?a - node) (powered ?a - node) (cut ?a ?b - node) (lit ?a - node))
+  (:derived (powered ?a - node) (source ?a))
+  (:derived (powered ?b - node) (exists (?a - node) (and (link ?a ?b) (not (cut ?a ?b)) (powered ?a))))
+  (:action switch-on :parameters (?a - node) :precondition (powered ?a) :effect (lit ?a))
+  (:action cut :parameters (?a ?b - node) :precondition (link ?a ?b) :effect (cut ?a ?b)))
+)";
+  const char* problem = "(define (problem p) (:domain power) (:objects s a b - node)"
+                        " (:init (source s) (link s a) (link a b)) (:goal (lit b)))";
+  const test::LoadedTask task = test::load_task_text(domain, problem);
+  PlanValidator validator(task.normalized);
+  CHECK(validator.validate(read_plan("(switch-on b)\n", "p").plan).valid);
+  const ValidationResult r = validator.validate(read_plan("(cut a b)\n(switch-on b)\n", "p").plan);
+  require_violation(r, Violation::Kind::UnsatisfiedPrecondition);
+  CHECK(r.violation->condition == "(powered b)");
+}
