@@ -7,7 +7,7 @@
 #include "pddl_parser/checker.h"
 #include "pddl_parser/parser.h"
 #include "pddl_parser/writer.h"
-#include "tests/support/ipc_suite.h"
+#include "benchmarks/harness/suite.h"
 #include "tests/support/test_paths.h"
 
 using namespace alplan::pddl;
@@ -61,23 +61,24 @@ TEST_CASE("every IPC domain+problem pair passes the semantic checks, but the one
       {"ipc-2004/satellite-time-time-windows-strips/instance-31",
        "instance-31.pddl:24852:2: error: undefined predicate 'senty_image' in a condition (did you mean "
        "'sent_image'?)\n"}};
-  const std::vector<alplan::test::IpcPair> pairs = alplan::test::ipc_pairs();
+  const std::vector<alplan::bench::SuiteProblem> pairs =
+      alplan::bench::load_suite(alplan::test::benchmarks_dir() + "/ipc");
   REQUIRE(pairs.size() == 996);
   std::map<std::string, std::shared_ptr<const Domain>> domains;
   int checked = 0;
-  for (const alplan::test::IpcPair& pair : pairs) {
-    INFO(pair.problem);
-    auto& domain = domains[pair.domain];
+  for (const alplan::bench::SuiteProblem& pair : pairs) {
+    INFO(pair.problem_file);
+    auto& domain = domains[pair.domain_file];
     if (!domain) {
-      DomainParseResult d = parse_domain(alplan::test::read_text(pair.domain), pair.domain);
+      DomainParseResult d = parse_domain(alplan::test::read_text(pair.domain_file), pair.domain_file);
       REQUIRE(d.ok());
-      REQUIRE(errors_of(check_domain(*d.ast, pair.domain)).empty());
+      REQUIRE(errors_of(check_domain(*d.ast, pair.domain_file)).empty());
       domain = d.ast;
     }
-    const ProblemParseResult p = parse_problem(alplan::test::read_text(pair.problem), "instance-" +
+    const ProblemParseResult p = parse_problem(alplan::test::read_text(pair.problem_file), "instance-" +
                                                std::to_string(pair.number) + ".pddl");
     REQUIRE(p.ok());
-    const std::string key = pair.folder + "/instance-" + std::to_string(pair.number);
+    const std::string key = pair.domain + "/instance-" + std::to_string(pair.number);
     const auto defect = known_defects.find(key);
     CHECK(errors_of(check_problem(*domain, *p.ast, p.ast ? "instance-" + std::to_string(pair.number) + ".pddl"
                                                           : "")) ==

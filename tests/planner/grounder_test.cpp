@@ -9,7 +9,7 @@
 
 #include "planner/ground_printer.h"
 #include "planner/plan.h"
-#include "tests/support/ipc_suite.h"
+#include "benchmarks/harness/suite.h"
 #include "tests/support/task_loader.h"
 #include "tests/support/test_paths.h"
 
@@ -226,10 +226,10 @@ TEST_CASE("every step of every valid corpus plan is a grounded action") {
 }
 
 TEST_CASE("the first problem of every IPC domain grounds") {
-  for (const test::IpcPair& pair : test::ipc_pairs()) {
+  for (const bench::SuiteProblem& pair : bench::load_suite(test::benchmarks_dir() + "/ipc")) {
     if (pair.number != 1) continue;
-    INFO(pair.problem);
-    auto task = ground(test::load_task(pair.domain, pair.problem).normalized);
+    INFO(pair.problem_file);
+    auto task = ground(test::load_task(pair.domain_file, pair.problem_file).normalized);
     CHECK_FALSE(task->actions.empty());
   }
 }
