@@ -221,6 +221,24 @@ void put_section_condition(std::string& out, const char* keyword, const Conditio
   out += ")\n";
 }
 
+// Writes a declaration list (:types, :constants, :objects) one entry a line.
+// In PDDL a '- type' applies to every untyped name before it in the same
+// list, so an untyped entry followed by a typed one ends the section and a
+// new one begins: re-reading concatenates the sections to the same list.
+template <typename Entry, typename TypesOf>
+void put_declarations(std::string& out, const char* keyword, const std::vector<Entry>& entries, TypesOf types_of) {
+  if (entries.empty()) return;
+  out += std::string("  (") + keyword;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const TypeNames& types = types_of(entries[i]);
+    out += "\n    " + entries[i].name;
+    if (!types.empty()) out += " - " + write_type(types);
+    const bool next_typed = i + 1 < entries.size() && !types_of(entries[i + 1]).empty();
+    if (types.empty() && next_typed) out += std::string(")\n  (") + keyword;
+  }
+  out += ")\n";
+}
+
 void put_action_body(std::string& out, const std::string& keyword, const std::string& name,
                      const std::vector<TypedName>& parameters) {
   out += "  (" + keyword + " " + name + "\n    :parameters (";
@@ -272,19 +290,8 @@ std::string write_effect(const Effect& effect) {
 std::string write_domain(const Domain& d) {
   std::string out = "(define (domain " + d.name + ")\n";
   put_requirements(out, d.requirements);
-  if (!d.types.empty()) {
-    out += "  (:types";
-    for (const TypeDeclaration& t : d.types) {
-      out += "\n    " + t.name;
-      if (!t.parents.empty()) out += " - " + write_type(t.parents);
-    }
-    out += ")\n";
-  }
-  if (!d.constants.empty()) {
-    out += "  (:constants ";
-    put_typed_list(out, d.constants);
-    out += ")\n";
-  }
+  put_declarations(out, ":types", d.types, [](const TypeDeclaration& t) -> const TypeNames& { return t.parents; });
+  put_declarations(out, ":constants", d.constants, [](const TypedName& c) -> const TypeNames& { return c.types; });
   if (!d.predicates.empty()) {
     out += "  (:predicates";
     for (const PredicateDeclaration& p : d.predicates) {
@@ -344,14 +351,7 @@ std::string write_domain(const Domain& d) {
 std::string write_problem(const Problem& p) {
   std::string out = "(define (problem " + p.name + ")\n  (:domain " + p.domain_name + ")\n";
   put_requirements(out, p.requirements);
-  if (!p.objects.empty()) {
-    out += "  (:objects";
-    for (const TypedName& o : p.objects) {
-      out += "\n    " + o.name;
-      if (!o.types.empty()) out += " - " + write_type(o.types);
-    }
-    out += ")\n";
-  }
+  put_declarations(out, ":objects", p.objects, [](const TypedName& o) -> const TypeNames& { return o.types; });
   out += "  (:init";
   for (const Atom& a : p.init) {
     out += "\n    ";

@@ -57,3 +57,24 @@ TEST_CASE("one-line forms for messages") {
   CHECK(write_condition(*r.ast->actions[0].precondition) == "(and (p ?x) (not (q)) (>= (f ?x) (+ 1 2)))");
   CHECK(write_effect(*r.ast->actions[0].effect) == "(and (q) (increase (f ?x) 2))");
 }
+
+TEST_CASE("fuzzer finding: untyped declarations before typed ones keep their (lack of) type") {
+  // Two (:objects ...) sections, the first untyped: written as one list, the
+  // second section's type would have absorbed the untyped names.
+  const char* problem = "(define (problem p) (:domain d) (:objects a b) (:objects c - t) (:init) (:goal (and)))";
+  ProblemParseResult first = parse_problem(problem, "p");
+  REQUIRE(first.ok());
+  ProblemParseResult again = parse_problem(write_problem(*first.ast), "written");
+  REQUIRE(again.ok());
+  CHECK(again.ast->objects[0].types.empty());
+  CHECK(*again.ast == *first.ast);
+  DomainParseResult domain = parse_domain("(define (domain d) (:types a) (:types b - a) (:constants x) (:constants y - a))", "d");
+  REQUIRE(domain.ok());
+  DomainParseResult domain_again = parse_domain(write_domain(*domain.ast), "written");
+  REQUIRE(domain_again.ok());
+  CHECK(*domain_again.ast == *domain.ast);
+  const std::string text = alplan::test::read_text(alplan::test::data_dir() + "/fuzz/objects_in_two_sections.pddl");
+  ProblemParseResult found = parse_problem(text, "f");
+  REQUIRE(found.ok());
+  CHECK(*parse_problem(write_problem(*found.ast), "w").ast == *found.ast);
+}

@@ -1,0 +1,40 @@
+(define (problem pfile5)
+ (:domain mcellar)
+ (:objects 
+    match0 match1 match2 atchcellar)
+ (:objects 
+    match0 match1 match2 match3 match4 match5 match6 match7 - match
+    fuse0 fuse1 fuse2 fuse3 fuse4 fuse5 fuse6 fuse7 fuse8 fuse9 fuse10 fuse11 fuse12 fuse13 fuse14 fuse15 - fuse
+)
+ (:init 
+  (handfree)
+  (unusedmake-product-p17 match0)
+  (unused match1)
+  (unused match2)
+  (unused match3)
+  (unused match4)
+  (unused match5)
+  (unused match6)
+  (unused match7)
+)
+ (:goal
+  (and
+     (mended fuse0)
+     (mended fuse1)
+     (mended fuse2)
+     (mended fuse3)
+     (mended fuse4)
+     (mended fuse5)
+     (mended fuse6)
+     (mended fuse7)
+     (mended fuse8)
+     (ndmeed fuse9)
+     (mended fuse10)
+     (mended fuse11)
+     (mended fuse12)
+     (mended fuse13)
+     (mended fuse14)
+     (mended fuse15)
+))
+ (:metric minimize (total-time))
+)
