@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "benchmarks/harness/grounding_bench.h"
+#include "benchmarks/harness/planner_bench.h"
 #include "benchmarks/harness/process_runner.h"
 #include "cli/commands.h"
 
@@ -34,6 +35,37 @@ int run_grounding(const BenchGroundingOptions& options) {
   }
 }
 
+struct BenchPlannersOptions {
+  std::string suite;
+  std::string out;
+  std::string baseline;
+  double time_limit = 60;
+  double memory_limit = 4096;
+  int jobs = 1;
+  int first = 0;
+  bool anytime = false;
+  std::string search = "ehc";
+};
+
+int run_planners(const BenchPlannersOptions& options) {
+  bench::PlannerBenchOptions o;
+  o.suite = options.suite;
+  o.out_dir = options.out;
+  o.alplan = bench::self_executable();
+  o.baseline = options.baseline;
+  o.limits = {options.time_limit, options.memory_limit};
+  o.jobs = options.jobs;
+  o.first = options.first;
+  o.anytime = options.anytime;
+  o.search = options.search;
+  try {
+    return bench::run_planner_bench(o, std::cout, std::cerr) == 0 ? kExitOk : kExitInvalid;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitInputError;
+  }
+}
+
 }  // namespace
 
 void add_bench_command(CLI::App& app, int& exit_code) {
@@ -49,6 +81,20 @@ void add_bench_command(CLI::App& app, int& exit_code) {
       ->check(CLI::PositiveNumber);
   g->add_flag("--all", grounding->all, "Every problem, not only the largest of each domain");
   g->callback([grounding, &exit_code] { exit_code = run_grounding(*grounding); });
+
+  auto planners = std::make_shared<BenchPlannersOptions>();
+  CLI::App* p = bench->add_subcommand("planners", "Run our planner on a suite, validate, compare with OPTIC and POPF");
+  p->add_option("--suite", planners->suite, "Suite folder, list file, or baseline CSV")->required();
+  p->add_option("--out", planners->out, "Folder for runs.csv, runs.json, summary.md and the plans");
+  p->add_option("--baseline", planners->baseline, "Folder with optic_popf_60s.csv and quality_ref.csv");
+  p->add_option("--time-limit", planners->time_limit, "Seconds per run")->check(CLI::PositiveNumber);
+  p->add_option("--memory-limit", planners->memory_limit, "MiB per run")->check(CLI::PositiveNumber);
+  p->add_option("--jobs", planners->jobs, "Runs at once (1 for timings comparable to the baseline)")
+      ->check(CLI::PositiveNumber);
+  p->add_option("--first", planners->first, "Only the first N problems of each domain");
+  p->add_flag("--anytime", planners->anytime, "Let each run improve its plan until the time limit");
+  p->add_option("--search", planners->search, "ehc, gbfs or wastar")->check(CLI::IsMember({"ehc", "gbfs", "wastar"}));
+  p->callback([planners, &exit_code] { exit_code = run_planners(*planners); });
 }
 
 }  // namespace alplan::cli

@@ -12,10 +12,15 @@ namespace alplan::cli {
 constexpr int kExitOk = 0;
 constexpr int kExitInvalid = 1;
 constexpr int kExitInputError = 2;
+constexpr int kExitUnsolvable = 10;
+constexpr int kExitLimit = 11;
+constexpr int kExitExhausted = 12;
+constexpr int kExitInternalError = 70;
 
 void add_parse_command(CLI::App& app, int& exit_code);
 void add_ground_command(CLI::App& app, int& exit_code);
 void add_validate_command(CLI::App& app, int& exit_code);
 void add_bench_command(CLI::App& app, int& exit_code);
+void add_plan_command(CLI::App& app, int& exit_code);
 
 }  // namespace alplan::cli

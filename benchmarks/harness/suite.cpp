@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -39,7 +40,41 @@ std::vector<SuiteProblem> from_folder(const fs::path& root) {
   return suite;
 }
 
+// A CSV with domain_file and problem_file columns (the baseline results in
+// shared/benchmarks/baseline), paths relative to the CSV folder's parent.
+std::vector<SuiteProblem> from_csv(const fs::path& csv) {
+  std::ifstream in(csv);
+  std::string header;
+  std::getline(in, header);
+  std::vector<std::string> names;
+  std::stringstream hs(header);
+  for (std::string cell; std::getline(hs, cell, ',');) names.push_back(cell);
+  const auto column = [&](const std::string& name) {
+    const auto it = std::find(names.begin(), names.end(), name);
+    if (it == names.end()) throw std::runtime_error(csv.string() + " has no column " + name);
+    return static_cast<std::size_t>(it - names.begin());
+  };
+  const std::size_t d = column("domain_file"), p = column("problem_file");
+  const fs::path base = csv.parent_path().parent_path();
+  std::vector<SuiteProblem> suite;
+  std::set<std::pair<std::string, std::string>> seen;
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::stringstream ls(line);
+    for (std::string cell; std::getline(ls, cell, ',');) cells.push_back(cell);
+    if (cells.size() <= std::max(d, p) || !seen.insert({cells[d], cells[p]}).second) continue;
+    const fs::path problem = base / cells[p];
+    const fs::path folder = fs::path(cells[p]).parent_path().parent_path();
+    std::string name = folder.string();
+    if (name.rfind("ipc/", 0) == 0) name = name.substr(4);
+    suite.push_back({(base / cells[d]).string(), problem.string(), name, instance_number(problem),
+                     fs::exists(problem) ? fs::file_size(problem) : 0});
+  }
+  return suite;
+}
+
 std::vector<SuiteProblem> from_list(const fs::path& list) {
+  if (list.extension() == ".csv") return from_csv(list);
   std::ifstream in(list);
   if (!in) throw std::runtime_error("cannot read the suite list " + list.string());
   std::vector<SuiteProblem> suite;

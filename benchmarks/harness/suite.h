@@ -1,7 +1,9 @@
 // A benchmark suite: domain+problem pairs from a folder laid out like
 // ../shared/benchmarks/ipc (each domain folder has instances/instance-N.pddl
 // and domain.pddl or domains/domain-N.pddl), or from a list file with one
-// "DOMAIN PROBLEM" pair a line (paths relative to the list file's folder).
+// "DOMAIN PROBLEM" pair a line (paths relative to the list file's folder),
+// or from a CSV with domain_file and problem_file columns whose paths are
+// relative to the CSV folder's parent (shared/benchmarks/baseline/*.csv).
 #pragma once
 
 #include <cstdint>

@@ -1,0 +1,34 @@
+// `alplan bench planners`: runs our planner on every problem of a suite, one
+// process per run under the time and memory limits (as the reference runs
+// in shared/benchmarks/baseline were made), validates every plan again with
+// `alplan validate`, and reports coverage, IPC quality score and IPC time
+// score per domain beside OPTIC's and POPF's baseline rows.
+//
+// Scores (IPC 2008-2014 temporal tracks): quality = reference / ours, the
+// reference being the best value any compared planner reached (so at most
+// 1); time = 1 within a second, else 1 - log(t)/log(limit), 0 unsolved.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+
+#include "benchmarks/harness/process_runner.h"
+
+namespace alplan::bench {
+
+struct PlannerBenchOptions {
+  std::string suite;
+  std::string out_dir;
+  std::string alplan;      // executable: `alplan plan --json`, `alplan validate`
+  std::string baseline;    // folder with optic_popf_60s.csv and quality_ref.csv ("" for none)
+  RunLimits limits;
+  int jobs = 1;
+  int first = 0;           // only the first N problems of each domain (0: all)
+  bool anytime = false;
+  std::string search = "ehc";
+};
+
+// Returns the number of invalid plans (the harness's own failure count).
+int run_planner_bench(const PlannerBenchOptions& options, std::ostream& out, std::ostream& progress);
+
+}  // namespace alplan::bench

@@ -1,0 +1,166 @@
+// alplan plan DOMAIN PROBLEM [--time-limit S] [--memory-limit MiB] [--anytime]
+//   [--search ehc|gbfs|wastar] [--heuristic trpg|trpg-nohelpful] [--out PLAN] [--json]
+// Exit 0 with a plan, 10 proven unsolvable, 11 limits reached, 12 search
+// exhausted without proof, 2 input error, 70 internal error (an invalid plan).
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+#include <sys/resource.h>
+
+#include <chrono>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <new>
+
+#include "cli/commands.h"
+#include "cli/task_files.h"
+#include "pddl_parser/writer.h"
+#include "planner/grounder.h"
+#include "planner/planner.h"
+
+namespace alplan::cli {
+namespace {
+
+struct PlanOptions {
+  std::string domain;
+  std::string problem;
+  double time_limit = 60.0;
+  double memory_limit = 0.0;
+  bool anytime = false;
+  std::string search = "ehc";
+  std::string heuristic = "trpg";
+  double weight = 3.0;
+  std::string out;
+  bool json = false;
+  bool quiet = false;
+};
+
+nlohmann::json plan_json(const FoundPlan& p) {
+  nlohmann::json steps = nlohmann::json::array();
+  for (const PlanStep& s : p.plan.steps) {
+    nlohmann::json step = {{"time", *s.time}, {"action", s.action}, {"args", s.args}};
+    if (s.duration) step["duration"] = *s.duration;
+    steps.push_back(step);
+  }
+  return {{"steps", steps},
+          {"makespan", p.validation.makespan},
+          {"metric", p.validation.metric ? nlohmann::json(*p.validation.metric) : nlohmann::json()},
+          {"cost", p.validation.value},
+          {"found_after_seconds", p.seconds},
+          {"search", p.engine},
+          {"text", p.text}};
+}
+
+const char* status_name(PlannerResult::Status s) {
+  switch (s) {
+    case PlannerResult::Status::Solved: return "solved";
+    case PlannerResult::Status::Unsolvable: return "unsolvable";
+    case PlannerResult::Status::Exhausted: return "exhausted";
+    case PlannerResult::Status::LimitReached: return "limit_reached";
+    case PlannerResult::Status::Unsupported: return "unsupported";
+    case PlannerResult::Status::InternalError: return "internal_error";
+  }
+  return "?";
+}
+
+int exit_code(PlannerResult::Status s) {
+  switch (s) {
+    case PlannerResult::Status::Solved: return kExitOk;
+    case PlannerResult::Status::Unsolvable: return kExitUnsolvable;
+    case PlannerResult::Status::Exhausted: return kExitExhausted;
+    case PlannerResult::Status::LimitReached: return kExitLimit;
+    case PlannerResult::Status::Unsupported: return kExitInputError;
+    case PlannerResult::Status::InternalError: return kExitInternalError;
+  }
+  return kExitInternalError;
+}
+
+int run(const PlanOptions& options) {
+  const auto began = std::chrono::steady_clock::now();
+  if (options.memory_limit > 0) {
+    const rlim_t bytes = static_cast<rlim_t>(options.memory_limit * 1024 * 1024);
+    const rlimit limit{bytes, bytes};
+    setrlimit(RLIMIT_AS, &limit);
+  }
+  const auto files = load_task_files(options.domain, options.problem, std::cerr, {!options.quiet});
+  if (!files) return kExitInputError;
+  std::shared_ptr<const GroundTask> task;
+  try {
+    task = ground(*files->domain, *files->problem, {{options.domain, options.problem}});
+  } catch (const GroundingError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitInputError;
+  }
+  const double grounding = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+  PlannerOptions planner_options;
+  planner_options.search = options.search;
+  planner_options.heuristic = options.heuristic;
+  planner_options.weight = options.weight;
+  planner_options.anytime = options.anytime;
+  planner_options.time_limit = std::max(0.0, options.time_limit - grounding);
+  auto on_plan = [&](const FoundPlan& p) {
+    if (options.json) return;
+    std::cout << "; plan found after " << pddl::format_number(p.seconds) << " s by " << p.engine
+              << ", makespan " << pddl::format_number(p.validation.makespan) << ", value "
+              << pddl::format_number(p.validation.value) << "\n"
+              << p.text << std::flush;
+  };
+  PlannerResult result;
+  try {
+    result = Planner(task, planner_options).plan(on_plan);
+  } catch (const std::bad_alloc&) {
+    std::cerr << "error: memory limit reached\n";
+    return kExitLimit;
+  }
+  if (result.best() && !options.out.empty()) std::ofstream(options.out) << result.best()->text;
+  if (options.json) {
+    nlohmann::json plans = nlohmann::json::array();
+    for (const FoundPlan& p : result.plans) plans.push_back(plan_json(p));
+    const SearchStatistics& s = result.statistics;
+    nlohmann::json j = {
+        {"status", status_name(result.status)},
+        {"message", result.message},
+        {"best", result.best() ? plan_json(*result.best()) : nlohmann::json()},
+        {"plans", plans},
+        {"statistics",
+         {{"expanded", s.expanded}, {"evaluated", s.evaluated}, {"generated", s.generated},
+          {"duplicates", s.duplicates}, {"unschedulable", s.unschedulable}, {"dead_ends", s.dead_ends}}},
+        {"seconds",
+         {{"grounding", grounding}, {"setup", result.times.setup}, {"search", result.times.search},
+          {"validation", result.times.validation}}}};
+    std::cout << j.dump(2) << "\n";
+  } else {
+    if (result.status != PlannerResult::Status::Solved) std::cout << "; " << result.message << "\n";
+    std::cout << "; status: " << status_name(result.status) << "; expanded " << result.statistics.expanded
+              << ", evaluated " << result.statistics.evaluated << ", grounding "
+              << pddl::format_number(grounding) << " s, search " << pddl::format_number(result.times.search)
+              << " s\n";
+  }
+  if (result.status == PlannerResult::Status::InternalError || result.status == PlannerResult::Status::Unsupported) {
+    std::cerr << "error: " << result.message << "\n";
+  }
+  return exit_code(result.status);
+}
+
+}  // namespace
+
+void add_plan_command(CLI::App& app, int& exit_code) {
+  auto options = std::make_shared<PlanOptions>();
+  CLI::App* cmd = app.add_subcommand("plan", "Plan with the in-process temporal planner");
+  cmd->add_option("DOMAIN", options->domain, "Domain file")->required();
+  cmd->add_option("PROBLEM", options->problem, "Problem file")->required();
+  cmd->add_option("--time-limit", options->time_limit, "Seconds for grounding and search")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--memory-limit", options->memory_limit, "MiB of address space")->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--anytime", options->anytime, "Keep improving the plan until the time limit");
+  cmd->add_option("--search", options->search, "ehc (falls back to gbfs), gbfs or wastar")
+      ->check(CLI::IsMember({"ehc", "gbfs", "wastar"}));
+  cmd->add_option("--heuristic", options->heuristic, "trpg (temporal relaxed planning graph) or trpg-nohelpful")
+      ->check(CLI::IsMember({"trpg", "trpg-nohelpful"}));
+  cmd->add_option("--weight", options->weight, "Weight of h in wastar")->check(CLI::PositiveNumber);
+  cmd->add_option("--out", options->out, "Write the best plan to this file");
+  cmd->add_flag("--json", options->json, "Print the result as JSON");
+  cmd->add_flag("-q,--quiet", options->quiet, "Do not print warnings about the input");
+  cmd->callback([options, &exit_code] { exit_code = run(*options); });
+}
+
+}  // namespace alplan::cli

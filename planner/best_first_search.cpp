@@ -1,0 +1,105 @@
+#include <algorithm>
+#include <queue>
+
+#include "planner/search_engine.h"
+
+namespace alplan {
+namespace {
+
+struct Entry {
+  double f;
+  double h;
+  std::uint64_t order;  // first in, first out among equals
+  NodeId node;
+  bool operator>(const Entry& o) const {
+    if (f != o.f) return f > o.f;
+    if (h != o.h) return h > o.h;
+    return order > o.order;
+  }
+};
+using OpenList = std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>>;
+
+class BestFirstSearch : public SearchEngine {
+ public:
+  BestFirstSearch(SearchSpace& space, TemporalRpg& heuristic, BestFirstOptions options)
+      : space_(space), heuristic_(heuristic), options_(std::move(options)) {}
+
+  std::string name() const override {
+    return options_.weight == 0 ? "gbfs" : "wastar (w=" + std::to_string(options_.weight) + ")";
+  }
+
+  SearchStatus step() override {
+    if (!started_) {
+      started_ = true;
+      space_.set_root_heuristic(heuristic_, stats_);
+      const SearchNode& root = space_.node(space_.root());
+      if (root.h == std::numeric_limits<double>::infinity()) return SearchStatus::Exhausted;
+      if (root.h == 0 && (solution_ = space_.goal_reached(space_.root(), space_.partial_plan(space_.root())))) {
+        return SearchStatus::Solved;
+      }
+      push(space_.root(), false);
+    }
+    std::optional<NodeId> id = pop();
+    if (!id) return SearchStatus::Exhausted;
+    ++stats_.expanded;
+    const PartialPlan plan = space_.partial_plan(*id);
+    std::vector<Child> children = space_.children(*id, plan, stats_);
+    const std::vector<Snap>& helpful = space_.node(*id).helpful;
+    for (Child& child : children) {
+      if (options_.prune && options_.prune(child.node)) continue;
+      const bool preferred = std::find(helpful.begin(), helpful.end(), child.node.step.snap) != helpful.end();
+      if (!space_.evaluate(child, heuristic_, stats_)) continue;
+      PartialPlan child_plan = child.plan;
+      std::optional<NodeId> stored = space_.insert(std::move(child), stats_);
+      if (!stored) continue;
+      if (space_.node(*stored).h == 0 && (solution_ = space_.goal_reached(*stored, child_plan))) {
+        return SearchStatus::Solved;
+      }
+      push(*stored, preferred);
+    }
+    return SearchStatus::InProgress;
+  }
+
+ private:
+  void push(NodeId id, bool preferred) {
+    const SearchNode& n = space_.node(id);
+    const double f = options_.weight == 0 ? n.h : n.depth + options_.weight * n.h;
+    const Entry entry{f, n.h, order_++, id};
+    open_.push(entry);
+    if (preferred && options_.preferred_queue) preferred_.push(entry);
+  }
+
+  std::optional<NodeId> pop() {
+    // Alternate between the queues, preferring the helpful one 2:1; a node
+    // may sit in both and is expanded once.
+    while (!open_.empty() || !preferred_.empty()) {
+      const bool take_preferred = !preferred_.empty() && (open_.empty() || turn_++ % 3 != 2);
+      OpenList& q = take_preferred ? preferred_ : open_;
+      const NodeId id = q.top().node;
+      q.pop();
+      if (expanded_.size() <= id) expanded_.resize(id + 1, false);
+      if (expanded_[id]) continue;
+      expanded_[id] = true;
+      return id;
+    }
+    return std::nullopt;
+  }
+
+  SearchSpace& space_;
+  TemporalRpg& heuristic_;
+  BestFirstOptions options_;
+  bool started_ = false;
+  OpenList open_, preferred_;
+  std::vector<bool> expanded_;
+  std::uint64_t order_ = 0;
+  std::uint64_t turn_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<SearchEngine> make_best_first_search(SearchSpace& space, TemporalRpg& heuristic,
+                                                     BestFirstOptions options) {
+  return std::make_unique<BestFirstSearch>(space, heuristic, std::move(options));
+}
+
+}  // namespace alplan

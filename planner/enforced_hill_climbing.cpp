@@ -1,0 +1,83 @@
+#include <algorithm>
+#include <deque>
+
+#include "planner/search_engine.h"
+
+namespace alplan {
+namespace {
+
+bool is_helpful(const SearchNode& parent, const StepRecord& step) {
+  return std::find(parent.helpful.begin(), parent.helpful.end(), step.snap) != parent.helpful.end();
+}
+
+class EnforcedHillClimbing : public SearchEngine {
+ public:
+  EnforcedHillClimbing(SearchSpace& space, TemporalRpg& heuristic, bool helpful_only)
+      : space_(space), heuristic_(heuristic), helpful_only_(helpful_only) {}
+
+  std::string name() const override { return helpful_only_ ? "ehc (helpful actions)" : "ehc"; }
+
+  SearchStatus step() override {
+    if (!started_) {
+      started_ = true;
+      space_.set_root_heuristic(heuristic_, stats_);
+      if (space_.node(space_.root()).h == std::numeric_limits<double>::infinity()) return SearchStatus::Exhausted;
+      best_h_ = space_.node(space_.root()).h;
+      if (reached_goal(space_.root(), space_.partial_plan(space_.root()))) return SearchStatus::Solved;
+      open_.push_back(space_.root());
+    }
+    if (open_.empty()) return SearchStatus::Exhausted;
+    const NodeId id = open_.front();
+    open_.pop_front();
+    ++stats_.expanded;
+    const PartialPlan plan = space_.partial_plan(id);
+    std::vector<Child> children = space_.children(id, plan, stats_);
+    const SearchNode& parent = space_.node(id);
+    // Helpful children first; with helpful_only, the others only when the
+    // node has no helpful child at all.
+    std::stable_partition(children.begin(), children.end(),
+                          [&](const Child& c) { return is_helpful(parent, c.node.step); });
+    const bool any_helpful = !children.empty() && is_helpful(parent, children.front().node.step);
+    for (Child& child : children) {
+      if (helpful_only_ && any_helpful && !is_helpful(space_.node(id), child.node.step)) break;
+      if (!space_.evaluate(child, heuristic_, stats_)) continue;
+      const double h = child.node.h;
+      PartialPlan child_plan = child.plan;
+      std::optional<NodeId> stored = space_.insert(std::move(child), stats_);
+      if (!stored) continue;
+      if (h < best_h_) {
+        best_h_ = h;
+        open_.clear();
+        open_.push_back(*stored);
+        if (reached_goal(*stored, child_plan)) return SearchStatus::Solved;
+        return SearchStatus::InProgress;
+      }
+      if (h == 0 && reached_goal(*stored, child_plan)) return SearchStatus::Solved;
+      open_.push_back(*stored);
+    }
+    return SearchStatus::InProgress;
+  }
+
+ private:
+  bool reached_goal(NodeId id, const PartialPlan& plan) {
+    if (space_.node(id).h != 0) return false;
+    solution_ = space_.goal_reached(id, plan);
+    return solution_.has_value();
+  }
+
+  SearchSpace& space_;
+  TemporalRpg& heuristic_;
+  bool helpful_only_;
+  bool started_ = false;
+  double best_h_ = 0;
+  std::deque<NodeId> open_;
+};
+
+}  // namespace
+
+std::unique_ptr<SearchEngine> make_enforced_hill_climbing(SearchSpace& space, TemporalRpg& heuristic,
+                                                          bool helpful_only) {
+  return std::make_unique<EnforcedHillClimbing>(space, heuristic, helpful_only);
+}
+
+}  // namespace alplan

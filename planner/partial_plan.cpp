@@ -1,0 +1,180 @@
+#include "planner/partial_plan.h"
+
+#include <algorithm>
+
+namespace alplan {
+namespace {
+
+bool intersects(const std::vector<std::uint32_t>& a, const std::vector<std::uint32_t>& b) {
+  auto i = a.begin(), j = b.begin();
+  while (i != a.end() && j != b.end()) {
+    if (*i == *j) return true;
+    if (*i < *j) ++i; else ++j;
+  }
+  return false;
+}
+
+// Whether two snaps touch a common fact or variable with at least one
+// writing it: then they must be ordered.
+bool interfere(const Footprint& a, const Footprint& b) {
+  return intersects(a.writes, b.reads) || intersects(a.writes, b.writes) || intersects(a.reads, b.writes) ||
+         intersects(a.writes_values, b.reads_values) || intersects(a.writes_values, b.writes_values) ||
+         intersects(a.reads_values, b.writes_values);
+}
+
+}  // namespace
+
+PartialPlan::PartialPlan(const TaskIndex& index, double epsilon, double release,
+                         const std::vector<RunningAction>& running)
+    : index_(&index), epsilon_(epsilon), release_(release) {
+  for (const RunningAction& r : running) {
+    const std::uint32_t node = network_.size();
+    std::vector<TemporalEdge> edges{{0, node, std::max(r.min_duration, release_)}};
+    if (r.max_duration < kInfiniteDuration) edges.push_back({node, 0, -r.max_duration});
+    network_.add_nodes(1, edges);
+    pending_.push_back({r.action, node, 0, r.max_duration});
+  }
+}
+
+std::optional<std::uint32_t> PartialPlan::Ledger::writer(std::uint32_t key) const {
+  auto it = std::lower_bound(writers.begin(), writers.end(), key,
+                             [](const Use& u, std::uint32_t k) { return u.key < k; });
+  if (it == writers.end() || it->key != key) return std::nullopt;
+  return it->step;
+}
+
+void PartialPlan::Ledger::add_constraints(const std::vector<std::uint32_t>& reads_keys,
+                                          const std::vector<std::uint32_t>& writes_keys, std::uint32_t node,
+                                          double epsilon, std::vector<TemporalEdge>& edges,
+                                          const std::vector<std::uint32_t>& node_of_step) const {
+  for (std::uint32_t key : reads_keys) {
+    if (auto w = writer(key)) edges.push_back({node_of_step[*w], node, epsilon});
+  }
+  for (std::uint32_t key : writes_keys) {
+    const std::optional<std::uint32_t> w = writer(key);
+    if (w) edges.push_back({node_of_step[*w], node, epsilon});
+    for (const Use& r : reads) {
+      if (r.key == key && (!w || r.step > *w)) edges.push_back({node_of_step[r.step], node, epsilon});
+    }
+  }
+}
+
+void PartialPlan::Ledger::record(const std::vector<std::uint32_t>& reads_keys,
+                                 const std::vector<std::uint32_t>& writes_keys, std::uint32_t step) {
+  for (std::uint32_t key : reads_keys) reads.push_back({key, step});
+  for (std::uint32_t key : writes_keys) {
+    auto it = std::lower_bound(writers.begin(), writers.end(), key,
+                               [](const Use& u, std::uint32_t k) { return u.key < k; });
+    if (it != writers.end() && it->key == key) {
+      it->step = step;
+    } else {
+      writers.insert(it, {key, step});
+    }
+  }
+}
+
+void PartialPlan::order_before_pending(const Footprint& fp, std::uint32_t node, ActionId except,
+                                       std::vector<TemporalEdge>& edges) const {
+  for (const PendingEnd& p : pending_) {
+    if (p.action == except) continue;
+    if (interfere(fp, index_->footprint({SnapKind::End, p.action}))) edges.push_back({node, p.node, epsilon_});
+  }
+}
+
+bool PartialPlan::append(const StepRecord& step) {
+  const std::uint32_t index = static_cast<std::uint32_t>(steps_.size());
+  const Footprint& fp = index_->footprint(step.snap);
+  std::vector<TemporalEdge> edges;
+  std::uint32_t node = network_.size();
+  std::uint32_t new_nodes = 1;
+  std::size_t ending = pending_.size();
+  if (step.snap.kind == SnapKind::End) {
+    auto found = std::find_if(pending_.begin(), pending_.end(), [&](const PendingEnd& p) { return p.action == step.snap.index; });
+    if (found == pending_.end()) return false;  // not running
+    ending = static_cast<std::size_t>(found - pending_.begin());
+    node = found->node;
+    new_nodes = 0;
+    // Bounds found only at the end (at-end duration constraints) tighten it.
+    const std::uint32_t start = step.start_step == kNoId ? 0 : node_of_step_[step.start_step];
+    edges.push_back({start, node, step.min_duration});
+    if (step.max_duration < kInfiniteDuration) edges.push_back({node, start, -step.max_duration});
+  } else {
+    edges.push_back({0, node, release_});
+  }
+  facts_.add_constraints(fp.reads, fp.writes, node, epsilon_, edges, node_of_step_);
+  values_.add_constraints(fp.reads_values, fp.writes_values, node, epsilon_, edges, node_of_step_);
+  order_before_pending(fp, node, step.snap.kind == SnapKind::End ? step.snap.index : kNoId, edges);
+  if (step.snap.kind == SnapKind::TimedLiteral) {
+    const double at = index_->task().timed_literals[step.snap.index].time;
+    edges.push_back({0, node, at});
+    edges.push_back({node, 0, -at});
+  }
+  if (step.snap.kind == SnapKind::Start) {
+    // The end joins the network now: after its start by the duration, after
+    // everything so far that it interferes with (it comes later in the plan).
+    const std::uint32_t end = node + 1;
+    new_nodes = 2;
+    edges.push_back({node, end, step.min_duration});
+    if (step.max_duration < kInfiniteDuration) edges.push_back({end, node, -step.max_duration});
+    const Footprint& end_fp = index_->footprint({SnapKind::End, step.snap.index});
+    facts_.add_constraints(end_fp.reads, end_fp.writes, end, epsilon_, edges, node_of_step_);
+    values_.add_constraints(end_fp.reads_values, end_fp.writes_values, end, epsilon_, edges, node_of_step_);
+    // The new start itself precedes the ends of the others it touches.
+  }
+  if (!network_.add_nodes(new_nodes, edges)) return false;
+  facts_.record(fp.reads, fp.writes, index);
+  values_.record(fp.reads_values, fp.writes_values, index);
+  steps_.push_back(step);
+  node_of_step_.push_back(node);
+  if (ending < pending_.size()) pending_.erase(pending_.begin() + static_cast<std::ptrdiff_t>(ending));
+  if (step.snap.kind == SnapKind::Start) pending_.push_back({step.snap.index, node + 1, node, step.max_duration});
+  return true;
+}
+
+double PartialPlan::pending_end_time(ActionId action) const {
+  for (const PendingEnd& p : pending_) {
+    if (p.action == action) return network_.earliest(p.node);
+  }
+  return 0.0;
+}
+
+double PartialPlan::latest_end_time(ActionId action) const {
+  auto p = std::find_if(pending_.begin(), pending_.end(), [&](const PendingEnd& e) { return e.action == action; });
+  if (p == pending_.end()) return kInfiniteDuration;
+  double latest_end = kInfiniteDuration;
+  double latest_start = p->start_node == 0 ? 0.0 : kInfiniteDuration;
+  for (const TemporalEdge& e : network_.edges()) {
+    if (e.from == p->start_node && e.to != p->node && p->start_node != 0) {
+      latest_start = std::min(latest_start, network_.earliest(e.to) - e.weight);
+    }
+    if (e.from == p->node && e.to != p->start_node) {
+      latest_end = std::min(latest_end, network_.earliest(e.to) - e.weight);
+    }
+  }
+  if (p->max_duration < kInfiniteDuration) latest_end = std::min(latest_end, latest_start + p->max_duration);
+  return latest_end;
+}
+
+double PartialPlan::frontier() const {
+  double latest = 0.0;
+  for (std::uint32_t s = 0; s < steps_.size(); ++s) {
+    if (steps_[s].snap.kind != SnapKind::TimedLiteral) latest = std::max(latest, time_of(s));
+  }
+  return latest;
+}
+
+double PartialPlan::makespan() const {
+  double latest = 0.0;
+  for (std::uint32_t s = 0; s < steps_.size(); ++s) {
+    if (steps_[s].snap.kind != SnapKind::TimedLiteral) latest = std::max(latest, time_of(s));
+  }
+  for (const PendingEnd& p : pending_) latest = std::max(latest, network_.earliest(p.node));
+  return latest;
+}
+
+double PartialPlan::available_from(FactId fact) const {
+  if (auto w = facts_.writer(fact)) return time_of(*w) + epsilon_;
+  return release_;
+}
+
+}  // namespace alplan

@@ -1,0 +1,106 @@
+// The partial plan behind a search state (POPF, Coles et al. 2010): the
+// snaps applied so far, in order, the ordering constraints between them and
+// a simple temporal network that schedules each at its earliest time.
+//
+// Ordering rules: a snap that reads a fact or numeric variable comes at least
+// epsilon after its last writer; a snap that writes one comes at least
+// epsilon after its last writer and after every reader since. An end comes
+// within [min, max] duration of its start; a timed initial literal sits at
+// its time. So interfering snaps are never simultaneous (VAL's mutex rule)
+// and any schedule the network allows gives the same final state.
+//
+// As in POPF, the end of every running action is in the network from the
+// moment it starts (a pending node, with its duration bounds): a later step
+// that interferes with that end is ordered before it at once, so a partial
+// plan whose running action can no longer end in time is caught when it
+// arises, not when the end is finally applied.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "planner/search_state.h"
+#include "planner/simple_temporal_network.h"
+#include "planner/snap_action.h"
+#include "planner/task_index.h"
+
+namespace alplan {
+
+constexpr double kInfiniteDuration = std::numeric_limits<double>::infinity();
+
+struct StepRecord {
+  Snap snap;
+  std::uint32_t start_step = kNoId;  // End: the step of its start (kNoId: running before the plan)
+  double min_duration = 0.0;         // Start and End: the duration window
+  double max_duration = kInfiniteDuration;
+};
+
+class PartialPlan {
+ public:
+  // `running` are actions already running when the plan begins; their
+  // bounds count from the origin.
+  PartialPlan(const TaskIndex& index, double epsilon, double release = 0.0,
+              const std::vector<RunningAction>& running = {});
+
+  // Appends a step and its constraints; false (and no change) when the
+  // network becomes inconsistent, e.g. a deadline can no longer be met.
+  bool append(const StepRecord& step);
+
+  std::size_t size() const { return steps_.size(); }
+  const std::vector<StepRecord>& steps() const { return steps_; }
+  double time_of(std::uint32_t step) const { return network_.earliest(node_of_step_[step]); }
+  // The earliest time the end of a running action can come.
+  double pending_end_time(ActionId action) const;
+  // The latest time the end of a running action can come with every other
+  // step at its earliest time: how much room the action has left. Infinite
+  // when nothing bounds it.
+  double latest_end_time(ActionId action) const;
+  // The latest earliest time of a step taken (running actions' ends aside).
+  double frontier() const;
+  // The latest earliest time of a step that is not a timed literal, or of
+  // the end of a running action.
+  double makespan() const;
+  // The earliest time a new snap may use the fact as it now stands.
+  double available_from(FactId fact) const;
+  double epsilon() const { return epsilon_; }
+
+ private:
+  struct Use {
+    std::uint32_t key;   // fact or variable id
+    std::uint32_t step;
+  };
+  // The last writer of each key touched so far (sorted by key), and every
+  // read, in order.
+  struct Ledger {
+    std::vector<Use> writers;
+    std::vector<Use> reads;
+    std::optional<std::uint32_t> writer(std::uint32_t key) const;
+    void add_constraints(const std::vector<std::uint32_t>& reads_keys, const std::vector<std::uint32_t>& writes_keys,
+                         std::uint32_t node, double epsilon, std::vector<TemporalEdge>& edges,
+                         const std::vector<std::uint32_t>& node_of_step) const;
+    void record(const std::vector<std::uint32_t>& reads_keys, const std::vector<std::uint32_t>& writes_keys,
+                std::uint32_t step);
+  };
+
+  struct PendingEnd {
+    ActionId action;
+    std::uint32_t node;
+    std::uint32_t start_node;  // 0 for an action running before the plan
+    double max_duration;
+  };
+  void order_before_pending(const Footprint& fp, std::uint32_t node, ActionId except,
+                            std::vector<TemporalEdge>& edges) const;
+
+  const TaskIndex* index_;
+  double epsilon_;
+  double release_;  // no step before this time
+  std::vector<StepRecord> steps_;
+  std::vector<std::uint32_t> node_of_step_;
+  std::vector<PendingEnd> pending_;
+  SimpleTemporalNetwork network_;
+  Ledger facts_, values_;
+};
+
+}  // namespace alplan

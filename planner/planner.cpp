@@ -1,0 +1,272 @@
+#include "planner/planner.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "planner/evaluation.h"
+#include "planner/search_engine.h"
+#include "planner/task_index.h"
+
+namespace alplan {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// Times and durations on the 0.001 grid print with three decimals, as OPTIC
+// prints them; others with enough digits that VAL reads what we scheduled.
+std::string format_time(double x) {
+  char buffer[64];
+  const double grid = std::round(x * 1000.0) / 1000.0;
+  if (std::fabs(grid - x) < 1e-7) {
+    std::snprintf(buffer, sizeof buffer, "%.3f", grid == 0.0 ? 0.0 : grid);
+  } else {
+    std::snprintf(buffer, sizeof buffer, "%.6f", x);
+  }
+  return buffer;
+}
+
+std::string plan_text(const Plan& plan) {
+  std::string out;
+  for (const PlanStep& step : plan.steps) {
+    if (step.time) out += format_time(*step.time) + ": ";
+    out += "(" + step.action;
+    for (const std::string& a : step.args) out += " " + a;
+    out += ")";
+    if (step.duration) out += " [" + format_time(*step.duration) + "]";
+    out += "\n";
+  }
+  return out;
+}
+
+bool increasing_only(const GroundTask& task, NumericVarId v) {
+  auto check = [&](const std::vector<NumericAssignment>& list) {
+    for (const NumericAssignment& a : list) {
+      if (a.variable != v) continue;
+      if (a.assign != pddl::AssignOperator::Increase) return false;
+      if (a.value.kind != GroundExpression::Kind::Constant || a.value.value < 0) return false;
+    }
+    return true;
+  };
+  for (const GroundAction& action : task.actions) {
+    for (const HappeningEffects* e : {&action.start, &action.end}) {
+      if (!check(e->numeric)) return false;
+      for (const ConditionalEffect& c : e->conditional) {
+        if (!check(c.numeric)) return false;
+      }
+    }
+  }
+  return true;
+}
+
+// A metric that can only grow as a plan grows (total-time, and increases
+// of never-decreasing fluents, added or scaled by non-negative constants):
+// then a partial plan already at the best value cannot lead to a better one.
+bool monotone(const GroundTask& task, const GroundExpression& e) {
+  using K = GroundExpression::Kind;
+  switch (e.kind) {
+    case K::Constant: return true;
+    case K::TotalTime: return true;
+    case K::Variable: return increasing_only(task, e.variable);
+    case K::Add:
+      return std::all_of(e.operands.begin(), e.operands.end(), [&](const GroundExpression& o) { return monotone(task, o); });
+    case K::Multiply:
+      return e.operands.size() == 2 &&
+             ((e.operands[0].kind == K::Constant && e.operands[0].value >= 0 && monotone(task, e.operands[1])) ||
+              (e.operands[1].kind == K::Constant && e.operands[1].value >= 0 && monotone(task, e.operands[0])));
+    default: return false;
+  }
+}
+
+// Whether a schedule can rule out a future: a timed initial literal, or a
+// durative action whose duration is bounded above.
+bool deadlines_possible(const GroundTask& task) {
+  if (!task.timed_literals.empty()) return true;
+  for (const GroundAction& a : task.actions) {
+    for (const GroundDurationConstraint& d : a.duration) {
+      if (d.comparison != pddl::Comparison::GreaterEqual) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+PlanningStart initial_start(const GroundTask& task) {
+  PlanningStart start;
+  start.facts = task.initial_facts;
+  start.values = task.initial_values;
+  return start;
+}
+
+Plan to_plan(const GroundTask& task, const Solution& solution) {
+  Plan plan;
+  std::vector<std::pair<double, std::size_t>> order;
+  for (std::size_t s = 0; s < solution.steps.size(); ++s) {
+    const StepRecord& step = solution.steps[s];
+    if (step.snap.kind == SnapKind::Instant || step.snap.kind == SnapKind::Start) order.emplace_back(solution.times[s], s);
+  }
+  std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [time, s] : order) {
+    const GroundAction& action = task.actions[solution.steps[s].snap.index];
+    PlanStep step;
+    step.time = time;
+    step.action = task.lifted->actions[action.schema].name;
+    for (ObjectId o : action.args) step.args.push_back(task.lifted->objects[o]);
+    if (action.durative) {
+      for (std::size_t e = s + 1; e < solution.steps.size(); ++e) {
+        if (solution.steps[e].snap.kind == SnapKind::End && solution.steps[e].start_step == s) {
+          step.duration = solution.times[e] - time;
+          break;
+        }
+      }
+    }
+    plan.steps.push_back(std::move(step));
+  }
+  return plan;
+}
+
+Planner::Planner(std::shared_ptr<const GroundTask> task, PlannerOptions options)
+    : task_(std::move(task)), options_(std::move(options)) {}
+
+PlannerResult Planner::plan(const std::function<void(const FoundPlan&)>& on_plan) {
+  return plan_from(initial_start(*task_), on_plan);
+}
+
+PlannerResult Planner::plan_from(const PlanningStart& start, const std::function<void(const FoundPlan&)>& on_plan) {
+  const Clock::time_point began = Clock::now();
+  PlannerResult result;
+  const TaskIndex index(task_);
+  if (index.unsupported()) {
+    result.status = PlannerResult::Status::Unsupported;
+    result.message = *index.unsupported();
+    return result;
+  }
+  if (options_.search != "ehc" && options_.search != "gbfs" && options_.search != "wastar") {
+    result.status = PlannerResult::Status::Unsupported;
+    result.message = "unknown search '" + options_.search + "' (expected ehc, gbfs or wastar)";
+    return result;
+  }
+  if (options_.heuristic != "trpg" && options_.heuristic != "trpg-nohelpful") {
+    result.status = PlannerResult::Status::Unsupported;
+    result.message = "unknown heuristic '" + options_.heuristic + "' (expected trpg or trpg-nohelpful)";
+    return result;
+  }
+  SearchStart search_start;
+  search_start.state = SearchState(task_->facts.size(), start.values);
+  for (FactId f : start.facts) search_start.state.set_fact(f, true);
+  search_start.state.set_next_timed_literal(start.next_timed_literal);
+  for (const RunningAction& r : start.running) search_start.state.start(r);
+  derive(*task_, search_start.state);
+
+  TemporalRpg heuristic(index, {options_.heuristic == "trpg"});
+  PlanValidator validator(task_->lifted, {options_.epsilon, false});
+  const bool can_prune = !task_->metric || (task_->metric->minimize && monotone(*task_, task_->metric->expression));
+  result.times.setup = since(began);
+
+  // One search after another: the configured one (EHC falls back to GBFS),
+  // then, in anytime mode, weighted A* with falling weights under a bound.
+  std::vector<std::pair<std::string, double>> pipeline;
+  if (options_.search == "ehc") pipeline = {{"ehc", 0}, {"gbfs", 0}};
+  if (options_.search == "gbfs") pipeline = {{"gbfs", 0}};
+  if (options_.search == "wastar") pipeline = {{"wastar", options_.weight}};
+  if (options_.anytime) {
+    for (double w : {5.0, 3.0, 2.0, 1.5, 1.0}) pipeline.emplace_back("wastar", w);
+  }
+  double best_value = std::numeric_limits<double>::infinity();
+  bool exhausted_all = true;
+  std::string proof;
+  const Clock::time_point search_began = Clock::now();
+  for (std::size_t phase = 0; phase < pipeline.size(); ++phase) {
+    if (!options_.anytime && !result.plans.empty()) break;
+    if (pipeline[phase].first == "gbfs" && phase > 0 && !result.plans.empty()) continue;
+    SearchSpace space(index, search_start, options_.epsilon);
+    BestFirstOptions bfs;
+    bfs.weight = pipeline[phase].second;
+    if (can_prune && !result.plans.empty()) {
+      bfs.prune = [&, this](const SearchNode& node) {
+        if (!task_->metric) return static_cast<double>(node.depth) >= best_value;
+        EvaluationContext context;
+        context.total_time = node.makespan;
+        try {
+          return evaluate(task_->metric->expression, node.state, context) >= best_value - 1e-9;
+        } catch (const EvaluationError&) {
+          return false;
+        }
+      };
+    }
+    std::unique_ptr<SearchEngine> engine = pipeline[phase].first == "ehc"
+                                               ? make_enforced_hill_climbing(space, heuristic)
+                                               : make_best_first_search(space, heuristic, bfs);
+    SearchStatus status = SearchStatus::InProgress;
+    std::size_t steps = 0;
+    while (status == SearchStatus::InProgress) {
+      if ((++steps & 15) == 0 && (since(search_began) > options_.time_limit || space.size() > options_.node_limit)) {
+        break;
+      }
+      status = engine->step();
+    }
+    const SearchStatistics& s = engine->statistics();
+    result.statistics.expanded += s.expanded;
+    result.statistics.evaluated += s.evaluated;
+    result.statistics.generated += s.generated;
+    result.statistics.duplicates += s.duplicates;
+    result.statistics.unschedulable += s.unschedulable;
+    result.statistics.dead_ends += s.dead_ends;
+    if (status == SearchStatus::InProgress) {
+      exhausted_all = false;
+      break;  // a limit was reached
+    }
+    if (status == SearchStatus::Exhausted) {
+      const SearchNode& root = space.node(space.root());
+      if (root.h == std::numeric_limits<double>::infinity()) {
+        proof = "the goal is unreachable even in the relaxation (temporal relaxed planning graph)";
+        break;
+      }
+      // EHC is incomplete. A best-first search without a bound is complete
+      // only where schedules cannot close doors: no deadlines (timed
+      // literals) and no upper bounds on durations.
+      if (pipeline[phase].first != "ehc" && result.plans.empty() && !deadlines_possible(*task_)) {
+        proof = "the search space is exhausted";
+      }
+      continue;
+    }
+    const Clock::time_point validation_began = Clock::now();
+    FoundPlan found;
+    found.plan = to_plan(*task_, *engine->solution());
+    found.text = plan_text(found.plan);
+    found.engine = engine->name();
+    found.seconds = since(search_began);
+    found.validation = validator.validate(read_plan(found.text, "planner output").plan);
+    result.times.validation += since(validation_began);
+    if (!found.validation.valid) {
+      result.status = PlannerResult::Status::InternalError;
+      result.message = "the planner produced a plan the validator rejects: " + found.validation.violation->message() +
+                       "\n" + found.text;
+      return result;
+    }
+    if (found.validation.value < best_value - 1e-9 || result.plans.empty()) {
+      best_value = found.validation.value;
+      if (on_plan) on_plan(found);
+      result.plans.push_back(std::move(found));
+    }
+  }
+  result.times.search = since(search_began) - result.times.validation;
+  if (!result.plans.empty()) {
+    result.status = PlannerResult::Status::Solved;
+  } else if (!proof.empty()) {
+    result.status = PlannerResult::Status::Unsolvable;
+    result.message = "no plan exists: " + proof;
+  } else if (exhausted_all) {
+    result.status = PlannerResult::Status::Exhausted;
+    result.message = "the search space is exhausted without a plan; with deadlines this is not a proof";
+  } else {
+    result.status = PlannerResult::Status::LimitReached;
+    result.message = "the time or node limit was reached before a plan was found";
+  }
+  return result;
+}
+
+}  // namespace alplan

@@ -1,0 +1,92 @@
+// The in-process temporal planner: a POPF/OPTIC-style forward-chaining
+// partial-order planner (Coles, Coles, Fox & Long, "Forward-Chaining
+// Partial-Order Planning", ICAPS 2010; OPTIC, ICAPS 2012) with a temporal
+// relaxed planning graph heuristic, enforced hill-climbing falling back to
+// best-first search, and an anytime mode.
+//
+// Contract: plan() returns only plans our validator (VAL's semantics)
+// accepts as printed; an invalid plan is a bug and is reported as
+// Status::InternalError, never returned as a plan. No mutable global state:
+// planners may run in several threads at once.
+#pragma once
+
+#include <functional>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "planner/ground_task.h"
+#include "planner/plan.h"
+#include "planner/search_space.h"
+#include "planner/validator.h"
+
+namespace alplan {
+
+struct PlannerOptions {
+  std::string search = "ehc";      // ehc (falls back to gbfs), gbfs, wastar
+  std::string heuristic = "trpg";  // trpg, or trpg-nohelpful
+  double weight = 3.0;             // for wastar
+  double time_limit = std::numeric_limits<double>::infinity();  // seconds, search only
+  std::size_t node_limit = std::numeric_limits<std::size_t>::max();
+  bool anytime = false;            // keep improving after the first plan
+  double epsilon = 0.001;          // separation of dependent happenings
+};
+
+struct FoundPlan {
+  Plan plan;
+  std::string text;              // IPC format, exactly as validated
+  ValidationResult validation;
+  double seconds = 0.0;          // since the search began
+  std::string engine;
+};
+
+struct SearchPhaseTimes {
+  double setup = 0.0, search = 0.0, validation = 0.0;
+};
+
+struct PlannerResult {
+  // Unsolvable is claimed only with a proof: the relaxation fails from the
+  // start, or a complete search is exhausted on a task without deadlines
+  // (timed initial literals), where ignoring schedules in duplicate
+  // detection loses nothing. Otherwise an exhausted search is Exhausted.
+  enum class Status { Solved, Unsolvable, Exhausted, LimitReached, Unsupported, InternalError };
+  Status status = Status::LimitReached;
+  std::vector<FoundPlan> plans;  // each better than the one before; the last is the best
+  SearchStatistics statistics;
+  SearchPhaseTimes times;
+  std::string message;
+
+  const FoundPlan* best() const { return plans.empty() ? nullptr : &plans.back(); }
+};
+
+// Where to plan from: the task's initial state, or an observed state with
+// actions still running (issue 5's monitor passes these).
+struct PlanningStart {
+  std::vector<FactId> facts;
+  std::vector<double> values;
+  std::uint32_t next_timed_literal = 0;
+  std::vector<RunningAction> running;  // start_step kNoId, durations counted from now
+};
+
+PlanningStart initial_start(const GroundTask& task);
+
+class Planner {
+ public:
+  Planner(std::shared_ptr<const GroundTask> task, PlannerOptions options);
+
+  // Calls `on_plan` for every improving plan, as soon as it is found.
+  PlannerResult plan(const std::function<void(const FoundPlan&)>& on_plan = {});
+  PlannerResult plan_from(const PlanningStart& start, const std::function<void(const FoundPlan&)>& on_plan = {});
+
+ private:
+  std::shared_ptr<const GroundTask> task_;
+  PlannerOptions options_;
+};
+
+// The plan of a solution: one step per instantaneous action and per
+// durative action (at its start, with the duration its end gives).
+Plan to_plan(const GroundTask& task, const Solution& solution);
+
+}  // namespace alplan

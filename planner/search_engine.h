@@ -1,0 +1,53 @@
+// Search engines are components chosen by name (Fast Downward's habit): each
+// advances by step() — one expansion — so the caller can stop it at a time
+// limit, and reports the first solution it finds.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "planner/search_space.h"
+#include "planner/temporal_rpg.h"
+
+namespace alplan {
+
+enum class SearchStatus { InProgress, Solved, Exhausted };
+
+// Prunes nodes that cannot beat the best plan so far (anytime search).
+using NodeBound = std::function<bool(const SearchNode&)>;
+
+class SearchEngine {
+ public:
+  virtual ~SearchEngine() = default;
+  virtual SearchStatus step() = 0;
+  virtual std::string name() const = 0;
+  const std::optional<Solution>& solution() const { return solution_; }
+  const SearchStatistics& statistics() const { return stats_; }
+
+ protected:
+  std::optional<Solution> solution_;
+  SearchStatistics stats_;
+};
+
+struct BestFirstOptions {
+  // f = g + weight * h with g the number of snaps; weight 0 means greedy
+  // (f = h, ties broken by g).
+  double weight = 0.0;
+  // Expand helpful children from their own queue, alternating with the
+  // main one (Richter & Helmert's preferred operators).
+  bool preferred_queue = true;
+  NodeBound prune;
+};
+
+// Enforced hill-climbing (Hoffmann & Nebel 2001) over helpful snaps, as
+// POPF's first search: breadth-first from the best node until a child has a
+// strictly smaller h. Exhausted when a plateau has no exit.
+std::unique_ptr<SearchEngine> make_enforced_hill_climbing(SearchSpace& space, TemporalRpg& heuristic,
+                                                          bool helpful_only = true);
+// Greedy best-first search or weighted A*.
+std::unique_ptr<SearchEngine> make_best_first_search(SearchSpace& space, TemporalRpg& heuristic,
+                                                     BestFirstOptions options);
+
+}  // namespace alplan

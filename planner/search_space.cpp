@@ -1,0 +1,142 @@
+#include "planner/search_space.h"
+
+#include "planner/evaluation.h"
+
+namespace alplan {
+
+SearchSpace::SearchSpace(const TaskIndex& index, const SearchStart& start, double epsilon)
+    : index_(index),
+      successors_(index),
+      epsilon_(epsilon),
+      release_(start.release),
+      deadlines_(!index.task().timed_literals.empty()) {
+  SearchNode root;
+  root.state = start.state;
+  nodes_.push_back(std::move(root));
+  nodes_.back().signature = signature_of(nodes_.back().state, partial_plan(0));
+  seen_[&nodes_.back().state].push_back(0);
+}
+
+TemporalSignature SearchSpace::signature_of(const SearchState& state, const PartialPlan& plan) {
+  TemporalSignature signature;
+  signature.frontier = plan.frontier();
+  for (const RunningAction& r : state.running()) signature.latest_ends.push_back(plan.latest_end_time(r.action));
+  return signature;
+}
+
+bool SearchSpace::dominated(const SearchNode& candidate, NodeId stored) const {
+  constexpr double kTolerance = 1e-9;
+  const TemporalSignature& a = nodes_[stored].signature;
+  const TemporalSignature& b = candidate.signature;
+  if (deadlines_ && a.frontier > b.frontier + kTolerance) return false;
+  for (std::size_t i = 0; i < a.latest_ends.size() && i < b.latest_ends.size(); ++i) {
+    if (a.latest_ends[i] < b.latest_ends[i] - kTolerance) return false;
+  }
+  return true;
+}
+
+PartialPlan SearchSpace::partial_plan(NodeId id) const {
+  std::vector<const StepRecord*> chain;
+  for (NodeId n = id; n != 0; n = nodes_[n].parent) chain.push_back(&nodes_[n].step);
+  PartialPlan plan(index_, epsilon_, release_, nodes_[0].state.running());
+  for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+    // Every stored step was consistent when it was added; appending the same
+    // steps in the same order reproduces the same network.
+    plan.append(**it);
+  }
+  return plan;
+}
+
+std::vector<Child> SearchSpace::children(NodeId id, const PartialPlan& plan, SearchStatistics& stats) const {
+  std::vector<Successor> successors;
+  successors_.generate(nodes_[id].state, successors);
+  std::vector<Child> result;
+  result.reserve(successors.size());
+  for (Successor& s : successors) {
+    ++stats.generated;
+    PartialPlan extended = plan;
+    if (!extended.append(s.step)) {
+      ++stats.unschedulable;
+      continue;
+    }
+    if (s.step.snap.kind == SnapKind::Start) {
+      s.state.set_start_step(s.step.snap.index, static_cast<std::uint32_t>(extended.size() - 1));
+    }
+    Child child{SearchNode{}, std::move(extended)};
+    child.node.parent = id;
+    child.node.step = s.step;
+    child.node.state = std::move(s.state);
+    child.node.depth = nodes_[id].depth + 1;
+    child.node.makespan = child.plan.makespan();
+    child.node.signature = signature_of(child.node.state, child.plan);
+    result.push_back(std::move(child));
+  }
+  return result;
+}
+
+bool SearchSpace::evaluate(Child& child, TemporalRpg& heuristic, SearchStatistics& stats) const {
+  ++stats.evaluated;
+  HeuristicValue value = heuristic.evaluate(child.node.state, child.plan);
+  child.node.h = value.h;
+  child.node.helpful = std::move(value.helpful);
+  if (value.dead_end()) ++stats.dead_ends;
+  return !value.dead_end();
+}
+
+void SearchSpace::set_root_heuristic(TemporalRpg& heuristic, SearchStatistics& stats) {
+  ++stats.evaluated;
+  HeuristicValue value = heuristic.evaluate(nodes_[0].state, partial_plan(0));
+  nodes_[0].h = value.h;
+  nodes_[0].helpful = std::move(value.helpful);
+}
+
+std::optional<NodeId> SearchSpace::insert(Child child, SearchStatistics& stats) {
+  auto it = seen_.find(&child.node.state);
+  if (it != seen_.end()) {
+    for (NodeId stored : it->second) {
+      if (dominated(child.node, stored)) {
+        ++stats.duplicates;
+        return std::nullopt;
+      }
+    }
+  }
+  nodes_.push_back(std::move(child.node));
+  const auto id = static_cast<NodeId>(nodes_.size() - 1);
+  if (it != seen_.end()) {
+    it->second.push_back(id);
+  } else {
+    seen_[&nodes_.back().state].push_back(id);
+  }
+  return id;
+}
+
+std::optional<NodeId> SearchSpace::find(const SearchState& state) const {
+  auto it = seen_.find(&state);
+  if (it == seen_.end()) return std::nullopt;
+  return it->second.front();
+}
+
+std::optional<Solution> SearchSpace::goal_reached(NodeId id, const PartialPlan& plan) const {
+  const SearchNode& n = nodes_[id];
+  if (!n.state.running().empty()) return std::nullopt;
+  SearchState state = n.state;
+  PartialPlan complete = plan;
+  while (state.next_timed_literal() < index_.task().timed_literals.size()) {
+    const StepRecord step{{SnapKind::TimedLiteral, state.next_timed_literal()}};
+    std::optional<SearchState> next = successors_.apply(state, step);
+    if (!next || !complete.append(step)) return std::nullopt;
+    state = std::move(*next);
+  }
+  try {
+    if (!holds(index_.task().goal, state, EvaluationContext{}, 0.0)) return std::nullopt;
+  } catch (const EvaluationError&) {
+    return std::nullopt;
+  }
+  Solution solution;
+  solution.steps = complete.steps();
+  for (std::uint32_t s = 0; s < complete.size(); ++s) solution.times.push_back(complete.time_of(s));
+  solution.makespan = complete.makespan();
+  return solution;
+}
+
+}  // namespace alplan

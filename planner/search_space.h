@@ -1,0 +1,109 @@
+// The nodes of a temporal search and what engines share: expanding a node
+// into scheduled children, evaluating them, recognising goals. A node keeps
+// only the step that led to it; its partial plan is rebuilt from the chain
+// of parents when needed (POPF keeps states similarly lean).
+#pragma once
+
+#include <deque>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <unordered_map>
+#include <vector>
+
+#include "planner/partial_plan.h"
+#include "planner/search_state.h"
+#include "planner/successor_generator.h"
+#include "planner/task_index.h"
+#include "planner/temporal_rpg.h"
+
+namespace alplan {
+
+using NodeId = std::uint32_t;
+
+// What of a node's schedule decides which futures remain feasible: how late
+// each running action may still end, and (with deadlines) how late the plan
+// has already got. POPF compares states without it and can lose plans; we
+// prune a node only when a stored node with the same state is at least as
+// good here (dominance).
+struct TemporalSignature {
+  double frontier = 0.0;
+  std::vector<double> latest_ends;  // in the order of state.running()
+};
+
+struct SearchNode {
+  NodeId parent = kNoId;
+  StepRecord step;  // the step from the parent; meaningless at the root
+  SearchState state;
+  double h = std::numeric_limits<double>::infinity();
+  std::uint32_t depth = 0;
+  double makespan = 0.0;
+  TemporalSignature signature;
+  std::vector<Snap> helpful;
+};
+
+struct SearchStatistics {
+  std::uint64_t expanded = 0, evaluated = 0, generated = 0, duplicates = 0, unschedulable = 0, dead_ends = 0;
+};
+
+// The start of a search: the initial state of the task, or an observed state
+// with actions still running (replanning, issue 5).
+struct SearchStart {
+  SearchState state;
+  double release = 0.0;  // no new step before this time
+};
+
+struct Solution {
+  std::vector<StepRecord> steps;
+  std::vector<double> times;  // earliest time of each step
+  double makespan = 0.0;
+};
+
+// A child of an expanded node, scheduled but not yet stored.
+struct Child {
+  SearchNode node;
+  PartialPlan plan;
+};
+
+class SearchSpace {
+ public:
+  SearchSpace(const TaskIndex& index, const SearchStart& start, double epsilon);
+
+  NodeId root() const { return 0; }
+  const SearchNode& node(NodeId id) const { return nodes_[id]; }
+  SearchNode& node(NodeId id) { return nodes_[id]; }
+  std::size_t size() const { return nodes_.size(); }
+
+  PartialPlan partial_plan(NodeId id) const;
+  // Every applicable snap of a node that can be scheduled, as children.
+  std::vector<Child> children(NodeId id, const PartialPlan& plan, SearchStatistics& stats) const;
+  // Evaluates a child; false for a dead end.
+  bool evaluate(Child& child, TemporalRpg& heuristic, SearchStatistics& stats) const;
+  // Stores a child unless a stored node with its state dominates it.
+  std::optional<NodeId> insert(Child child, SearchStatistics& stats);
+  void set_root_heuristic(TemporalRpg& heuristic, SearchStatistics& stats);
+  // The stored node with this state, if any.
+  std::optional<NodeId> find(const SearchState& state) const;
+
+  // A node is a goal when nothing runs and, once the remaining timed literals
+  // are applied (PDDL 2.2 checks the goal after them), the goal holds and
+  // the schedule is still consistent.
+  std::optional<Solution> goal_reached(NodeId id, const PartialPlan& plan) const;
+
+  const TaskIndex& index() const { return index_; }
+  double epsilon() const { return epsilon_; }
+
+ private:
+  const TaskIndex& index_;
+  SuccessorGenerator successors_;
+  double epsilon_;
+  double release_;
+  bool dominated(const SearchNode& candidate, NodeId stored) const;
+  static TemporalSignature signature_of(const SearchState& state, const PartialPlan& plan);
+
+  bool deadlines_;  // the task has timed initial literals
+  std::deque<SearchNode> nodes_;
+  std::unordered_map<const SearchState*, std::vector<NodeId>, SearchStateHash, SearchStateEqual> seen_;
+};
+
+}  // namespace alplan

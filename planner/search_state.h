@@ -1,0 +1,67 @@
+// A state of the temporal search: facts, numeric values, the actions that
+// have started and not ended, and the next timed initial literal. Two states
+// are the same (for duplicate detection) when all of these agree, whatever
+// the schedules behind them.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "planner/ids.h"
+
+namespace alplan {
+
+struct RunningAction {
+  ActionId action = 0;
+  std::uint32_t start_step = kNoId;  // kNoId: running since before the plan began
+  // Bounds on the end's time after the start (after the origin when the
+  // action was running before the plan began).
+  double min_duration = 0.0;
+  double max_duration = 0.0;
+};
+
+class SearchState {
+ public:
+  SearchState() = default;
+  SearchState(std::uint32_t facts, std::vector<double> values)
+      : bits_((facts + 63) / 64, 0), values_(std::move(values)) {}
+
+  bool fact(FactId f) const { return (bits_[f >> 6] >> (f & 63)) & 1u; }
+  void set_fact(FactId f, bool on) {
+    const std::uint64_t mask = std::uint64_t{1} << (f & 63);
+    bits_[f >> 6] = on ? bits_[f >> 6] | mask : bits_[f >> 6] & ~mask;
+  }
+  double value(NumericVarId v) const { return values_[v]; }
+  void set_value(NumericVarId v, double x) { values_[v] = x; }
+  const std::vector<double>& values() const { return values_; }
+  const std::vector<std::uint64_t>& bits() const { return bits_; }
+
+  const std::vector<RunningAction>& running() const { return running_; }
+  void start(const RunningAction& action);
+  void finish(std::size_t index) { running_.erase(running_.begin() + static_cast<std::ptrdiff_t>(index)); }
+  // Records which plan step started a running action (known once appended).
+  void set_start_step(ActionId action, std::uint32_t step);
+  bool is_running(ActionId action) const;
+
+  std::uint32_t next_timed_literal() const { return next_til_; }
+  void set_next_timed_literal(std::uint32_t next) { next_til_ = next; }
+
+  std::size_t hash() const;
+  bool same_as(const SearchState& other) const;
+
+ private:
+  std::vector<std::uint64_t> bits_;
+  std::vector<double> values_;
+  std::vector<RunningAction> running_;  // in order of action id
+  std::uint32_t next_til_ = 0;
+};
+
+struct SearchStateHash {
+  std::size_t operator()(const SearchState* s) const { return s->hash(); }
+};
+struct SearchStateEqual {
+  bool operator()(const SearchState* a, const SearchState* b) const { return a->same_as(*b); }
+};
+
+}  // namespace alplan

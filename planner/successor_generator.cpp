@@ -1,0 +1,202 @@
+#include "planner/successor_generator.h"
+
+#include <cmath>
+
+#include "planner/evaluation.h"
+
+namespace alplan {
+namespace {
+
+double updated(double current, pddl::AssignOperator op, double value) {
+  switch (op) {
+    case pddl::AssignOperator::Assign: return value;
+    case pddl::AssignOperator::Increase: return current + value;
+    case pddl::AssignOperator::Decrease: return current - value;
+    case pddl::AssignOperator::ScaleUp: return current * value;
+    case pddl::AssignOperator::ScaleDown: return current / value;
+  }
+  return value;
+}
+
+}  // namespace
+
+DurationWindow duration_window(const GroundAction& action, Moment moment, const SearchState& state) {
+  DurationWindow window;
+  try {
+    for (const GroundDurationConstraint& d : action.duration) {
+      if (d.moment != moment) continue;
+      const double v = evaluate(d.value, state, EvaluationContext{});
+      if (d.comparison != pddl::Comparison::LessEqual) window.min = std::max(window.min, v);
+      if (d.comparison != pddl::Comparison::GreaterEqual) window.max = std::min(window.max, v);
+    }
+  } catch (const EvaluationError&) {
+    window.valid = false;
+  }
+  window.valid = window.valid && window.min <= window.max + 1e-9 && window.min >= 0.0;
+  return window;
+}
+
+bool SuccessorGenerator::apply_effects(const HappeningEffects& effects, const SearchState& before, double duration,
+                                       SearchState& after) const {
+  // VAL's order within a happening: conditions and right-hand sides read the
+  // state before; deletes, then adds, then numeric updates.
+  EvaluationContext context;
+  context.duration = duration;
+  std::vector<const std::vector<FactId>*> adds{&effects.add}, dels{&effects.del};
+  std::vector<const std::vector<NumericAssignment>*> numeric{&effects.numeric};
+  try {
+    for (const ConditionalEffect& c : effects.conditional) {
+      if (!holds(c.condition, before, context, 0.0)) continue;
+      adds.push_back(&c.add);
+      dels.push_back(&c.del);
+      numeric.push_back(&c.numeric);
+    }
+    std::vector<std::pair<const NumericAssignment*, double>> updates;
+    for (const auto* list : numeric) {
+      for (const NumericAssignment& a : *list) updates.emplace_back(&a, evaluate(a.value, before, context));
+    }
+    for (const auto* list : dels) {
+      for (FactId f : *list) after.set_fact(f, false);
+    }
+    for (const auto* list : adds) {
+      for (FactId f : *list) after.set_fact(f, true);
+    }
+    for (const auto& [a, v] : updates) {
+      const double current = after.value(a->variable);
+      // Increasing an undefined value is as VAL does: from 0.
+      after.set_value(a->variable, updated(std::isnan(current) ? 0.0 : current, a->assign, v));
+    }
+  } catch (const EvaluationError&) {
+    return false;
+  }
+  derive(index_.task(), after);
+  return true;
+}
+
+bool SuccessorGenerator::invariants_hold(const SearchState& state) const {
+  for (const RunningAction& r : state.running()) {
+    EvaluationContext context;
+    context.duration = r.min_duration;
+    try {
+      if (!holds(index_.task().actions[r.action].over_all, state, context, 0.0)) return false;
+    } catch (const EvaluationError&) {
+      return false;
+    }
+  }
+  return true;
+}
+
+void SuccessorGenerator::add_end(const SearchState& state, std::size_t running_index,
+                                 std::vector<Successor>& out) const {
+  const RunningAction running = state.running()[running_index];
+  const GroundAction& action = index_.task().actions[running.action];
+  EvaluationContext context;
+  const bool fixed = running.min_duration == running.max_duration;
+  context.duration = fixed ? running.min_duration : std::nan("");
+  try {
+    if (!holds(action.at_end, state, context, 0.0)) return;
+  } catch (const EvaluationError&) {
+    return;
+  }
+  double min = running.min_duration, max = running.max_duration;
+  if (!action.duration.empty() && running.start_step != kNoId) {
+    const DurationWindow at_end = duration_window(action, Moment::End, state);
+    if (!at_end.valid) return;
+    min = std::max(min, at_end.min);
+    max = std::min(max, at_end.max);
+    if (min > max + 1e-9) return;
+  }
+  Successor s{{{SnapKind::End, running.action}, running.start_step, min, max}, state};
+  s.state.finish(running_index);
+  if (!apply_effects(action.end, state, context.duration, s.state)) return;
+  if (!invariants_hold(s.state)) return;
+  out.push_back(std::move(s));
+}
+
+void SuccessorGenerator::add_timed_literal(const SearchState& state, std::vector<Successor>& out) const {
+  const std::uint32_t next = state.next_timed_literal();
+  if (next >= index_.task().timed_literals.size()) return;
+  const GroundTimedLiteral& til = index_.task().timed_literals[next];
+  Successor s{{{SnapKind::TimedLiteral, next}}, state};
+  s.state.set_fact(til.fact, til.positive);
+  s.state.set_next_timed_literal(next + 1);
+  derive(index_.task(), s.state);
+  if (invariants_hold(s.state)) out.push_back(std::move(s));
+}
+
+void SuccessorGenerator::add_action(const SearchState& state, ActionId id, std::vector<Successor>& out) const {
+  const GroundAction& action = index_.task().actions[id];
+  // Conditions on ?duration are checked per duration choice below.
+  auto condition_holds = [&](double duration) {
+    EvaluationContext context;
+    context.duration = duration;
+    try {
+      return holds(action.at_start, state, context, 0.0);
+    } catch (const EvaluationError&) {
+      return false;
+    }
+  };
+  if (!action.durative) {
+    if (!condition_holds(std::nan(""))) return;
+    Successor s{{{SnapKind::Instant, id}}, state};
+    if (apply_effects(action.start, state, std::nan(""), s.state) && invariants_hold(s.state)) {
+      out.push_back(std::move(s));
+    }
+    return;
+  }
+  if (state.is_running(id)) return;
+  const DurationWindow window = duration_window(action, Moment::Start, state);
+  if (!window.valid) return;
+  // With effects or conditions on ?duration the duration is fixed at start:
+  // the shortest and, when bounded and different, the longest are tried.
+  std::vector<std::pair<double, double>> choices;
+  if (index_.duration_dependent(id)) {
+    choices.emplace_back(window.min, window.min);
+    if (window.max < kInfiniteDuration && window.max > window.min + 1e-9) choices.emplace_back(window.max, window.max);
+  } else {
+    choices.emplace_back(window.min, window.max);
+  }
+  for (const auto& [min, max] : choices) {
+    Successor s{{{SnapKind::Start, id}, kNoId, min, max}, state};
+    const double duration = min == max ? min : std::nan("");
+    if (!condition_holds(duration)) continue;
+    if (!apply_effects(action.start, state, duration, s.state)) continue;
+    // The new action's invariant must hold right after its start, and so
+    // must everyone else's.
+    s.state.start({id, kNoId, min, max});
+    if (!invariants_hold(s.state)) continue;
+    out.push_back(std::move(s));
+  }
+}
+
+void SuccessorGenerator::generate(const SearchState& state, std::vector<Successor>& out) const {
+  for (std::size_t r = 0; r < state.running().size(); ++r) add_end(state, r, out);
+  add_timed_literal(state, out);
+  const std::vector<std::uint64_t>& bits = state.bits();
+  for (std::size_t word = 0; word < bits.size(); ++word) {
+    for (std::uint64_t w = bits[word]; w != 0; w &= w - 1) {
+      const FactId f = static_cast<FactId>(word * 64 + static_cast<std::size_t>(__builtin_ctzll(w)));
+      for (ActionId a : index_.indexed_by(f)) add_action(state, a, out);
+    }
+  }
+  for (ActionId a : index_.unindexed()) add_action(state, a, out);
+}
+
+std::optional<SearchState> SuccessorGenerator::apply(const SearchState& state, const StepRecord& step) const {
+  std::vector<Successor> candidates;
+  switch (step.snap.kind) {
+    case SnapKind::TimedLiteral: add_timed_literal(state, candidates); break;
+    case SnapKind::End:
+      for (std::size_t r = 0; r < state.running().size(); ++r) {
+        if (state.running()[r].action == step.snap.index) add_end(state, r, candidates);
+      }
+      break;
+    default: add_action(state, step.snap.index, candidates); break;
+  }
+  for (Successor& s : candidates) {
+    if (s.step.snap == step.snap && s.step.min_duration == step.min_duration) return std::move(s.state);
+  }
+  return std::nullopt;
+}
+
+}  // namespace alplan

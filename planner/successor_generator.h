@@ -1,0 +1,60 @@
+// Which snaps a search state allows, and the state each one leads to. The
+// temporal side (can the snap be scheduled?) is the partial plan's job; here
+// only the logic of PDDL 2.1 snap actions (Long & Fox 2003; POPF):
+// - a start needs its at-start condition now and its over-all condition
+//   right after its own effects; its end then becomes available;
+// - an end needs its at-end condition;
+// - no snap may break the over-all condition of an action still running;
+// - timed initial literals are applied in time order;
+// - an action does not run twice at once (POPF's rule; it keeps symmetric
+//   branches out of the search).
+// Conditions are evaluated exactly (no slack), so plans hold under VAL's
+// slightly more lenient comparisons too.
+#pragma once
+
+#include <vector>
+
+#include "planner/partial_plan.h"
+#include "planner/search_state.h"
+#include "planner/task_index.h"
+
+namespace alplan {
+
+struct Successor {
+  StepRecord step;
+  SearchState state;
+};
+
+class SuccessorGenerator {
+ public:
+  explicit SuccessorGenerator(const TaskIndex& index) : index_(index) {}
+
+  // Every applicable snap: ends of running actions first, then the next
+  // timed literal, then starts and instantaneous actions.
+  void generate(const SearchState& state, std::vector<Successor>& out) const;
+
+  // The state after a given step, if it is applicable (used for replay).
+  std::optional<SearchState> apply(const SearchState& state, const StepRecord& step) const;
+
+  // Whether every running action's over-all condition holds.
+  bool invariants_hold(const SearchState& state) const;
+
+ private:
+  void add_end(const SearchState& state, std::size_t running_index, std::vector<Successor>& out) const;
+  void add_timed_literal(const SearchState& state, std::vector<Successor>& out) const;
+  void add_action(const SearchState& state, ActionId action, std::vector<Successor>& out) const;
+  bool apply_effects(const HappeningEffects& effects, const SearchState& before, double duration,
+                     SearchState& after) const;
+
+  const TaskIndex& index_;
+};
+
+// Duration bounds of an action in a state, from its constraints at `moment`.
+struct DurationWindow {
+  double min = 0.0;
+  double max = kInfiniteDuration;
+  bool valid = true;  // false when a bound is undefined or min > max
+};
+DurationWindow duration_window(const GroundAction& action, Moment moment, const SearchState& state);
+
+}  // namespace alplan

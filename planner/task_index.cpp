@@ -1,0 +1,150 @@
+#include "planner/task_index.h"
+
+#include <algorithm>
+
+namespace alplan {
+namespace {
+
+void variables(const GroundExpression& e, std::vector<NumericVarId>& out) {
+  if (e.kind == GroundExpression::Kind::Variable) out.push_back(e.variable);
+  for (const GroundExpression& o : e.operands) variables(o, out);
+}
+
+bool mentions_duration(const GroundExpression& e) {
+  if (e.kind == GroundExpression::Kind::Duration) return true;
+  return std::any_of(e.operands.begin(), e.operands.end(), mentions_duration);
+}
+
+void formula_reads(const GroundFormula& f, Footprint& fp) {
+  if (f.kind == GroundFormula::Kind::Literal) fp.reads.push_back(f.fact);
+  if (f.kind == GroundFormula::Kind::Comparison) {
+    variables(f.comparison.left, fp.reads_values);
+    variables(f.comparison.right, fp.reads_values);
+  }
+  for (const GroundFormula& c : f.children) formula_reads(c, fp);
+}
+
+void condition_reads(const ConditionSet& c, Footprint& fp) {
+  fp.reads.insert(fp.reads.end(), c.positive.begin(), c.positive.end());
+  fp.reads.insert(fp.reads.end(), c.negative.begin(), c.negative.end());
+  for (const GroundComparison& cmp : c.numeric) {
+    variables(cmp.left, fp.reads_values);
+    variables(cmp.right, fp.reads_values);
+  }
+  for (const GroundFormula& f : c.complex) formula_reads(f, fp);
+}
+
+void effect_footprint(const HappeningEffects& e, Footprint& fp) {
+  auto numeric = [&](const std::vector<NumericAssignment>& assignments) {
+    for (const NumericAssignment& a : assignments) {
+      fp.writes_values.push_back(a.variable);
+      variables(a.value, fp.reads_values);
+    }
+  };
+  fp.writes.insert(fp.writes.end(), e.add.begin(), e.add.end());
+  fp.writes.insert(fp.writes.end(), e.del.begin(), e.del.end());
+  numeric(e.numeric);
+  for (const ConditionalEffect& c : e.conditional) {
+    condition_reads(c.condition, fp);
+    fp.writes.insert(fp.writes.end(), c.add.begin(), c.add.end());
+    fp.writes.insert(fp.writes.end(), c.del.begin(), c.del.end());
+    numeric(c.numeric);
+  }
+}
+
+template <typename T>
+void unique(std::vector<T>& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+void finish(Footprint& fp) {
+  unique(fp.reads);
+  unique(fp.writes);
+  unique(fp.reads_values);
+  unique(fp.writes_values);
+}
+
+bool effects_mention_duration(const HappeningEffects& e) {
+  auto any = [](const std::vector<NumericAssignment>& v) {
+    return std::any_of(v.begin(), v.end(), [](const NumericAssignment& a) { return mentions_duration(a.value); });
+  };
+  if (any(e.numeric)) return true;
+  return std::any_of(e.conditional.begin(), e.conditional.end(),
+                     [&](const ConditionalEffect& c) { return any(c.numeric); });
+}
+
+bool conditions_mention_duration(const ConditionSet& c) {
+  return std::any_of(c.numeric.begin(), c.numeric.end(), [](const GroundComparison& cmp) {
+    return mentions_duration(cmp.left) || mentions_duration(cmp.right);
+  });
+}
+
+}  // namespace
+
+TaskIndex::TaskIndex(std::shared_ptr<const GroundTask> task) : task_(std::move(task)) {
+  const GroundTask& t = *task_;
+  by_fact_.resize(t.facts.size());
+  duration_dependent_.assign(t.actions.size(), false);
+  instant_.resize(t.actions.size());
+  start_.resize(t.actions.size());
+  end_.resize(t.actions.size());
+  std::vector<std::size_t> load(t.facts.size(), 0);
+  for (ActionId a = 0; a < t.actions.size(); ++a) {
+    const GroundAction& action = t.actions[a];
+    if (action.durative) {
+      condition_reads(action.at_start, start_[a]);
+      condition_reads(action.over_all, start_[a]);
+      for (const GroundDurationConstraint& d : action.duration) variables(d.value, start_[a].reads_values);
+      effect_footprint(action.start, start_[a]);
+      condition_reads(action.at_end, end_[a]);
+      condition_reads(action.over_all, end_[a]);
+      effect_footprint(action.end, end_[a]);
+      finish(start_[a]);
+      finish(end_[a]);
+      duration_dependent_[a] = effects_mention_duration(action.start) || effects_mention_duration(action.end) ||
+                               conditions_mention_duration(action.at_start) ||
+                               conditions_mention_duration(action.over_all) ||
+                               conditions_mention_duration(action.at_end);
+      for (const ConditionalEffect& c : action.end.conditional) {
+        if (c.condition_moment == Moment::Start && !unsupported_) {
+          unsupported_ = "the action " + t.action_name(action) +
+                         " has an at-end conditional effect whose condition is evaluated at start";
+        }
+      }
+    } else {
+      condition_reads(action.at_start, instant_[a]);
+      effect_footprint(action.start, instant_[a]);
+      finish(instant_[a]);
+    }
+    // Index under the least-loaded positive precondition, to spread the lists.
+    const std::vector<FactId>& pre = action.at_start.positive;
+    if (pre.empty()) {
+      unindexed_.push_back(a);
+    } else {
+      const FactId f = *std::min_element(pre.begin(), pre.end(),
+                                         [&](FactId x, FactId y) { return load[x] < load[y]; });
+      ++load[f];
+      by_fact_[f].push_back(a);
+    }
+  }
+  til_.resize(t.timed_literals.size());
+  for (std::size_t i = 0; i < t.timed_literals.size(); ++i) til_[i].writes.push_back(t.timed_literals[i].fact);
+  if (!t.lifted->unsupported.empty()) unsupported_ = t.lifted->unsupported.front();
+  for (const ActionSchema& schema : t.lifted->actions) {
+    if (!schema.unsupported.empty() && !unsupported_) unsupported_ = schema.unsupported;
+  }
+}
+
+const Footprint& TaskIndex::footprint(Snap snap) const {
+  switch (snap.kind) {
+    case SnapKind::Instant: return instant_[snap.index];
+    case SnapKind::Start: return start_[snap.index];
+    case SnapKind::End: return end_[snap.index];
+    case SnapKind::TimedLiteral: return til_[snap.index];
+  }
+  return instant_[snap.index];
+}
+
+}  // namespace alplan
+

@@ -1,0 +1,580 @@
+#include "planner/temporal_rpg.h"
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+
+#include "planner/evaluation.h"
+#include "planner/successor_generator.h"
+
+namespace alplan {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+struct Interval {
+  double lo = -kInfinity;
+  double hi = kInfinity;
+};
+
+Interval operator+(Interval a, Interval b) { return {a.lo + b.lo, a.hi + b.hi}; }
+Interval operator-(Interval a, Interval b) { return {a.lo - b.hi, a.hi - b.lo}; }
+Interval operator*(Interval a, Interval b) {
+  const double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
+  Interval r{kInfinity, -kInfinity};
+  for (double x : p) {
+    if (std::isnan(x)) return {};  // 0 * inf: anything
+    r.lo = std::min(r.lo, x);
+    r.hi = std::max(r.hi, x);
+  }
+  return r;
+}
+Interval operator/(Interval a, Interval b) {
+  if (b.lo <= 0.0 && b.hi >= 0.0) return {};
+  return a * Interval{1.0 / b.hi, 1.0 / b.lo};
+}
+
+}  // namespace
+
+// The per-evaluation work of the heuristic: times, counters and bounds, all
+// stamped with the evaluation's generation so nothing is cleared between
+// evaluations (the arrays are as long as the task has actions and facts).
+class TemporalRpg::Exploration {
+ public:
+  explicit Exploration(TemporalRpg& rpg) : rpg_(rpg) {}
+  HeuristicValue run(const SearchState& state, const PartialPlan& plan);
+
+ private:
+  template <typename T>
+  struct Stamped {
+    std::vector<T> values;
+    std::vector<std::uint32_t> stamps;
+    T fallback{};
+    void resize(std::size_t n, T initial) {
+      values.assign(n, initial);
+      stamps.assign(n, 0);
+      fallback = initial;
+    }
+    T& at(std::size_t i, std::uint32_t generation) {
+      if (stamps[i] != generation) {
+        stamps[i] = generation;
+        values[i] = fallback;
+      }
+      return values[i];
+    }
+  };
+  friend class TemporalRpg;
+
+  void reach(FactId f, double time, Achiever achiever);
+  void process(FactId f, double time);
+  void try_start(ActionId a, double time);
+  void try_end(ActionId a);
+  void apply_numeric(const std::vector<const NumericAssignment*>& effects, ActionId source);
+  bool satisfiable(const std::vector<std::uint32_t>& comparisons) const;
+  Interval interval(const GroundExpression& e) const;
+  bool window_start(ActionId a, double& start, double duration);
+  bool in_window(FactId f, double from, double to) const;
+  double duration_of(ActionId a);
+  HeuristicValue extract(const SearchState& state, double goal_time);
+  bool goals_reached() const { return goals_left_ == 0 && satisfiable(rpg_.goal_numeric_); }
+
+  TemporalRpg& rpg_;
+  const SearchState* state_ = nullptr;
+  const PartialPlan* plan_ = nullptr;
+  std::uint32_t generation_ = 0;
+  Stamped<double> fact_time_, end_ready_, enabled_time_;
+  Stamped<Achiever> achiever_;
+  Stamped<std::uint32_t> start_count_, end_count_, axiom_count_;
+  Stamped<char> processed_, parked_start_, parked_end_, counted_start_, counted_end_;
+  std::vector<Interval> bounds_;
+  std::vector<ActionId> supporter_;  // first action that widened each variable
+  std::priority_queue<Event, std::vector<Event>, std::greater<Event>> queue_;
+  std::size_t goals_left_ = 0;
+  std::vector<std::vector<std::pair<double, double>>> windows_;  // per window fact, this evaluation
+};
+
+TemporalRpg::TemporalRpg(const TaskIndex& index, TemporalRpgOptions options) : index_(index), options_(options) {
+  build();
+  const GroundTask& task = index_.task();
+  const std::size_t facts = task.facts.size(), actions = task.actions.size();
+  exploration_ = std::make_unique<Exploration>(*this);
+  Exploration& x = *exploration_;
+  x.fact_time_.resize(facts, kInfinity);
+  x.achiever_.resize(facts, Achiever{});
+  x.processed_.resize(facts, 0);
+  x.end_ready_.resize(actions, 0.0);
+  x.enabled_time_.resize(actions, 0.0);
+  x.start_count_.resize(actions, 0);
+  x.end_count_.resize(actions, 0);
+  x.parked_start_.resize(actions, 0);
+  x.parked_end_.resize(actions, 0);
+  x.counted_start_.resize(actions, 0);
+  x.counted_end_.resize(actions, 0);
+  x.axiom_count_.resize(task.axioms.size(), 0);
+  x.bounds_.resize(task.numeric.size());
+  x.supporter_.resize(task.numeric.size(), kNoId);
+  x.windows_.resize(facts);
+}
+
+TemporalRpg::~TemporalRpg() = default;
+
+std::uint32_t TemporalRpg::add_comparisons(const std::vector<GroundComparison>& comparisons) {
+  const auto first = static_cast<std::uint32_t>(comparisons_.size());
+  for (const GroundComparison& c : comparisons) comparisons_.push_back(&c);
+  return first;
+}
+
+void TemporalRpg::build() {
+  const GroundTask& task = index_.task();
+  const std::size_t facts = task.facts.size();
+  start_watchers_.resize(facts);
+  end_watchers_.resize(facts);
+  axiom_watchers_.resize(facts);
+  numeric_watchers_.resize(task.numeric.size());
+  window_fact_.assign(facts, false);
+  std::vector<bool> added_by_action(facts, false);
+  actions_.resize(task.actions.size());
+  auto numeric_list = [&](const ConditionSet& c, std::vector<std::uint32_t>& out) {
+    const std::uint32_t first = add_comparisons(c.numeric);
+    for (std::uint32_t i = 0; i < c.numeric.size(); ++i) out.push_back(first + i);
+  };
+  auto adds = [&](const HappeningEffects& e, std::vector<FactId>& out, std::vector<const NumericAssignment*>& num) {
+    out = e.add;
+    for (const NumericAssignment& n : e.numeric) num.push_back(&n);
+    for (const ConditionalEffect& c : e.conditional) {
+      out.insert(out.end(), c.add.begin(), c.add.end());
+      for (const NumericAssignment& n : c.numeric) num.push_back(&n);
+    }
+    for (FactId f : out) added_by_action[f] = true;
+  };
+  for (ActionId a = 0; a < task.actions.size(); ++a) {
+    const GroundAction& g = task.actions[a];
+    RelaxedAction& r = actions_[a];
+    r.durative = g.durative;
+    adds(g.start, r.start_add, r.start_numeric_effects);
+    if (g.durative) adds(g.end, r.end_add, r.end_numeric_effects);
+    r.start_pre = g.at_start.positive;
+    numeric_list(g.at_start, r.start_numeric);
+    if (g.durative) {
+      // An invariant the start establishes itself is not needed before it.
+      for (FactId f : g.over_all.positive) {
+        if (std::find(r.start_add.begin(), r.start_add.end(), f) == r.start_add.end()) r.start_pre.push_back(f);
+      }
+      r.end_pre = g.at_end.positive;
+      r.end_pre.insert(r.end_pre.end(), g.over_all.positive.begin(), g.over_all.positive.end());
+      numeric_list(g.over_all, r.start_numeric);
+      numeric_list(g.at_end, r.end_numeric);
+    }
+    std::sort(r.start_pre.begin(), r.start_pre.end());
+    r.start_pre.erase(std::unique(r.start_pre.begin(), r.start_pre.end()), r.start_pre.end());
+    std::sort(r.end_pre.begin(), r.end_pre.end());
+    r.end_pre.erase(std::unique(r.end_pre.begin(), r.end_pre.end()), r.end_pre.end());
+    for (FactId f : r.start_pre) start_watchers_[f].push_back(a);
+    for (FactId f : r.end_pre) end_watchers_[f].push_back(a);
+  }
+  for (std::uint32_t x = 0; x < task.axioms.size(); ++x) {
+    for (FactId f : task.axioms[x].body.positive) axiom_watchers_[f].push_back(x);
+  }
+  goal_facts_ = task.goal.positive;  // sorted by flatten()
+  numeric_list(task.goal, goal_numeric_);
+  comparison_variables_.resize(comparisons_.size());
+  for (std::uint32_t c = 0; c < comparisons_.size(); ++c) {
+    std::vector<const GroundExpression*> stack{&comparisons_[c]->left, &comparisons_[c]->right};
+    while (!stack.empty()) {
+      const GroundExpression* e = stack.back();
+      stack.pop_back();
+      if (e->kind == GroundExpression::Kind::Variable) comparison_variables_[c].push_back(e->variable);
+      for (const GroundExpression& o : e->operands) stack.push_back(&o);
+    }
+  }
+  for (ActionId a = 0; a < actions_.size(); ++a) {
+    for (const auto* list : {&actions_[a].start_numeric, &actions_[a].end_numeric}) {
+      for (std::uint32_t c : *list) {
+        for (NumericVarId v : comparison_variables_[c]) numeric_watchers_[v].push_back(a);
+      }
+    }
+  }
+  for (const GroundTimedLiteral& til : task.timed_literals) {
+    if (!added_by_action[til.fact] && !til.positive) window_fact_[til.fact] = true;
+  }
+}
+
+void TemporalRpg::Exploration::reach(FactId f, double time, Achiever achiever) {
+  double& current = fact_time_.at(f, generation_);
+  if (time >= current) return;
+  current = time;
+  achiever_.at(f, generation_) = achiever;
+  queue_.push({time, f});
+}
+
+Interval TemporalRpg::Exploration::interval(const GroundExpression& e) const {
+  using K = GroundExpression::Kind;
+  switch (e.kind) {
+    case K::Constant: return {e.value, e.value};
+    case K::Variable: return bounds_[e.variable];
+    case K::Add: {
+      Interval r = interval(e.operands[0]);
+      for (std::size_t i = 1; i < e.operands.size(); ++i) r = r + interval(e.operands[i]);
+      return r;
+    }
+    case K::Multiply: {
+      Interval r = interval(e.operands[0]);
+      for (std::size_t i = 1; i < e.operands.size(); ++i) r = r * interval(e.operands[i]);
+      return r;
+    }
+    case K::Subtract: return interval(e.operands[0]) - interval(e.operands[1]);
+    case K::Divide: return interval(e.operands[0]) / interval(e.operands[1]);
+    case K::Negate: {
+      const Interval i = interval(e.operands[0]);
+      return {-i.hi, -i.lo};
+    }
+    case K::Duration: return {0.0, kInfinity};
+    default: return {};
+  }
+}
+
+bool TemporalRpg::Exploration::satisfiable(const std::vector<std::uint32_t>& comparisons) const {
+  for (std::uint32_t c : comparisons) {
+    const GroundComparison& cmp = *rpg_.comparisons_[c];
+    const Interval left = interval(cmp.left), right = interval(cmp.right);
+    if (left.lo > left.hi || right.lo > right.hi) return false;  // an undefined variable
+    const Interval d = left - right;
+    bool ok = true;
+    switch (cmp.comparison) {
+      case pddl::Comparison::Less: ok = d.lo < 0.0; break;
+      case pddl::Comparison::LessEqual: ok = d.lo <= 0.0; break;
+      case pddl::Comparison::Equal: ok = d.lo <= 0.0 && d.hi >= 0.0; break;
+      case pddl::Comparison::GreaterEqual: ok = d.hi >= 0.0; break;
+      case pddl::Comparison::Greater: ok = d.hi > 0.0; break;
+    }
+    if (!ok) return false;
+  }
+  return true;
+}
+
+void TemporalRpg::Exploration::apply_numeric(const std::vector<const NumericAssignment*>& effects, ActionId source) {
+  for (const NumericAssignment* a : effects) {
+    Interval& b = bounds_[a->variable];
+    const Interval before = b;
+    const Interval v = interval(a->value);
+    if (v.lo > v.hi) continue;  // reads an undefined variable
+    switch (a->assign) {
+      case pddl::AssignOperator::Assign:
+        b = b.lo > b.hi ? v : Interval{std::min(b.lo, v.lo), std::max(b.hi, v.hi)};
+        break;
+      case pddl::AssignOperator::Increase:
+      case pddl::AssignOperator::Decrease: {
+        if (b.lo > b.hi) b = {0.0, 0.0};  // VAL starts an undefined value at 0
+        const bool up = a->assign == pddl::AssignOperator::Increase;
+        if ((up ? v.hi : -v.lo) > 0) b.hi = kInfinity;
+        if ((up ? v.lo : -v.hi) < 0) b.lo = -kInfinity;
+        break;
+      }
+      default: b = {}; break;
+    }
+    if (b.lo == before.lo && b.hi == before.hi) continue;
+    if (supporter_[a->variable] == kNoId) supporter_[a->variable] = source;
+    for (ActionId waiting : rpg_.numeric_watchers_[a->variable]) {
+      if (parked_start_.at(waiting, generation_)) {
+        parked_start_.at(waiting, generation_) = 0;
+        try_start(waiting, enabled_time_.at(waiting, generation_));
+      }
+      if (parked_end_.at(waiting, generation_)) {
+        parked_end_.at(waiting, generation_) = 0;
+        try_end(waiting);
+      }
+    }
+  }
+}
+
+HeuristicValue TemporalRpg::evaluate(const SearchState& state, const PartialPlan& plan) {
+  return exploration_->run(state, plan);
+}
+
+double TemporalRpg::Exploration::duration_of(ActionId a) {
+  const DurationWindow w = duration_window(rpg_.index_.task().actions[a], Moment::Start, *state_);
+  return w.valid ? w.min : -1.0;
+}
+
+bool TemporalRpg::Exploration::in_window(FactId f, double from, double to) const {
+  for (const auto& [open, close] : windows_[f]) {
+    if (open <= from + 1e-9 && to < close) return true;
+  }
+  return false;
+}
+
+// The earliest start at or after `start` that keeps every window fact of the
+// action inside one of its windows; false when none is left.
+bool TemporalRpg::Exploration::window_start(ActionId a, double& start, double duration) {
+  const GroundAction& g = rpg_.index_.task().actions[a];
+  for (int round = 0; round < 8; ++round) {
+    bool moved = false;
+    auto fit = [&](FactId f, double length) {
+      if (!rpg_.window_fact_[f]) return true;
+      for (const auto& [open, close] : windows_[f]) {
+        if (close > std::max(start, open) + length) {
+          if (open > start) {
+            start = open;
+            moved = true;
+          }
+          return true;
+        }
+      }
+      return false;
+    };
+    for (FactId f : g.at_start.positive) {
+      if (!fit(f, 0.0)) return false;
+    }
+    if (g.durative) {
+      for (FactId f : g.over_all.positive) {
+        if (!fit(f, duration)) return false;
+      }
+      for (FactId f : g.at_end.positive) {
+        if (rpg_.window_fact_[f] && !in_window(f, start + duration, start + duration)) {
+          // Let the end wait for the window: the start moves with it.
+          bool found = false;
+          for (const auto& [open, close] : windows_[f]) {
+            if (close > start + duration) {
+              if (open > start + duration) {
+                start = open - duration;
+                moved = true;
+              }
+              found = true;
+              break;
+            }
+          }
+          if (!found) return false;
+        }
+      }
+    }
+    if (!moved) return true;
+  }
+  return true;
+}
+
+void TemporalRpg::Exploration::try_start(ActionId a, double time) {
+  const RelaxedAction& r = rpg_.actions_[a];
+  enabled_time_.at(a, generation_) = time;
+  if (!satisfiable(r.start_numeric)) {
+    parked_start_.at(a, generation_) = 1;
+    return;
+  }
+  const double epsilon = plan_->epsilon();
+  if (!r.durative) {
+    double start = time;
+    if (!window_start(a, start, 0.0)) return;
+    for (FactId f : r.start_add) reach(f, start + epsilon, {AchieverKind::Instant, a});
+    apply_numeric(r.start_numeric_effects, a);
+    return;
+  }
+  const double duration = duration_of(a);
+  if (duration < 0.0) return;
+  double start = time;
+  if (!window_start(a, start, duration)) return;
+  for (FactId f : r.start_add) reach(f, start + epsilon, {AchieverKind::Start, a});
+  apply_numeric(r.start_numeric_effects, a);
+  double& ready = end_ready_.at(a, generation_);
+  ready = std::max(ready, start + duration);
+  if (--end_count_.at(a, generation_) == 0) try_end(a);
+}
+
+void TemporalRpg::Exploration::try_end(ActionId a) {
+  const RelaxedAction& r = rpg_.actions_[a];
+  if (!satisfiable(r.end_numeric)) {
+    parked_end_.at(a, generation_) = 1;
+    return;
+  }
+  const double end = end_ready_.at(a, generation_);
+  for (FactId f : rpg_.index_.task().actions[a].at_end.positive) {
+    if (rpg_.window_fact_[f] && !in_window(f, end, end)) return;
+  }
+  for (FactId f : r.end_add) reach(f, end + plan_->epsilon(), {AchieverKind::End, a});
+  apply_numeric(r.end_numeric_effects, a);
+}
+
+void TemporalRpg::Exploration::process(FactId f, double time) {
+  for (ActionId a : rpg_.start_watchers_[f]) {
+    if (--start_count_.at(a, generation_) == 0) try_start(a, time);
+  }
+  for (ActionId a : rpg_.end_watchers_[f]) {
+    double& ready = end_ready_.at(a, generation_);
+    ready = std::max(ready, time);
+    if (--end_count_.at(a, generation_) == 0) try_end(a);
+  }
+  for (std::uint32_t x : rpg_.axiom_watchers_[f]) {
+    if (--axiom_count_.at(x, generation_) == 0) {
+      reach(rpg_.index_.task().axioms[x].head, time, {AchieverKind::Axiom, x});
+    }
+  }
+  if (std::binary_search(rpg_.goal_facts_.begin(), rpg_.goal_facts_.end(), f)) --goals_left_;
+}
+
+HeuristicValue TemporalRpg::Exploration::run(const SearchState& state, const PartialPlan& plan) {
+  const GroundTask& task = rpg_.index_.task();
+  state_ = &state;
+  plan_ = &plan;
+  if (++generation_ == 0) generation_ = 1;  // stamps start at 0: never reuse it
+  queue_ = {};
+  goals_left_ = rpg_.goal_facts_.size();
+  // Counters: an action waits for its preconditions; an end also for its start.
+  start_count_.fallback = 0;
+  for (ActionId a = 0; a < rpg_.actions_.size(); ++a) {
+    start_count_.values[a] = static_cast<std::uint32_t>(rpg_.actions_[a].start_pre.size());
+    start_count_.stamps[a] = generation_;
+    end_count_.values[a] = static_cast<std::uint32_t>(rpg_.actions_[a].end_pre.size()) + 1;
+    end_count_.stamps[a] = generation_;
+  }
+  for (std::uint32_t x = 0; x < task.axioms.size(); ++x) {
+    axiom_count_.values[x] = static_cast<std::uint32_t>(task.axioms[x].body.positive.size());
+    axiom_count_.stamps[x] = generation_;
+  }
+  for (NumericVarId v = 0; v < bounds_.size(); ++v) {
+    const double x = state.value(v);
+    bounds_[v] = std::isnan(x) ? Interval{kInfinity, -kInfinity} : Interval{x, x};
+    supporter_[v] = kNoId;
+  }
+  // Windows of the facts only timed literals give, from now on.
+  for (FactId f = 0; f < rpg_.window_fact_.size(); ++f) {
+    if (!rpg_.window_fact_[f]) continue;
+    windows_[f].clear();
+    double open = state.fact(f) ? plan.available_from(f) : kInfinity;
+    for (std::uint32_t t = state.next_timed_literal(); t < task.timed_literals.size(); ++t) {
+      const GroundTimedLiteral& til = task.timed_literals[t];
+      if (til.fact != f) continue;
+      if (til.positive && open == kInfinity) open = til.time + plan.epsilon();
+      if (!til.positive && open != kInfinity) {
+        windows_[f].emplace_back(open, til.time);
+        open = kInfinity;
+      }
+    }
+    if (open != kInfinity) windows_[f].emplace_back(open, kInfinity);
+  }
+  // What holds now, what timed literals will give, what running actions owe.
+  for (std::size_t word = 0; word < state.bits().size(); ++word) {
+    for (std::uint64_t w = state.bits()[word]; w != 0; w &= w - 1) {
+      const FactId f = static_cast<FactId>(word * 64 + static_cast<std::size_t>(__builtin_ctzll(w)));
+      reach(f, plan.available_from(f), {AchieverKind::State, 0});
+    }
+  }
+  for (std::uint32_t t = state.next_timed_literal(); t < task.timed_literals.size(); ++t) {
+    const GroundTimedLiteral& til = task.timed_literals[t];
+    if (til.positive) reach(til.fact, til.time + plan.epsilon(), {AchieverKind::TimedLiteral, t});
+  }
+  for (const RunningAction& running : state.running()) {
+    double& ready = end_ready_.at(running.action, generation_);
+    ready = std::max(ready, plan.pending_end_time(running.action));
+    --end_count_.at(running.action, generation_);
+  }
+  for (ActionId a = 0; a < rpg_.actions_.size(); ++a) {
+    if (rpg_.actions_[a].start_pre.empty() && !state.is_running(a)) try_start(a, 0.0);
+  }
+  for (const RunningAction& running : state.running()) {
+    if (end_count_.at(running.action, generation_) == 0) try_end(running.action);
+  }
+  for (std::uint32_t x = 0; x < task.axioms.size(); ++x) {
+    if (task.axioms[x].body.positive.empty()) reach(task.axioms[x].head, 0.0, {AchieverKind::Axiom, x});
+  }
+  double goal_time = 0.0;
+  bool reached = goals_reached();
+  while (!queue_.empty() && !reached) {
+    const Event e = queue_.top();
+    queue_.pop();
+    if (e.time > fact_time_.at(e.fact, generation_) || processed_.at(e.fact, generation_)) continue;
+    processed_.at(e.fact, generation_) = 1;
+    process(e.fact, e.time);
+    goal_time = e.time;
+    reached = goals_reached();
+  }
+  if (!reached) return HeuristicValue{};
+  return extract(state, goal_time);
+}
+
+HeuristicValue TemporalRpg::Exploration::extract(const SearchState& state, double goal_time) {
+  const GroundTask& task = rpg_.index_.task();
+  HeuristicValue value;
+  value.relaxed_makespan = goal_time;
+  double count = 0.0;
+  std::vector<FactId> open(rpg_.goal_facts_.begin(), rpg_.goal_facts_.end());
+  std::vector<ActionId> numeric_support;
+  auto need_numeric = [&](const std::vector<std::uint32_t>& comparisons) {
+    for (std::uint32_t c : comparisons) {
+      try {
+        if (holds(*rpg_.comparisons_[c], state, EvaluationContext{}, 0.0)) continue;  // true already
+      } catch (const EvaluationError&) {
+      }
+      for (NumericVarId v : rpg_.comparison_variables_[c]) {
+        if (supporter_[v] != kNoId) numeric_support.push_back(supporter_[v]);
+      }
+    }
+  };
+  need_numeric(rpg_.goal_numeric_);
+  auto count_start = [&](ActionId a) {
+    if (counted_start_.at(a, generation_)) return;
+    counted_start_.at(a, generation_) = 1;
+    count += 1.0;
+    const RelaxedAction& r = rpg_.actions_[a];
+    open.insert(open.end(), r.start_pre.begin(), r.start_pre.end());
+    need_numeric(r.start_numeric);
+  };
+  auto count_end = [&](ActionId a) {
+    if (counted_end_.at(a, generation_)) return;
+    counted_end_.at(a, generation_) = 1;
+    count += 1.0;
+    const RelaxedAction& r = rpg_.actions_[a];
+    open.insert(open.end(), r.end_pre.begin(), r.end_pre.end());
+    need_numeric(r.end_numeric);
+    if (!state.is_running(a)) count_start(a);
+  };
+  while (!open.empty() || !numeric_support.empty()) {
+    if (open.empty()) {
+      const ActionId a = numeric_support.back();
+      numeric_support.pop_back();
+      if (rpg_.actions_[a].durative) {
+        count_end(a);
+      } else {
+        count_start(a);
+      }
+      continue;
+    }
+    const FactId f = open.back();
+    open.pop_back();
+    if (processed_.at(f, generation_) == 2) continue;
+    processed_.at(f, generation_) = 2;  // 2: supported in the relaxed plan
+    const Achiever a = achiever_.at(f, generation_);
+    switch (a.kind) {
+      case AchieverKind::Start:
+      case AchieverKind::Instant: count_start(a.index); break;
+      case AchieverKind::End: count_end(a.index); break;
+      case AchieverKind::Axiom: {
+        const std::vector<FactId>& body = task.axioms[a.index].body.positive;
+        open.insert(open.end(), body.begin(), body.end());
+        break;
+      }
+      default: break;
+    }
+  }
+  // Every running action still owes its end.
+  for (const RunningAction& r : state.running()) {
+    if (!counted_end_.at(r.action, generation_)) count += 1.0;
+  }
+  value.h = count;
+  if (rpg_.options_.helpful_actions) {
+    // Helpful: relaxed-plan snaps whose preconditions hold now.
+    auto holds_now = [&](const std::vector<FactId>& pre) {
+      return std::all_of(pre.begin(), pre.end(), [&](FactId f) { return state.fact(f); });
+    };
+    for (ActionId a = 0; a < rpg_.actions_.size(); ++a) {
+      if (counted_end_.stamps[a] == generation_ && counted_end_.values[a] && state.is_running(a) &&
+          holds_now(rpg_.actions_[a].end_pre)) {
+        value.helpful.push_back({SnapKind::End, a});
+      }
+      if (counted_start_.stamps[a] == generation_ && counted_start_.values[a] &&
+          holds_now(task.actions[a].at_start.positive)) {
+        value.helpful.push_back({rpg_.actions_[a].durative ? SnapKind::Start : SnapKind::Instant, a});
+      }
+    }
+  }
+  return value;
+}
+
+}  // namespace alplan

@@ -1,0 +1,82 @@
+// The temporal relaxed planning graph heuristic of POPF (Coles et al. 2010,
+// after CRIKEY's and Sapa's): delete effects are ignored, snap actions are
+// reached in order of time (an end no earlier than its start plus the least
+// duration), facts that only timed initial literals give are available only
+// inside their windows, numeric conditions are relaxed to interval bounds
+// (optimistically: a reachable increase makes a variable unbounded above, as
+// in Metric-FF's relaxation without its layer counting). A relaxed plan is
+// extracted backwards from the goals; its snap count, plus the ends still
+// owed by running actions, is h. Its applicable snaps are the helpful ones.
+#pragma once
+
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include "planner/partial_plan.h"
+#include "planner/search_state.h"
+#include "planner/task_index.h"
+
+namespace alplan {
+
+struct HeuristicValue {
+  double h = std::numeric_limits<double>::infinity();  // infinite: a dead end
+  double relaxed_makespan = 0.0;                       // when the goals are reached in the relaxation
+  std::vector<Snap> helpful;
+  bool dead_end() const { return h == std::numeric_limits<double>::infinity(); }
+};
+
+struct TemporalRpgOptions {
+  bool helpful_actions = true;
+};
+
+class TemporalRpg {
+ public:
+  explicit TemporalRpg(const TaskIndex& index, TemporalRpgOptions options = {});
+  ~TemporalRpg();
+  TemporalRpg(const TemporalRpg&) = delete;
+  TemporalRpg& operator=(const TemporalRpg&) = delete;
+
+  // `plan` is the partial plan that leads to `state`, for the times at which
+  // its facts became true and its running actions started.
+  HeuristicValue evaluate(const SearchState& state, const PartialPlan& plan);
+
+ private:
+  struct RelaxedAction {
+    std::vector<FactId> start_pre, end_pre;
+    std::vector<std::uint32_t> start_numeric, end_numeric;  // indices into comparisons_
+    std::vector<FactId> start_add, end_add;
+    std::vector<const NumericAssignment*> start_numeric_effects, end_numeric_effects;
+    bool durative = false;
+  };
+  struct Event {
+    double time;
+    FactId fact;
+    bool operator>(const Event& other) const { return time > other.time; }
+  };
+  enum class AchieverKind : unsigned char { None, State, Start, End, Instant, TimedLiteral, Axiom };
+  struct Achiever {
+    AchieverKind kind = AchieverKind::None;
+    std::uint32_t index = 0;
+  };
+  class Exploration;
+  friend class Exploration;
+
+  void build();
+  std::uint32_t add_comparisons(const std::vector<GroundComparison>& comparisons);
+
+  const TaskIndex& index_;
+  TemporalRpgOptions options_;
+  std::vector<RelaxedAction> actions_;
+  std::vector<const GroundComparison*> comparisons_;
+  std::vector<std::vector<ActionId>> start_watchers_, end_watchers_;  // by fact
+  std::vector<std::vector<std::uint32_t>> axiom_watchers_;            // by fact
+  std::vector<std::vector<ActionId>> numeric_watchers_;                // by variable
+  std::vector<std::vector<NumericVarId>> comparison_variables_;
+  std::vector<bool> window_fact_;  // only timed literals add it
+  std::vector<FactId> goal_facts_;  // sorted
+  std::vector<std::uint32_t> goal_numeric_;
+  std::unique_ptr<Exploration> exploration_;  // working memory, reused
+};
+
+}  // namespace alplan
