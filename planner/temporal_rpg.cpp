@@ -5,6 +5,7 @@
 #include <queue>
 
 #include "planner/evaluation.h"
+#include "planner/fact_windows.h"
 #include "planner/successor_generator.h"
 
 namespace alplan {
@@ -41,7 +42,7 @@ Interval operator/(Interval a, Interval b) {
 // evaluations (the arrays are as long as the task has actions and facts).
 class TemporalRpg::Exploration {
  public:
-  explicit Exploration(TemporalRpg& rpg) : rpg_(rpg) {}
+  explicit Exploration(TemporalRpg& rpg) : rpg_(rpg), windows_(rpg.index_.task()) {}
   HeuristicValue run(const SearchState& state, const PartialPlan& plan);
 
  private:
@@ -65,15 +66,15 @@ class TemporalRpg::Exploration {
   };
   friend class TemporalRpg;
 
-  void reach(FactId f, double time, Achiever achiever);
+  void reach(FactId f, double time, Achiever achiever, double cost);
+  double cost_of(const std::vector<FactId>& facts);
   void process(FactId f, double time);
   void try_start(ActionId a, double time);
   void try_end(ActionId a);
   void apply_numeric(const std::vector<const NumericAssignment*>& effects, ActionId source);
   bool satisfiable(const std::vector<std::uint32_t>& comparisons) const;
   Interval interval(const GroundExpression& e) const;
-  bool window_start(ActionId a, double& start, double duration);
-  bool in_window(FactId f, double from, double to) const;
+  void park(FactId fact, ActionId a, bool end);
   double duration_of(ActionId a);
   HeuristicValue extract(const SearchState& state, double goal_time);
   bool goals_reached() const { return goals_left_ == 0 && satisfiable(rpg_.goal_numeric_); }
@@ -82,7 +83,7 @@ class TemporalRpg::Exploration {
   const SearchState* state_ = nullptr;
   const PartialPlan* plan_ = nullptr;
   std::uint32_t generation_ = 0;
-  Stamped<double> fact_time_, end_ready_, enabled_time_;
+  Stamped<double> fact_time_, fact_cost_, end_ready_, enabled_time_, started_at_, start_cost_;
   Stamped<Achiever> achiever_;
   Stamped<std::uint32_t> start_count_, end_count_, axiom_count_;
   Stamped<char> processed_, parked_start_, parked_end_, counted_start_, counted_end_;
@@ -90,7 +91,11 @@ class TemporalRpg::Exploration {
   std::vector<ActionId> supporter_;  // first action that widened each variable
   std::priority_queue<Event, std::vector<Event>, std::greater<Event>> queue_;
   std::size_t goals_left_ = 0;
-  std::vector<std::vector<std::pair<double, double>>> windows_;  // per window fact, this evaluation
+  FactWindows windows_;
+  // Actions waiting for a fact whose windows do not fit them to be achieved
+  // again by an action (then it is usable for good).
+  std::vector<std::vector<std::pair<ActionId, bool>>> parked_on_;
+  std::vector<FactId> parked_facts_;
 };
 
 TemporalRpg::TemporalRpg(const TaskIndex& index, TemporalRpgOptions options) : index_(index), options_(options) {
@@ -100,6 +105,8 @@ TemporalRpg::TemporalRpg(const TaskIndex& index, TemporalRpgOptions options) : i
   exploration_ = std::make_unique<Exploration>(*this);
   Exploration& x = *exploration_;
   x.fact_time_.resize(facts, kInfinity);
+  x.fact_cost_.resize(facts, kInfinity);
+  x.start_cost_.resize(actions, 0.0);
   x.achiever_.resize(facts, Achiever{});
   x.processed_.resize(facts, 0);
   x.end_ready_.resize(actions, 0.0);
@@ -113,7 +120,8 @@ TemporalRpg::TemporalRpg(const TaskIndex& index, TemporalRpgOptions options) : i
   x.axiom_count_.resize(task.axioms.size(), 0);
   x.bounds_.resize(task.numeric.size());
   x.supporter_.resize(task.numeric.size(), kNoId);
-  x.windows_.resize(facts);
+  x.parked_on_.resize(facts);
+  x.started_at_.resize(actions, 0.0);
 }
 
 TemporalRpg::~TemporalRpg() = default;
@@ -131,8 +139,6 @@ void TemporalRpg::build() {
   end_watchers_.resize(facts);
   axiom_watchers_.resize(facts);
   numeric_watchers_.resize(task.numeric.size());
-  window_fact_.assign(facts, false);
-  std::vector<bool> added_by_action(facts, false);
   actions_.resize(task.actions.size());
   auto numeric_list = [&](const ConditionSet& c, std::vector<std::uint32_t>& out) {
     const std::uint32_t first = add_comparisons(c.numeric);
@@ -145,7 +151,6 @@ void TemporalRpg::build() {
       out.insert(out.end(), c.add.begin(), c.add.end());
       for (const NumericAssignment& n : c.numeric) num.push_back(&n);
     }
-    for (FactId f : out) added_by_action[f] = true;
   };
   for (ActionId a = 0; a < task.actions.size(); ++a) {
     const GroundAction& g = task.actions[a];
@@ -194,15 +199,36 @@ void TemporalRpg::build() {
       }
     }
   }
-  for (const GroundTimedLiteral& til : task.timed_literals) {
-    if (!added_by_action[til.fact] && !til.positive) window_fact_[til.fact] = true;
-  }
 }
 
-void TemporalRpg::Exploration::reach(FactId f, double time, Achiever achiever) {
+void TemporalRpg::Exploration::reach(FactId f, double time, Achiever achiever, double cost) {
+  const bool by_action = achiever.kind != AchieverKind::State && achiever.kind != AchieverKind::TimedLiteral;
+  if (by_action && windows_.open_from(f, time)) {
+    // Actions that waited for this fact to become usable again retry.
+    std::vector<std::pair<ActionId, bool>> waiting = std::move(parked_on_[f]);
+    parked_on_[f].clear();
+    for (const auto& [a, end] : waiting) {
+      if (end) {
+        try_end(a);
+      } else {
+        try_start(a, std::max(time, enabled_time_.at(a, generation_)));
+      }
+    }
+  }
   double& current = fact_time_.at(f, generation_);
-  if (time >= current) return;
+  double& current_cost = fact_cost_.at(f, generation_);
+  if (time > current + 1e-9) return;
+  if (time > current - 1e-9) {
+    // As early: keep the cheaper achiever (h_add), so that what is already
+    // there (a lit match) beats what would have to be started.
+    if (cost < current_cost) {
+      current_cost = cost;
+      achiever_.at(f, generation_) = achiever;
+    }
+    return;
+  }
   current = time;
+  current_cost = cost;
   achiever_.at(f, generation_) = achiever;
   queue_.push({time, f});
 }
@@ -296,82 +322,45 @@ double TemporalRpg::Exploration::duration_of(ActionId a) {
   return w.valid ? w.min : -1.0;
 }
 
-bool TemporalRpg::Exploration::in_window(FactId f, double from, double to) const {
-  for (const auto& [open, close] : windows_[f]) {
-    if (open <= from + 1e-9 && to < close) return true;
-  }
-  return false;
+double TemporalRpg::Exploration::cost_of(const std::vector<FactId>& facts) {
+  double sum = 0.0;
+  for (FactId f : facts) sum += fact_cost_.at(f, generation_);
+  return std::min(sum, 1e9);
 }
 
-// The earliest start at or after `start` that keeps every window fact of the
-// action inside one of its windows; false when none is left.
-bool TemporalRpg::Exploration::window_start(ActionId a, double& start, double duration) {
-  const GroundAction& g = rpg_.index_.task().actions[a];
-  for (int round = 0; round < 8; ++round) {
-    bool moved = false;
-    auto fit = [&](FactId f, double length) {
-      if (!rpg_.window_fact_[f]) return true;
-      for (const auto& [open, close] : windows_[f]) {
-        if (close > std::max(start, open) + length) {
-          if (open > start) {
-            start = open;
-            moved = true;
-          }
-          return true;
-        }
-      }
-      return false;
-    };
-    for (FactId f : g.at_start.positive) {
-      if (!fit(f, 0.0)) return false;
-    }
-    if (g.durative) {
-      for (FactId f : g.over_all.positive) {
-        if (!fit(f, duration)) return false;
-      }
-      for (FactId f : g.at_end.positive) {
-        if (rpg_.window_fact_[f] && !in_window(f, start + duration, start + duration)) {
-          // Let the end wait for the window: the start moves with it.
-          bool found = false;
-          for (const auto& [open, close] : windows_[f]) {
-            if (close > start + duration) {
-              if (open > start + duration) {
-                start = open - duration;
-                moved = true;
-              }
-              found = true;
-              break;
-            }
-          }
-          if (!found) return false;
-        }
-      }
-    }
-    if (!moved) return true;
-  }
-  return true;
+void TemporalRpg::Exploration::park(FactId fact, ActionId a, bool end) {
+  if (parked_on_[fact].empty()) parked_facts_.push_back(fact);
+  parked_on_[fact].emplace_back(a, end);
 }
 
 void TemporalRpg::Exploration::try_start(ActionId a, double time) {
   const RelaxedAction& r = rpg_.actions_[a];
+  const GroundAction& g = rpg_.index_.task().actions[a];
   enabled_time_.at(a, generation_) = time;
   if (!satisfiable(r.start_numeric)) {
     parked_start_.at(a, generation_) = 1;
     return;
   }
   const double epsilon = plan_->epsilon();
+  const double duration = r.durative ? duration_of(a) : 0.0;
+  if (duration < 0.0) return;
+  static const std::vector<FactId> kNone;
+  const FactWindows::Fit fit = windows_.fit(time, duration, g.at_start.positive, r.durative ? g.over_all.positive : kNone,
+                                            r.durative ? g.at_end.positive : kNone);
+  if (!fit.ok) {
+    park(fit.blocking, a, false);
+    return;
+  }
+  const double start = fit.start;
+  const double cost = 1.0 + cost_of(r.start_pre);
   if (!r.durative) {
-    double start = time;
-    if (!window_start(a, start, 0.0)) return;
-    for (FactId f : r.start_add) reach(f, start + epsilon, {AchieverKind::Instant, a});
+    for (FactId f : r.start_add) reach(f, start + epsilon, {AchieverKind::Instant, a}, cost);
     apply_numeric(r.start_numeric_effects, a);
     return;
   }
-  const double duration = duration_of(a);
-  if (duration < 0.0) return;
-  double start = time;
-  if (!window_start(a, start, duration)) return;
-  for (FactId f : r.start_add) reach(f, start + epsilon, {AchieverKind::Start, a});
+  started_at_.at(a, generation_) = start;
+  start_cost_.at(a, generation_) = cost;
+  for (FactId f : r.start_add) reach(f, start + epsilon, {AchieverKind::Start, a}, cost);
   apply_numeric(r.start_numeric_effects, a);
   double& ready = end_ready_.at(a, generation_);
   ready = std::max(ready, start + duration);
@@ -384,11 +373,26 @@ void TemporalRpg::Exploration::try_end(ActionId a) {
     parked_end_.at(a, generation_) = 1;
     return;
   }
+  const GroundAction& g = rpg_.index_.task().actions[a];
   const double end = end_ready_.at(a, generation_);
-  for (FactId f : rpg_.index_.task().actions[a].at_end.positive) {
-    if (rpg_.window_fact_[f] && !in_window(f, end, end)) return;
+  // A running action's end: its invariant was checked as it ran.
+  if (!state_->is_running(a)) {
+    const double start = started_at_.at(a, generation_);
+    static const std::vector<FactId> kNone;
+    const FactWindows::Fit fit = windows_.fit(start, end - start, kNone, g.over_all.positive, g.at_end.positive);
+    if (!fit.ok || fit.start > start + 1e-9) {
+      if (!fit.ok) park(fit.blocking, a, true);
+      return;
+    }
+  } else {
+    const FactWindows::Fit fit = windows_.fit(end, 0.0, g.at_end.positive, {}, {});
+    if (!fit.ok) {
+      park(fit.blocking, a, true);
+      return;
+    }
   }
-  for (FactId f : r.end_add) reach(f, end + plan_->epsilon(), {AchieverKind::End, a});
+  const double cost = (state_->is_running(a) ? 1.0 : start_cost_.at(a, generation_) + 1.0) + cost_of(r.end_pre);
+  for (FactId f : r.end_add) reach(f, end + plan_->epsilon(), {AchieverKind::End, a}, cost);
   apply_numeric(r.end_numeric_effects, a);
 }
 
@@ -403,7 +407,8 @@ void TemporalRpg::Exploration::process(FactId f, double time) {
   }
   for (std::uint32_t x : rpg_.axiom_watchers_[f]) {
     if (--axiom_count_.at(x, generation_) == 0) {
-      reach(rpg_.index_.task().axioms[x].head, time, {AchieverKind::Axiom, x});
+      reach(rpg_.index_.task().axioms[x].head, time, {AchieverKind::Axiom, x},
+            cost_of(rpg_.index_.task().axioms[x].body.positive));
     }
   }
   if (std::binary_search(rpg_.goal_facts_.begin(), rpg_.goal_facts_.end(), f)) --goals_left_;
@@ -433,32 +438,19 @@ HeuristicValue TemporalRpg::Exploration::run(const SearchState& state, const Par
     bounds_[v] = std::isnan(x) ? Interval{kInfinity, -kInfinity} : Interval{x, x};
     supporter_[v] = kNoId;
   }
-  // Windows of the facts only timed literals give, from now on.
-  for (FactId f = 0; f < rpg_.window_fact_.size(); ++f) {
-    if (!rpg_.window_fact_[f]) continue;
-    windows_[f].clear();
-    double open = state.fact(f) ? plan.available_from(f) : kInfinity;
-    for (std::uint32_t t = state.next_timed_literal(); t < task.timed_literals.size(); ++t) {
-      const GroundTimedLiteral& til = task.timed_literals[t];
-      if (til.fact != f) continue;
-      if (til.positive && open == kInfinity) open = til.time + plan.epsilon();
-      if (!til.positive && open != kInfinity) {
-        windows_[f].emplace_back(open, til.time);
-        open = kInfinity;
-      }
-    }
-    if (open != kInfinity) windows_[f].emplace_back(open, kInfinity);
-  }
+  for (FactId f : parked_facts_) parked_on_[f].clear();
+  parked_facts_.clear();
+  windows_.reset(state, plan);
   // What holds now, what timed literals will give, what running actions owe.
   for (std::size_t word = 0; word < state.bits().size(); ++word) {
     for (std::uint64_t w = state.bits()[word]; w != 0; w &= w - 1) {
       const FactId f = static_cast<FactId>(word * 64 + static_cast<std::size_t>(__builtin_ctzll(w)));
-      reach(f, plan.available_from(f), {AchieverKind::State, 0});
+      reach(f, plan.available_from(f), {AchieverKind::State, 0}, 0.0);
     }
   }
   for (std::uint32_t t = state.next_timed_literal(); t < task.timed_literals.size(); ++t) {
     const GroundTimedLiteral& til = task.timed_literals[t];
-    if (til.positive) reach(til.fact, til.time + plan.epsilon(), {AchieverKind::TimedLiteral, t});
+    if (til.positive) reach(til.fact, til.time + plan.epsilon(), {AchieverKind::TimedLiteral, t}, 0.0);
   }
   for (const RunningAction& running : state.running()) {
     double& ready = end_ready_.at(running.action, generation_);
@@ -472,7 +464,7 @@ HeuristicValue TemporalRpg::Exploration::run(const SearchState& state, const Par
     if (end_count_.at(running.action, generation_) == 0) try_end(running.action);
   }
   for (std::uint32_t x = 0; x < task.axioms.size(); ++x) {
-    if (task.axioms[x].body.positive.empty()) reach(task.axioms[x].head, 0.0, {AchieverKind::Axiom, x});
+    if (task.axioms[x].body.positive.empty()) reach(task.axioms[x].head, 0.0, {AchieverKind::Axiom, x}, 0.0);
   }
   double goal_time = 0.0;
   bool reached = goals_reached();

@@ -73,7 +73,6 @@ class TemporalRpg {
   std::vector<std::vector<std::uint32_t>> axiom_watchers_;            // by fact
   std::vector<std::vector<ActionId>> numeric_watchers_;                // by variable
   std::vector<std::vector<NumericVarId>> comparison_variables_;
-  std::vector<bool> window_fact_;  // only timed literals add it
   std::vector<FactId> goal_facts_;  // sorted
   std::vector<std::uint32_t> goal_numeric_;
   std::unique_ptr<Exploration> exploration_;  // working memory, reused

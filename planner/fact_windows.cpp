@@ -1,0 +1,125 @@
+#include "planner/fact_windows.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace alplan {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kTolerance = 1e-9;
+
+}  // namespace
+
+FactWindows::FactWindows(const GroundTask& task) : task_(task) {
+  literals_of_.resize(task.facts.size());
+  for (std::uint32_t t = 0; t < task.timed_literals.size(); ++t) literals_of_[task.timed_literals[t].fact].push_back(t);
+  restricted_.assign(task.facts.size(), 0);
+  windows_.resize(task.facts.size());
+}
+
+void FactWindows::reset(const SearchState& state, const PartialPlan& plan) {
+  for (FactId f : touched_) {
+    restricted_[f] = 0;
+    windows_[f].clear();
+  }
+  touched_.clear();
+  // Deadlines from running actions whose end deletes a fact true now.
+  std::vector<std::pair<FactId, double>> closing;
+  for (const RunningAction& r : state.running()) {
+    const double latest = plan.latest_end_time(r.action);
+    if (latest == kInfinity) continue;
+    for (FactId f : task_.actions[r.action].end.del) {
+      if (state.fact(f)) closing.emplace_back(f, latest);
+    }
+  }
+  std::vector<FactId> candidates;
+  for (const auto& [f, at] : closing) candidates.push_back(f);
+  for (std::uint32_t t = state.next_timed_literal(); t < task_.timed_literals.size(); ++t) {
+    candidates.push_back(task_.timed_literals[t].fact);
+  }
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  for (FactId f : candidates) {
+    double open = state.fact(f) ? plan.available_from(f) : kInfinity;
+    double now_closes = kInfinity;
+    for (const auto& [g, at] : closing) {
+      if (g == f) now_closes = std::min(now_closes, at);
+    }
+    std::vector<Window> windows;
+    bool first = open != kInfinity;
+    for (std::uint32_t t : literals_of_[f]) {
+      if (t < state.next_timed_literal()) continue;
+      const GroundTimedLiteral& til = task_.timed_literals[t];
+      if (til.positive && open == kInfinity) open = til.time + plan.epsilon();
+      if (!til.positive && open != kInfinity) {
+        windows.emplace_back(open, first ? std::min(til.time, now_closes) : til.time);
+        open = kInfinity;
+        first = false;
+      }
+    }
+    if (open != kInfinity) windows.emplace_back(open, first ? now_closes : kInfinity);
+    if (windows.size() == 1 && windows.front().second == kInfinity) continue;  // never closes
+    restricted_[f] = 1;
+    windows_[f] = std::move(windows);
+    touched_.push_back(f);
+  }
+}
+
+bool FactWindows::open_from(FactId f, double time) {
+  if (!restricted_[f]) return false;
+  std::vector<Window>& w = windows_[f];
+  if (!w.empty() && w.back().second == kInfinity && w.back().first <= time) return false;
+  // Usable for good from `time`: drop what that window swallows.
+  while (!w.empty() && w.back().first >= time) w.pop_back();
+  if (!w.empty() && w.back().second >= time) {
+    w.back().second = kInfinity;
+  } else {
+    w.emplace_back(time, kInfinity);
+  }
+  return true;
+}
+
+// Whether one window holds [from, to]; otherwise `moved` is how far to the
+// first window that can, or infinity when none can.
+bool FactWindows::covers(FactId f, double from, double to, double& moved) const {
+  for (const Window& w : windows_[f]) {
+    if (w.second <= to + kTolerance && !(w.second == kInfinity)) continue;  // closes too soon
+    if (w.first <= from + kTolerance) return true;
+    moved = w.first - from;
+    return false;
+  }
+  moved = kInfinity;
+  return false;
+}
+
+FactWindows::Fit FactWindows::fit(double start, double duration, const std::vector<FactId>& at_start,
+                                  const std::vector<FactId>& over_all, const std::vector<FactId>& at_end) const {
+  Fit result;
+  result.start = start;
+  for (int round = 0; round < 16; ++round) {
+    bool moved_any = false;
+    auto check = [&](const std::vector<FactId>& facts, double from, double to) {
+      for (FactId f : facts) {
+        if (!restricted_[f]) continue;
+        double moved = 0.0;
+        if (covers(f, result.start + from, result.start + to, moved)) continue;
+        if (moved == kInfinity) {
+          result.ok = false;
+          result.blocking = f;
+          return false;
+        }
+        result.start += moved;
+        moved_any = true;
+      }
+      return true;
+    };
+    if (!check(at_start, 0.0, 0.0) || !check(over_all, 0.0, duration) || !check(at_end, duration, duration)) {
+      return result;
+    }
+    if (!moved_any) return result;
+  }
+  return result;
+}
+
+}  // namespace alplan
