@@ -27,6 +27,7 @@ struct PlanOptions {
   double time_limit = 60.0;
   double memory_limit = 0.0;
   bool anytime = false;
+  bool reserve_planning_time = false;
   std::string search = "ehc";
   std::string heuristic = "trpg";
   double weight = 3.0;
@@ -97,6 +98,7 @@ int run(const PlanOptions& options) {
   planner_options.heuristic = options.heuristic;
   planner_options.weight = options.weight;
   planner_options.anytime = options.anytime;
+  planner_options.reserve_planning_time = options.reserve_planning_time;
   planner_options.time_limit = std::max(0.0, options.time_limit - grounding);
   auto on_plan = [&](const FoundPlan& p) {
     if (options.json) return;
@@ -152,6 +154,8 @@ void add_plan_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--time-limit", options->time_limit, "Seconds for grounding and search")->check(CLI::NonNegativeNumber);
   cmd->add_option("--memory-limit", options->memory_limit, "MiB of address space")->check(CLI::NonNegativeNumber);
   cmd->add_flag("--anytime", options->anytime, "Keep improving the plan until the time limit");
+  cmd->add_flag("--reserve-planning-time", options->reserve_planning_time,
+                "Start no step before the time limit has passed (deadlines shrink by the planning budget)");
   cmd->add_option("--search", options->search, "ehc (falls back to gbfs), gbfs or wastar")
       ->check(CLI::IsMember({"ehc", "gbfs", "wastar"}));
   cmd->add_option("--heuristic", options->heuristic, "trpg (temporal relaxed planning graph) or trpg-nohelpful")

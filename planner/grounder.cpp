@@ -66,7 +66,9 @@ void instantiate_state(const NormalizedTask& lifted, Instantiator& instantiate, 
     }
   }
   std::vector<ObjectId> binding(lifted.goal_variable_slots, kNoId);
+  instantiate.set_explain(true);
   task.goal = instantiate.condition(lifted.goal, binding);
+  instantiate.set_explain(false);
   if (lifted.metric) {
     task.metric = GroundMetric{lifted.metric->minimize, instantiate.expression(lifted.metric->expression, {})};
   }

@@ -105,18 +105,25 @@ Violation HappeningExecutor::violation(Violation::Kind kind, const Event& e) con
 }
 
 void HappeningExecutor::load(const std::vector<ScheduledStep>& steps) {
+  ExecutionStart start;
+  for (FactId f : task_.initial_facts) start.state.set_fact(f, true);
+  for (NumericVarId v = 0; v < task_.initial_values.size(); ++v) start.state.set_value(v, task_.initial_values[v]);
+  load(steps, start);
+}
+
+void HappeningExecutor::load(const std::vector<ScheduledStep>& steps, const ExecutionStart& start) {
   steps_ = steps;
   std::vector<Event> events;
   for (std::size_t s = 0; s < steps_.size(); ++s) {
     const bool durative = task_.actions[steps_[s].action].durative;
     if (durative) {
-      events.push_back({Point::Start, steps_[s].start, s});
+      if (!steps_[s].started_before) events.push_back({Point::Start, steps_[s].start, s});
       events.push_back({Point::End, steps_[s].start + steps_[s].duration, s});
     } else {
       events.push_back({Point::Instant, steps_[s].start, s});
     }
   }
-  for (std::size_t t = 0; t < task_.timed_literals.size(); ++t) {
+  for (std::size_t t = start.first_timed_literal; t < task_.timed_literals.size(); ++t) {
     events.push_back({Point::Til, task_.timed_literals[t].time, t});
   }
   std::stable_sort(events.begin(), events.end(), [](const Event& a, const Event& b) { return a.time < b.time; });
@@ -136,13 +143,14 @@ void HappeningExecutor::load(const std::vector<ScheduledStep>& steps) {
       if (e.point != Point::Til) last_action_happening_ = h;
     }
   }
-  state_ = ExplicitState();
-  for (FactId f : task_.initial_facts) state_.set_fact(f, true);
-  for (NumericVarId v = 0; v < task_.initial_values.size(); ++v) state_.set_value(v, task_.initial_values[v]);
+  state_ = start.state;
   derive(task_, state_);
   running_.clear();
+  for (std::size_t s = 0; s < steps_.size(); ++s) {
+    if (steps_[s].started_before) running_.emplace(s, steps_[s].action);
+  }
   next_ = 0;
-  time_ = 0.0;
+  time_ = start.now;
   last_action_state_.reset();
   last_action_time_ = 0.0;
 }
@@ -345,8 +353,18 @@ std::optional<Violation> HappeningExecutor::step() {
 }
 
 ValidationResult HappeningExecutor::run(const std::vector<ScheduledStep>& steps, std::size_t plan_steps) {
-  ValidationResult result;
   load(steps);
+  return finish_run(plan_steps);
+}
+
+ValidationResult HappeningExecutor::run(const std::vector<ScheduledStep>& steps, std::size_t plan_steps,
+                                        const ExecutionStart& start) {
+  load(steps, start);
+  return finish_run(plan_steps);
+}
+
+ValidationResult HappeningExecutor::finish_run(std::size_t plan_steps) {
+  ValidationResult result;
   result.happenings = happenings_.size();
   while (!done()) {
     if (auto v = step()) {

@@ -26,6 +26,18 @@ struct ScheduledStep {
   double start = 0.0;
   double duration = 0.0;   // durative actions only
   std::string name;        // "(act args)" as the plan wrote it
+  // The action started before execution began (a plan made from an observed
+  // state): its start is not executed, only its invariant and its end.
+  bool started_before = false;
+};
+
+// Where execution begins when it is not the task's initial state: an
+// observed state and the first timed literal still to come (earlier ones
+// are in the past). Times stay the task's times.
+struct ExecutionStart {
+  ExplicitState state;
+  std::size_t first_timed_literal = 0;
+  double now = 0.0;
 };
 
 class HappeningExecutor {
@@ -34,9 +46,11 @@ class HappeningExecutor {
 
   // Whole-plan validation; `plan_steps` counts the lines for VAL's value.
   ValidationResult run(const std::vector<ScheduledStep>& steps, std::size_t plan_steps);
+  ValidationResult run(const std::vector<ScheduledStep>& steps, std::size_t plan_steps, const ExecutionStart& start);
 
   // Step-wise use: load a schedule, then step until done() or a violation.
   void load(const std::vector<ScheduledStep>& steps);
+  void load(const std::vector<ScheduledStep>& steps, const ExecutionStart& start);
   bool done() const { return next_ >= happenings_.size(); }
   std::optional<Violation> step();
   double time() const { return time_; }
@@ -62,6 +76,7 @@ class HappeningExecutor {
     std::vector<std::pair<NumericVarId, pddl::AssignOperator>> writes;
   };
 
+  ValidationResult finish_run(std::size_t plan_steps);
   std::optional<Violation> check_conditions(const Event& e);
   std::optional<Violation> check_mutex(const std::vector<Event>& events);
   std::optional<Violation> apply(const std::vector<Event>& events);

@@ -42,6 +42,8 @@ class Instantiator {
                GroundKeyTable& numeric, InstantiationOptions options);
 
   GroundAction action(std::uint32_t schema, const std::vector<ObjectId>& args);
+  // The goal is instantiated once, so it always says why it cannot hold.
+  void set_explain(bool on) { options_.explain = on; }
   ConditionSet condition(const LiftedCondition& condition, std::vector<ObjectId>& binding);
   GroundFormula formula(const LiftedCondition& condition, std::vector<ObjectId>& binding);
   GroundExpression expression(const LiftedExpression& expression, const std::vector<ObjectId>& binding);

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "planner/evaluation.h"
+#include "planner/happening_executor.h"
 #include "planner/search_engine.h"
 #include "planner/task_index.h"
 
@@ -92,6 +93,50 @@ bool deadlines_possible(const GroundTask& task) {
   return false;
 }
 
+bool is_initial(const GroundTask& task, const PlanningStart& start) {
+  return start.now == 0.0 && start.running.empty() && start.next_timed_literal == 0 && start.facts == task.initial_facts &&
+         start.values == task.initial_values;
+}
+
+// Validation of a plan made from an observed state: the executor runs the
+// plan as printed (times read back from the text) from that state, with the
+// running actions' ends where the schedule put them.
+ValidationResult validate_from(const GroundTask& task, const PlanningStart& start, const Solution& solution,
+                               const std::vector<ActionId>& actions, const std::string& text, double epsilon) {
+  const PlanReadResult printed = read_plan(text, "planner output");
+  std::vector<ScheduledStep> steps;
+  for (std::size_t i = 0; i < printed.plan.steps.size(); ++i) {
+    const PlanStep& p = printed.plan.steps[i];
+    ScheduledStep s;
+    s.action = actions[i];
+    s.step = i;
+    s.line = p.line;
+    s.start = p.time.value_or(start.now);
+    s.duration = p.duration.value_or(0.0);
+    s.name = task.action_name(task.actions[s.action]);
+    steps.push_back(s);
+  }
+  for (std::size_t e = 0; e < solution.steps.size(); ++e) {
+    const StepRecord& r = solution.steps[e];
+    if (r.snap.kind != SnapKind::End || r.start_step != kNoId) continue;
+    ScheduledStep s;
+    s.action = r.snap.index;
+    s.step = steps.size();
+    s.started_before = true;
+    s.start = start.now;
+    s.duration = solution.times[e] - start.now;
+    s.name = task.action_name(task.actions[s.action]);
+    steps.push_back(s);
+  }
+  ExecutionStart from;
+  for (FactId f : start.facts) from.state.set_fact(f, true);
+  for (NumericVarId v = 0; v < start.values.size(); ++v) from.state.set_value(v, start.values[v]);
+  from.first_timed_literal = start.next_timed_literal;
+  from.now = start.now;
+  HappeningExecutor executor(task, ValidatorOptions{epsilon, false});
+  return executor.run(steps, printed.plan.steps.size(), from);
+}
+
 }  // namespace
 
 PlanningStart initial_start(const GroundTask& task) {
@@ -101,7 +146,7 @@ PlanningStart initial_start(const GroundTask& task) {
   return start;
 }
 
-Plan to_plan(const GroundTask& task, const Solution& solution) {
+Plan to_plan(const GroundTask& task, const Solution& solution, std::vector<ActionId>* actions) {
   Plan plan;
   std::vector<std::pair<double, std::size_t>> order;
   for (std::size_t s = 0; s < solution.steps.size(); ++s) {
@@ -124,6 +169,7 @@ Plan to_plan(const GroundTask& task, const Solution& solution) {
       }
     }
     plan.steps.push_back(std::move(step));
+    if (actions) actions->push_back(solution.steps[s].snap.index);
   }
   return plan;
 }
@@ -154,15 +200,23 @@ PlannerResult Planner::plan_from(const PlanningStart& start, const std::function
     result.message = "unknown heuristic '" + options_.heuristic + "' (expected trpg or trpg-nohelpful)";
     return result;
   }
+  if (task_->goal.never) {
+    result.status = PlannerResult::Status::Unsolvable;
+    result.message = "no plan exists: the goal can never hold (" + *task_->goal.never + ")";
+    return result;
+  }
   SearchStart search_start;
   search_start.state = SearchState(task_->facts.size(), start.values);
   for (FactId f : start.facts) search_start.state.set_fact(f, true);
   search_start.state.set_next_timed_literal(start.next_timed_literal);
+  search_start.release = start.now;
+  if (options_.reserve_planning_time && std::isfinite(options_.time_limit)) search_start.release += options_.time_limit;
   for (const RunningAction& r : start.running) search_start.state.start(r);
   derive(*task_, search_start.state);
 
   TemporalRpg heuristic(index, {options_.heuristic == "trpg"});
   PlanValidator validator(task_->lifted, {options_.epsilon, false});
+  const bool from_initial = is_initial(*task_, start);
   const bool can_prune = !task_->metric || (task_->metric->minimize && monotone(*task_, task_->metric->expression));
   result.times.setup = since(began);
 
@@ -235,11 +289,14 @@ PlannerResult Planner::plan_from(const PlanningStart& start, const std::function
     }
     const Clock::time_point validation_began = Clock::now();
     FoundPlan found;
-    found.plan = to_plan(*task_, *engine->solution());
+    std::vector<ActionId> actions;
+    found.plan = to_plan(*task_, *engine->solution(), &actions);
     found.text = plan_text(found.plan);
     found.engine = engine->name();
     found.seconds = since(search_began);
-    found.validation = validator.validate(read_plan(found.text, "planner output").plan);
+    found.validation = from_initial ? validator.validate(read_plan(found.text, "planner output").plan)
+                                    : validate_from(*task_, start, *engine->solution(), actions, found.text,
+                                                    options_.epsilon);
     result.times.validation += since(validation_began);
     if (!found.validation.valid) {
       result.status = PlannerResult::Status::InternalError;

@@ -32,6 +32,10 @@ struct PlannerOptions {
   std::size_t node_limit = std::numeric_limits<std::size_t>::max();
   bool anytime = false;            // keep improving after the first plan
   double epsilon = 0.001;          // separation of dependent happenings
+  // Planning takes time the world does not stop for: with this set, no step
+  // starts before now + time_limit, so deadlines (timed literals) shrink by
+  // the budget and the plan is still executable when it arrives.
+  bool reserve_planning_time = false;
 };
 
 struct FoundPlan {
@@ -61,13 +65,18 @@ struct PlannerResult {
   const FoundPlan* best() const { return plans.empty() ? nullptr : &plans.back(); }
 };
 
-// Where to plan from: the task's initial state, or an observed state with
-// actions still running (issue 5's monitor passes these).
+// Where to plan from: the task's initial state, or a state observed at time
+// `now` with actions still running (the monitor passes these). Time stays
+// the task's time: new steps come at or after `now`, timed literals from
+// `next_timed_literal` on keep their times (earlier ones are past), and a
+// running action (start_step kNoId) ends within [min_duration,
+// max_duration] of time 0 — that is, the bounds are absolute end times.
 struct PlanningStart {
+  double now = 0.0;
   std::vector<FactId> facts;
   std::vector<double> values;
   std::uint32_t next_timed_literal = 0;
-  std::vector<RunningAction> running;  // start_step kNoId, durations counted from now
+  std::vector<RunningAction> running;
 };
 
 PlanningStart initial_start(const GroundTask& task);
@@ -87,6 +96,7 @@ class Planner {
 
 // The plan of a solution: one step per instantaneous action and per
 // durative action (at its start, with the duration its end gives).
-Plan to_plan(const GroundTask& task, const Solution& solution);
+// `actions`, when given, receives the ground action of each plan step.
+Plan to_plan(const GroundTask& task, const Solution& solution, std::vector<ActionId>* actions = nullptr);
 
 }  // namespace alplan

@@ -1,0 +1,1 @@
+(define (problem fill-tank) (:domain tank) (:init (open) (= (level) 0)) (:goal (>= (level) 4)))

@@ -1,0 +1,257 @@
+#include "planner/planner.h"
+
+#include <catch2/catch.hpp>
+
+#include <thread>
+
+#include "planner/grounder.h"
+#include "tests/support/task_loader.h"
+#include "tests/support/test_paths.h"
+
+using namespace alplan;
+using Status = PlannerResult::Status;
+
+namespace {
+
+std::shared_ptr<const GroundTask> ground_text(const std::string& domain, const std::string& problem) {
+  return ground(test::load_task_text(domain, problem).normalized);
+}
+
+PlannerResult solve(const std::shared_ptr<const GroundTask>& task, PlannerOptions options = {}) {
+  options.time_limit = 20.0;
+  return Planner(task, options).plan();
+}
+
+// Required concurrency (match-cellar): the fuse can be mended only while a
+// match burns.
+const char* kMatch = R"(
+(define (domain match) (:requirements :typing :durative-actions)
+  (:types match fuse)
+  (:predicates (unused ?m - match) (light) (handfree) (mended ?f - fuse))
+  (:durative-action light-match :parameters (?m - match) :duration (= ?duration 8)
+    :condition (at start (unused ?m))
+    :effect (and (at start (not (unused ?m))) (at start (light)) (at end (not (light)))))
+  (:durative-action mend-fuse :parameters (?f - fuse) :duration (= ?duration 5)
+    :condition (and (at start (handfree)) (over all (light)))
+    :effect (and (at start (not (handfree))) (at end (handfree)) (at end (mended ?f)))))
+)";
+const char* kMatchProblem = R"(
+(define (problem p) (:domain match) (:objects m1 m2 - match f1 f2 - fuse)
+  (:init (unused m1) (unused m2) (handfree)) (:goal (and (mended f1) (mended f2))) (:metric minimize (total-time)))
+)";
+
+// A deadline given by a timed initial literal: the door closes at 10, so
+// only the fast route delivers in time.
+const char* kDeadline = R"(
+(define (domain deadline) (:requirements :durative-actions :timed-initial-literals)
+  (:predicates (open) (parcel-in) (delivered))
+  (:durative-action slow-deliver :parameters () :duration (= ?duration 12)
+    :condition (and (at start (parcel-in)) (over all (open)))
+    :effect (and (at end (delivered)) (at start (not (parcel-in)))))
+  (:durative-action prepare :parameters () :duration (= ?duration 3)
+    :condition (at start (parcel-in)) :effect (at end (parcel-in))))
+)";
+const char* kDeadlineFast = R"(
+(define (domain deadline) (:requirements :durative-actions :timed-initial-literals)
+  (:predicates (open) (parcel-in) (delivered))
+  (:durative-action slow-deliver :parameters () :duration (= ?duration 12)
+    :condition (and (at start (parcel-in)) (over all (open)))
+    :effect (and (at end (delivered)) (at start (not (parcel-in)))))
+  (:durative-action fast-deliver :parameters () :duration (= ?duration 4)
+    :condition (and (at start (parcel-in)) (over all (open)))
+    :effect (and (at end (delivered)) (at start (not (parcel-in))))))
+)";
+const char* kDeadlineProblem = R"(
+(define (problem p) (:domain deadline) (:init (parcel-in) (open) (at 10 (not (open)))) (:goal (delivered)))
+)";
+
+// Numeric fluents, negative preconditions, conditional effects and a
+// derived predicate together.
+const char* kMixed = R"(
+(define (domain mixed) (:requirements :typing :durative-actions :fluents :negative-preconditions
+                                      :conditional-effects :derived-predicates)
+  (:types place)
+  (:predicates (at ?p - place) (road ?a ?b - place) (visited ?p - place) (broken) (explored) (home ?p - place))
+  (:functions (fuel) (cost))
+  (:derived (explored) (forall (?p - place) (visited ?p)))
+  (:durative-action drive :parameters (?a ?b - place) :duration (= ?duration 2)
+    :condition (and (at start (at ?a)) (at start (road ?a ?b)) (at start (>= (fuel) 1)) (over all (not (broken))))
+    :effect (and (at start (not (at ?a))) (at end (at ?b)) (at end (visited ?b)) (at start (decrease (fuel) 1))
+                 (at end (increase (cost) 1))))
+  (:action refuel :parameters (?p - place)
+    :precondition (and (at ?p) (home ?p) (< (fuel) 2))
+    :effect (and (assign (fuel) 4) (when (not (visited ?p)) (visited ?p)))))
+)";
+const char* kMixedProblem = R"(
+(define (problem p) (:domain mixed) (:objects a b c d - place)
+  (:init (at a) (home a) (road a b) (road b a) (road a c) (road c a) (road c d) (road d c) (= (fuel) 2) (= (cost) 0))
+  (:goal (and (explored) (at a))) (:metric minimize (cost)))
+)";
+
+}  // namespace
+
+TEST_CASE("required concurrency: the mend happens while a match burns") {
+  auto task = ground_text(kMatch, kMatchProblem);
+  PlannerResult result = solve(task);
+  REQUIRE(result.status == Status::Solved);
+  const FoundPlan& best = *result.best();
+  CHECK(best.validation.valid);
+  CHECK(best.plan.steps.size() == 4);
+  // Both fuses in one match: 8 time units would do; two matches in a row do too.
+  CHECK(best.validation.makespan <= 16.01);
+}
+
+TEST_CASE("a deadline set by a timed initial literal is honoured") {
+  SECTION("the fast route is chosen") {
+    auto task = ground_text(kDeadlineFast, kDeadlineProblem);
+    PlannerResult result = solve(task);
+    REQUIRE(result.status == Status::Solved);
+    REQUIRE(result.best()->plan.steps.size() == 1);
+    CHECK(result.best()->plan.steps[0].action == "fast-deliver");
+  }
+  SECTION("with only the slow route there is no plan, and that is not claimed as proven by exhaustion") {
+    auto task = ground_text(kDeadline, kDeadlineProblem);
+    PlannerResult result = solve(task);
+    CHECK(result.plans.empty());
+    CHECK((result.status == Status::Unsolvable || result.status == Status::Exhausted));
+    if (result.status == Status::Unsolvable) CHECK(result.message.find("relaxation") != std::string::npos);
+  }
+}
+
+TEST_CASE("numeric fluents, negative preconditions, conditional effects and derived predicates") {
+  auto task = ground_text(kMixed, kMixedProblem);
+  for (const std::string search : {"ehc", "gbfs", "wastar"}) {
+    PlannerOptions options;
+    options.search = search;
+    PlannerResult result = solve(task, options);
+    INFO(search << ": " << result.message);
+    REQUIRE(result.status == Status::Solved);
+    CHECK(result.best()->validation.valid);
+    // b, c, d and back: a refuel is needed on the way.
+    bool refuels = false;
+    for (const PlanStep& s : result.best()->plan.steps) refuels = refuels || s.action == "refuel";
+    CHECK(refuels);
+  }
+}
+
+TEST_CASE("an unreachable goal is proven unsolvable") {
+  auto task = ground_text(kMixed, R"(
+(define (problem p) (:domain mixed) (:objects a b island - place)
+  (:init (at a) (home a) (road a b) (road b a) (= (fuel) 2) (= (cost) 0)) (:goal (at island)))
+)");
+  PlannerResult result = solve(task);
+  CHECK(result.status == Status::Unsolvable);
+  CHECK(result.message.find("(at island)") != std::string::npos);
+}
+
+TEST_CASE("a goal whose only achiever can never start is proven unsolvable") {
+  auto task = ground_text(kMatch, R"(
+(define (problem p) (:domain match) (:objects m1 - match f1 f2 - fuse)
+  (:init (unused m1)) (:goal (and (mended f1) (mended f2))))
+)");
+  PlannerResult result = solve(task);
+  CHECK(result.status == Status::Unsolvable);
+  CHECK(result.message.find("no plan exists") == 0);
+}
+
+TEST_CASE("continuous effects are rejected with the construct and its position") {
+  auto task = ground_text(R"(
+(define (domain tank) (:requirements :durative-actions :fluents :continuous-effects)
+  (:predicates (open))
+  (:functions (level))
+  (:durative-action fill :parameters () :duration (= ?duration 5)
+    :condition (at start (open))
+    :effect (increase (level) (* #t 2))))
+)", R"((define (problem p) (:domain tank) (:init (open) (= (level) 0)) (:goal (>= (level) 4))))");
+  PlannerResult result = solve(task);
+  CHECK(result.status == Status::Unsupported);
+  CHECK(result.message.find("#t") != std::string::npos);
+  CHECK(result.message.find(":") != std::string::npos);
+}
+
+TEST_CASE("anytime search returns ever better plans under a monotone metric") {
+  auto task = ground_text(kMixed, kMixedProblem);
+  PlannerOptions options;
+  options.anytime = true;
+  options.time_limit = 10.0;
+  std::vector<double> streamed;
+  PlannerResult result = Planner(task, options).plan([&](const FoundPlan& p) { streamed.push_back(p.validation.value); });
+  REQUIRE(result.status == Status::Solved);
+  REQUIRE(streamed.size() == result.plans.size());
+  for (std::size_t i = 1; i < streamed.size(); ++i) CHECK(streamed[i] < streamed[i - 1]);
+  // a->b->a->(refuel)->c->d->c->a: six drives is optimal.
+  CHECK(result.best()->validation.value == Approx(6.0));
+}
+
+TEST_CASE("two planners run at once in two threads and agree with a sequential run") {
+  auto match = ground_text(kMatch, kMatchProblem);
+  auto mixed = ground_text(kMixed, kMixedProblem);
+  const std::string match_plan = solve(match).best()->text;
+  const std::string mixed_plan = solve(mixed).best()->text;
+  std::string a, b;
+  std::thread first([&] { a = solve(match).best()->text; });
+  std::thread second([&] { b = solve(mixed).best()->text; });
+  first.join();
+  second.join();
+  CHECK(a == match_plan);
+  CHECK(b == mixed_plan);
+}
+
+TEST_CASE("planning from an observed state with an action still running") {
+  auto task = ground_text(kMixed, kMixedProblem);
+  // At time 1, the drive a->c started at 0 is still running (it ends at 2);
+  // the car is on the road, so no (at ?p) holds.
+  PlanningStart start;
+  start.now = 1.0;
+  start.values = task->initial_values;
+  // Roads and home are static; of the fluents, nothing holds while driving.
+  start.facts = {};
+  ActionId drive = 0;
+  for (ActionId a = 0; a < task->actions.size(); ++a) {
+    if (task->action_name(task->actions[a]) == "(drive a c)") drive = a;
+  }
+  RunningAction running;
+  running.action = drive;
+  running.min_duration = running.max_duration = 2.0;  // ends at time 2
+  start.running.push_back(running);
+  PlannerOptions options;
+  options.time_limit = 20.0;
+  PlannerResult result = Planner(task, options).plan_from(start);
+  INFO(result.message);
+  REQUIRE(result.status == Status::Solved);
+  const FoundPlan& best = *result.best();
+  CHECK(best.validation.valid);
+  for (const PlanStep& s : best.plan.steps) CHECK(*s.time >= 2.0);  // nothing can move before the car arrives
+  // The plan alone is not valid from the task's initial state: it relies on
+  // the running drive.
+  CHECK(best.plan.steps.front().args.front() != "a");
+}
+
+TEST_CASE("with the planning time reserved, nothing starts before the budget has passed") {
+  auto task = ground_text(kDeadlineFast, kDeadlineProblem);
+  PlannerOptions options;
+  options.time_limit = 5.0;
+  options.reserve_planning_time = true;
+  PlannerResult result = Planner(task, options).plan();
+  REQUIRE(result.status == Status::Solved);
+  CHECK(*result.best()->plan.steps[0].time >= 5.0);
+  options.time_limit = 7.0;  // 7 + 4 > 10: the door would be closed
+  CHECK(Planner(task, options).plan().status != Status::Solved);
+}
+
+TEST_CASE("IPC problems with deadlines and required concurrency are solved with valid plans") {
+  const std::string base = test::shared_dir() + "/benchmarks/ipc/";
+  struct Case { std::string domain, problem; };
+  const std::vector<Case> cases = {
+      {"ipc-2011/match-cellar-temporal-satisficing/domain.pddl", "ipc-2011/match-cellar-temporal-satisficing/instances/instance-1.pddl"},
+      {"ipc-2004/satellite-time-time-windows-strips/domain.pddl", "ipc-2004/satellite-time-time-windows-strips/instances/instance-1.pddl"},
+  };
+  for (const Case& c : cases) {
+    INFO(c.problem);
+    auto loaded = test::load_task(base + c.domain, base + c.problem);
+    auto task = ground(loaded.normalized);
+    PlannerResult result = solve(task);
+    REQUIRE(result.status == Status::Solved);
+    CHECK(result.best()->validation.valid);
+  }
+}
