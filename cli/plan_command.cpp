@@ -7,6 +7,7 @@
 #include <sys/resource.h>
 
 #include <chrono>
+#include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -28,6 +29,7 @@ struct PlanOptions {
   double memory_limit = 0.0;
   bool anytime = false;
   bool reserve_planning_time = false;
+  double epsilon = 0.001;
   std::string search = "ehc";
   std::string heuristic = "trpg";
   double weight = 3.0;
@@ -64,6 +66,14 @@ const char* status_name(PlannerResult::Status s) {
   return "?";
 }
 
+// Ten significant digits: enough for times on the 0.001 grid, without the
+// binary noise of a sum (15.001000000000001).
+std::string readable(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.10g", x);
+  return buffer;
+}
+
 int exit_code(PlannerResult::Status s) {
   switch (s) {
     case PlannerResult::Status::Solved: return kExitOk;
@@ -98,13 +108,13 @@ int run(const PlanOptions& options) {
   planner_options.heuristic = options.heuristic;
   planner_options.weight = options.weight;
   planner_options.anytime = options.anytime;
+  planner_options.epsilon = options.epsilon;
   planner_options.reserve_planning_time = options.reserve_planning_time;
   planner_options.time_limit = std::max(0.0, options.time_limit - grounding);
   auto on_plan = [&](const FoundPlan& p) {
     if (options.json) return;
-    std::cout << "; plan found after " << pddl::format_number(p.seconds) << " s by " << p.engine
-              << ", makespan " << pddl::format_number(p.validation.makespan) << ", value "
-              << pddl::format_number(p.validation.value) << "\n"
+    std::cout << "; plan found after " << readable(p.seconds) << " s by " << p.engine << ", makespan "
+              << readable(p.validation.makespan) << ", value " << readable(p.validation.value) << "\n"
               << p.text << std::flush;
   };
   PlannerResult result;
@@ -135,7 +145,7 @@ int run(const PlanOptions& options) {
     if (result.status != PlannerResult::Status::Solved) std::cout << "; " << result.message << "\n";
     std::cout << "; status: " << status_name(result.status) << "; expanded " << result.statistics.expanded
               << ", evaluated " << result.statistics.evaluated << ", grounding "
-              << pddl::format_number(grounding) << " s, search " << pddl::format_number(result.times.search)
+              << readable(grounding) << " s, search " << readable(result.times.search)
               << " s\n";
   }
   if (result.status == PlannerResult::Status::InternalError || result.status == PlannerResult::Status::Unsupported) {
@@ -154,6 +164,8 @@ void add_plan_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--time-limit", options->time_limit, "Seconds for grounding and search")->check(CLI::NonNegativeNumber);
   cmd->add_option("--memory-limit", options->memory_limit, "MiB of address space")->check(CLI::NonNegativeNumber);
   cmd->add_flag("--anytime", options->anytime, "Keep improving the plan until the time limit");
+  cmd->add_option("--epsilon", options->epsilon, "Separation of dependent happenings (OPTIC's 0.001 by default)")
+      ->check(CLI::PositiveNumber);
   cmd->add_flag("--reserve-planning-time", options->reserve_planning_time,
                 "Start no step before the time limit has passed (deadlines shrink by the planning budget)");
   cmd->add_option("--search", options->search, "ehc (falls back to gbfs), gbfs or wastar")

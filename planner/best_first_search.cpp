@@ -49,6 +49,7 @@ class BestFirstSearch : public SearchEngine {
       if (options_.prune && options_.prune(child.node)) continue;
       const bool preferred = std::find(helpful.begin(), helpful.end(), child.node.step.snap) != helpful.end();
       if (!space_.evaluate(child, heuristic_, stats_)) continue;
+      if (options_.prune && options_.prune(child.node)) continue;
       PartialPlan child_plan = child.plan;
       std::optional<NodeId> stored = space_.insert(std::move(child), stats_);
       if (!stored) continue;

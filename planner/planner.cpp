@@ -243,7 +243,7 @@ PlannerResult Planner::plan_from(const PlanningStart& start, const std::function
       bfs.prune = [&, this](const SearchNode& node) {
         if (!task_->metric) return static_cast<double>(node.depth) >= best_value;
         EvaluationContext context;
-        context.total_time = node.makespan;
+        context.total_time = std::max(node.makespan, node.makespan_bound);
         try {
           return evaluate(task_->metric->expression, node.state, context) >= best_value - 1e-9;
         } catch (const EvaluationError&) {

@@ -79,6 +79,9 @@ bool SearchSpace::evaluate(Child& child, TemporalRpg& heuristic, SearchStatistic
   HeuristicValue value = heuristic.evaluate(child.node.state, child.plan);
   child.node.h = value.h;
   child.node.helpful = std::move(value.helpful);
+  // The relaxed graph may separate happenings by epsilon where a real plan
+  // need not; the bound gives that back.
+  child.node.makespan_bound = std::max(child.node.makespan, value.relaxed_makespan - epsilon_);
   if (value.dead_end()) ++stats.dead_ends;
   return !value.dead_end();
 }

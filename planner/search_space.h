@@ -38,6 +38,10 @@ struct SearchNode {
   double h = std::numeric_limits<double>::infinity();
   std::uint32_t depth = 0;
   double makespan = 0.0;
+  // A lower bound on the makespan of any plan through this node: its own
+  // makespan, or when the goals are reached in the relaxation (known once
+  // evaluated). Anytime search prunes on it.
+  double makespan_bound = 0.0;
   TemporalSignature signature;
   std::vector<Snap> helpful;
 };

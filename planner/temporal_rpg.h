@@ -52,7 +52,11 @@ class TemporalRpg {
   struct Event {
     double time;
     FactId fact;
-    bool operator>(const Event& other) const { return time > other.time; }
+    // Ties go to the lower fact id, so that equal alternatives are chosen in
+    // the order the task declares them, whatever the heap does.
+    bool operator>(const Event& other) const {
+      return time > other.time || (time == other.time && fact > other.fact);
+    }
   };
   enum class AchieverKind : unsigned char { None, State, Start, End, Instant, TimedLiteral, Axiom };
   struct Achiever {

@@ -1,0 +1,118 @@
+; The assisted-living domain of "A deliberative ambient-intelligence system
+; for comforting stressed seniors" (the paper in shared/seed), rebuilt from
+; its Fig. 2 heads and its text. Types, predicates and action heads are the
+; paper's; conditions, effects, durations and costs are ours, chosen so that
+; the plans of Figs. 6-11 come out action for action and time for time.
+;
+; - A robot comforts a stressed senior: water (a filled drinking vessel) for
+;   a terrified one, a music instrument for a sad one, something to solve or
+;   read for a bored one, or, as a last resort, a suggestion to use a TV or a
+;   desktop. Suggesting costs (total-cost), so the metric prefers giving.
+; - Objects must be (available ...) when the robot takes them: IoT objects
+;   report it, and the monitor sees it change.
+; - A terrified senior must be soothed while (hydration_time ?s) holds: the
+;   problem ends that window with a timed initial literal.
+(define (domain assisted_living)
+  (:requirements :typing :durative-actions :fluents :timed-initial-literals :action-costs)
+  (:types
+    robot senior location drinking_vessel making_music - object
+    entertainment - object
+    solving reading communication_device - entertainment
+    drinking_glass glass_bottle - drinking_vessel
+    violin guitar - making_music
+    puzzle yoyo - solving
+    magazine book - reading
+    tv desktop - communication_device
+    dinning_room kitchen music_room library bedroom - location
+    corridor sunroom - location)
+
+  (:predicates
+    (be ?locatable - (either robot senior drinking_vessel making_music entertainment) ?loc - location)
+    (path ?loc1 - location ?loc2 - location)
+    (hydration_time ?senior - senior)
+    (terrified ?senior - senior)
+    (sad ?senior - senior)
+    (bored ?senior - senior)
+    (soothed ?senior - senior)
+    (cheerful ?senior - senior)
+    (entertained ?senior - senior)
+    (available ?object - (either drinking_vessel making_music entertainment))
+    (filled ?item - drinking_vessel)
+    (holding ?robot - robot ?item - (either drinking_vessel making_music solving reading))
+    (given ?item - (either drinking_vessel making_music solving reading) ?senior - senior)
+    (suggested ?item - (either tv desktop) ?senior - senior))
+
+  (:functions
+    (moving_time ?loc1 - location ?loc2 - location) - number
+    (handling_time) - number      ; carry, fill, give
+    (receiving_time) - number     ; the senior takes what is given
+    (suggesting_time) - number
+    (suggestion_cost) - number
+    (total-cost) - number)
+
+  ;; movement of robot between two connected locations
+  (:durative-action move
+    :parameters (?robot - robot ?loc1 - location ?loc2 - location)
+    :duration (= ?duration (moving_time ?loc1 ?loc2))
+    :condition (and (at start (be ?robot ?loc1)) (over all (path ?loc1 ?loc2)))
+    :effect (and (at start (not (be ?robot ?loc1))) (at end (be ?robot ?loc2))))
+
+  ;; the robot carries an item from a location
+  (:durative-action carry
+    :parameters (?robot - robot ?item - (either drinking_vessel making_music solving reading) ?location - location)
+    :duration (= ?duration (handling_time))
+    :condition (and (at start (be ?item ?location)) (at start (available ?item)) (over all (be ?robot ?location)))
+    :effect (and (at start (not (be ?item ?location))) (at end (holding ?robot ?item))))
+
+  ;; the robot fills up a drinking vessel in the kitchen
+  (:durative-action fill
+    :parameters (?robot - robot ?item - drinking_vessel ?location - kitchen)
+    :duration (= ?duration (handling_time))
+    :condition (and (at start (holding ?robot ?item)) (over all (be ?robot ?location)))
+    :effect (at end (filled ?item)))
+
+  ;; the robot gives a senior an item
+  (:durative-action give
+    :parameters (?robot - robot ?senior - senior ?item - (either drinking_vessel making_music solving reading)
+                 ?location - location)
+    :duration (= ?duration (handling_time))
+    :condition (and (at start (holding ?robot ?item)) (over all (be ?robot ?location))
+                    (over all (be ?senior ?location)))
+    :effect (and (at start (not (holding ?robot ?item))) (at end (given ?item ?senior))))
+
+  ;; senior received soothing for fear state: water, in time
+  (:durative-action soothed_received
+    :parameters (?senior - senior ?item - drinking_vessel)
+    :duration (= ?duration (receiving_time))
+    :condition (and (at start (given ?item ?senior)) (at start (filled ?item)) (at start (terrified ?senior))
+                    (over all (hydration_time ?senior)))
+    :effect (and (at end (not (terrified ?senior))) (at end (soothed ?senior))))
+
+  ;; the senior received the cheering up to soothe sadness
+  (:durative-action cheer_received
+    :parameters (?senior - senior ?item - making_music)
+    :duration (= ?duration (receiving_time))
+    :condition (and (at start (given ?item ?senior)) (at start (sad ?senior)))
+    :effect (and (at end (not (sad ?senior))) (at end (cheerful ?senior))))
+
+  ;; the senior received the entertainment to soothe boredom
+  (:durative-action entertainment1_received
+    :parameters (?senior - senior ?item - (either solving reading))
+    :duration (= ?duration (receiving_time))
+    :condition (and (at start (given ?item ?senior)) (at start (bored ?senior)))
+    :effect (and (at end (not (bored ?senior))) (at end (entertained ?senior))))
+
+  ;; the robot suggests a different course of entertainment, where the senior is
+  (:durative-action suggest_entertainment2
+    :parameters (?robot - robot ?senior - senior ?item - (either tv desktop) ?location - location)
+    :duration (= ?duration (suggesting_time))
+    :condition (and (at start (available ?item)) (over all (be ?robot ?location)) (over all (be ?senior ?location)))
+    :effect (and (at end (suggested ?item ?senior)) (at end (increase (total-cost) (suggestion_cost)))))
+
+  ;; the senior has received the entertainment suggestion
+  (:durative-action entertainment2_suggested
+    :parameters (?senior - senior ?item - (either tv desktop))
+    :duration (= ?duration (receiving_time))
+    :condition (and (at start (suggested ?item ?senior)) (at start (bored ?senior)))
+    :effect (and (at end (not (bored ?senior))) (at end (entertained ?senior))))
+)
