@@ -6,6 +6,7 @@
 #include "pddl_parser/writer.h"
 #include "planner/evaluation.h"
 #include "planner/ground_printer.h"
+#include "planner/happening_effects.h"
 
 namespace alplan {
 namespace {
@@ -43,18 +44,6 @@ void collect_reads(const ConditionSet& c, std::set<FactId>& facts, std::set<Nume
 
 bool additive(pddl::AssignOperator op) {
   return op == pddl::AssignOperator::Increase || op == pddl::AssignOperator::Decrease;
-}
-
-double updated(double current, pddl::AssignOperator op, double value) {
-  if (std::isnan(current)) current = 0.0;  // VAL starts an undefined fluent at 0
-  switch (op) {
-    case pddl::AssignOperator::Assign: return value;
-    case pddl::AssignOperator::Increase: return current + value;
-    case pddl::AssignOperator::Decrease: return current - value;
-    case pddl::AssignOperator::ScaleUp: return current * value;
-    case pddl::AssignOperator::ScaleDown: return current / value;
-  }
-  return value;
 }
 
 }  // namespace
@@ -284,7 +273,7 @@ std::optional<Violation> HappeningExecutor::apply(const std::vector<Event>& even
   }
   for (FactId f : dels) state_.set_fact(f, false);
   for (FactId f : adds) state_.set_fact(f, true);
-  for (const Update& u : updates) state_.set_value(u.variable, updated(state_.value(u.variable), u.assign, u.value));
+  for (const Update& u : updates) state_.set_value(u.variable, updated_value(state_.value(u.variable), u.assign, u.value));
   derive(task_, state_);
   return std::nullopt;
 }

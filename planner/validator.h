@@ -54,6 +54,9 @@ class PlanValidator {
   ValidationResult validate(const Plan& plan);
   // The task as the validator grounds it (open: it grows with the plans).
   const GroundTask& world() const { return *world_; }
+  // A snapshot of it, with every static condition kept (the planner's task
+  // drops them; a monitor must see them, since the world can change them).
+  std::shared_ptr<const GroundTask> world_snapshot() const { return std::make_shared<const GroundTask>(*world_); }
 
  private:
   // The ground action of a step, instantiated once and cached.

@@ -1,0 +1,78 @@
+// The execution monitor (the paper's Section 6.3, and its Discussion's
+// proactive look-ahead): it executes a plan against a World, advancing time
+// from happening to happening and by a step size between them; at every
+// observation it checks the timeline against the observed state, and on a
+// violated condition it stops and hands the failure record (the validator's
+// Violation) to a repair strategy, then carries on with the repaired plan.
+// Every run ends with the goal reached or with an explained failure.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "pddl_parser/ast.h"
+#include "repair/executing_plan.h"
+#include "repair/explanation.h"
+#include "repair/repair_strategy.h"
+#include "repair/world.h"
+
+namespace alplan::repair {
+
+struct MonitorOptions {
+  double step_size = 5.0;  // observations between happenings
+  bool lookahead = true;   // report a failure as soon as it is certain
+  int max_repairs = 5;
+};
+
+// What the deliberation is about: the domain (with the ontology's types),
+// what the problem knows, and why the goal matters.
+struct Mission {
+  const pddl::Domain* domain = nullptr;
+  pddl::Problem problem;
+  std::string motivation;   // "senior1 is terrified"
+  std::string robot = "robot1";
+};
+
+struct RepairRecord {
+  Violation failure;
+  bool foreseen = false;  // found by looking ahead
+  std::string strategy;
+  bool repaired = false;
+  double seconds = 0.0;
+  int planner_calls = 0;
+  std::string plan_text;  // the new plan, IPC format
+  std::size_t plan_distance = 0;  // actions removed plus added (Fox et al. 2006)
+  std::vector<RecognizedObject> integrated;
+  Explanation explanation;
+};
+
+struct ExecutionReport {
+  std::string initial_plan_text;
+  std::vector<RepairRecord> repairs;
+  bool goal_reached = false;
+  double end_time = 0.0;
+  std::string outcome;  // one sentence
+  std::vector<std::string> events;  // what happened, in order, for people
+
+  nlohmann::json json() const;
+};
+
+class Monitor {
+ public:
+  explicit Monitor(MonitorOptions options) : options_(options) {}
+
+  ExecutionReport run(const Mission& mission, ExecutingPlan plan, World& world, RepairStrategy& strategy,
+                      ObjectRecognizer* recognizer, const TypeOntology* ontology) const;
+
+ private:
+  MonitorOptions options_;
+};
+
+// Actions of `before` from `from` on that `after` lacks, plus the reverse,
+// counted as multisets of ground actions.
+std::size_t plan_distance(const ExecutingPlan& before, const ExecutingPlan& after, double from);
+
+}  // namespace alplan::repair

@@ -1,0 +1,106 @@
+#include "repair/reformulation.h"
+
+#include <chrono>
+#include <set>
+
+#include "planner/grounder.h"
+
+namespace alplan::repair {
+namespace {
+
+pddl::Atom atom_of(const AtomKey& key) {
+  pddl::Atom atom;
+  atom.name = key.front();
+  for (std::size_t i = 1; i < key.size(); ++i) {
+    pddl::Term t;
+    t.name = key[i];
+    atom.args.push_back(t);
+  }
+  return atom;
+}
+
+}  // namespace
+
+std::optional<std::string> object_type(const pddl::Problem& problem, const std::string& object) {
+  for (const pddl::TypedName& o : problem.objects) {
+    if (o.name == object) return o.types.empty() ? std::string("object") : o.types.front();
+  }
+  return std::nullopt;
+}
+
+pddl::Problem reformulate(const pddl::Domain& domain, const pddl::Problem& base, const WorldState& observed,
+                          const std::vector<ActionInProgress>& in_progress, double now, double shift) {
+  pddl::Problem problem = base;
+  std::set<std::string> names;
+  for (const pddl::TypedName& o : base.objects) names.insert(o.name);
+  for (const pddl::TypedName& c : domain.constants) names.insert(c.name);
+  std::set<std::string> predicates, functions;
+  for (const pddl::PredicateDeclaration& p : domain.predicates) predicates.insert(p.name);
+  for (const pddl::FunctionDeclaration& f : domain.functions) functions.insert(f.name);
+  // Only what the problem can name: the world also holds atoms about objects
+  // perception has not recognised yet.
+  auto known = [&](const AtomKey& key, const std::set<std::string>& heads) {
+    if (!heads.count(key.front())) return false;
+    for (std::size_t i = 1; i < key.size(); ++i) {
+      if (!names.count(key[i])) return false;
+    }
+    return true;
+  };
+  problem.init.clear();
+  for (const AtomKey& a : observed.atoms) {
+    if (known(a, predicates)) problem.init.push_back(atom_of(a));
+  }
+  problem.numeric_init.clear();
+  for (const auto& [key, value] : observed.values) {
+    if (!known(key, functions)) continue;
+    pddl::NumericFact f;
+    f.function = atom_of(key);
+    f.value = value;
+    problem.numeric_init.push_back(f);
+  }
+  problem.timed_literals.clear();
+  for (const pddl::TimedInitialLiteral& til : base.timed_literals) {
+    if (til.time <= now) continue;  // already happened; the world shows it
+    pddl::TimedInitialLiteral shifted = til;
+    shifted.time -= shift;
+    problem.timed_literals.push_back(shifted);
+  }
+  for (const ActionInProgress& a : in_progress) {
+    const double at = std::max(a.expected_end, now) - shift;
+    for (const auto* list : {&a.dels, &a.adds}) {
+      for (const AtomKey& k : *list) {
+        if (!known(k, predicates)) continue;
+        pddl::TimedInitialLiteral til;
+        til.time = at;
+        til.positive = list == &a.adds;
+        til.atom = atom_of(k);
+        problem.timed_literals.push_back(til);
+      }
+    }
+  }
+  return problem;
+}
+
+PlanningOutcome plan_in_process(const pddl::Domain& domain, const pddl::Problem& problem, double now,
+                                const PlannerOptions& options) {
+  const auto began = std::chrono::steady_clock::now();
+  PlanningOutcome outcome;
+  std::shared_ptr<const GroundTask> task;
+  try {
+    task = ground(domain, problem);
+  } catch (const std::exception& error) {
+    outcome.status = PlannerResult::Status::Unsupported;
+    outcome.message = std::string("cannot ground the reformulated problem: ") + error.what();
+    return outcome;
+  }
+  PlanningStart start = initial_start(*task);
+  start.now = now;
+  PlannerResult result = Planner(task, options).plan_from(start);
+  outcome.status = result.status;
+  outcome.message = result.message;
+  if (const FoundPlan* best = result.best()) outcome.plan = bind_plan(task, best->plan, options.epsilon);
+  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+  return outcome;
+}
+
+}  // namespace alplan::repair

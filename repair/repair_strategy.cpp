@@ -1,0 +1,167 @@
+#include "repair/repair_strategy.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <stdexcept>
+
+#include "repair/reformulation.h"
+
+namespace alplan::repair {
+
+std::unique_ptr<RepairStrategy> make_patch_strategy(const StrategyOptions& options);
+
+namespace {
+
+double since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+std::string seconds_text(double t) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3f", t);
+  return buffer;
+}
+
+// The objects a plan's steps from `from` on name, in order of first use.
+std::vector<std::string> objects_used(const ExecutingPlan& plan, double from) {
+  std::vector<std::string> used;
+  for (const ScheduledAction& s : plan.steps) {
+    if (s.start + 1e-9 < from) continue;
+    for (ObjectId o : plan.task->actions[s.action].args) {
+      const std::string& name = plan.task->lifted->objects[o];
+      if (std::find(used.begin(), used.end(), name) == used.end()) used.push_back(name);
+    }
+  }
+  return used;
+}
+
+class ReplanStrategy : public RepairStrategy {
+ public:
+  explicit ReplanStrategy(StrategyOptions options) : options_(std::move(options)) {}
+  std::string name() const override { return "replan"; }
+  RepairResult repair(const RepairRequest& request) override {
+    RepairResult result = replan_from(request, *request.domain, *request.problem, options_.planner);
+    if (result.repaired) result.how = "replanned from the observed state: " + describe_remedy(*result.plan, request.now);
+    return result;
+  }
+
+ private:
+  StrategyOptions options_;
+};
+
+class SubstituteStrategy : public RepairStrategy {
+ public:
+  explicit SubstituteStrategy(StrategyOptions options) : options_(std::move(options)) {}
+  std::string name() const override { return "substitute"; }
+  RepairResult repair(const RepairRequest& request) override {
+    pddl::Problem problem = *request.problem;
+    std::vector<RecognizedObject> integrated;
+    std::set<std::string> types{"object"};
+    for (const pddl::TypeDeclaration& t : request.domain->types) types.insert(t.name);
+    if (request.recognizer) {
+      for (const RecognizedObject& o : request.recognizer->recognize(request.observed, request.robot_location)) {
+        if (object_type(problem, o.name) || !types.count(o.type)) continue;
+        pddl::TypedName object;
+        object.name = o.name;
+        object.types = {o.type};
+        problem.objects.push_back(object);
+        integrated.push_back(o);
+      }
+    }
+    RepairResult result = replan_from(request, *request.domain, problem, options_.planner);
+    result.integrated = integrated;
+    if (!result.repaired) return result;
+    std::string how;
+    for (const RecognizedObject& o : integrated) {
+      const std::vector<std::string> used = objects_used(*result.plan, request.now);
+      const bool in_plan = std::find(used.begin(), used.end(), o.name) != used.end();
+      std::string kind = o.type;
+      if (request.ontology) {
+        const std::vector<std::string> lineage = request.ontology->lineage(o.type);
+        if (lineage.size() > 1) kind += ", a kind of " + lineage[1];
+      }
+      how += "perception recognised " + o.name + " (" + kind + ") in " + o.location + (in_plan ? " and the new plan uses it; " : ", which the new plan does not need; ");
+    }
+    if (integrated.empty()) how = "perception recognised no new object; ";
+    result.how = how + describe_remedy(*result.plan, request.now);
+    return result;
+  }
+
+ private:
+  StrategyOptions options_;
+};
+
+class SuggestStrategy : public RepairStrategy {
+ public:
+  explicit SuggestStrategy(StrategyOptions options) : options_(std::move(options)) {}
+  std::string name() const override { return "suggest"; }
+  RepairResult repair(const RepairRequest& request) override {
+    pddl::Domain domain = *request.domain;
+    std::erase_if(domain.durative_actions,
+                  [&](const pddl::DurativeAction& a) { return options_.handling_actions.count(a.name) != 0; });
+    std::erase_if(domain.actions, [&](const pddl::Action& a) { return options_.handling_actions.count(a.name) != 0; });
+    RepairResult result = replan_from(request, domain, *request.problem, options_.planner);
+    if (result.repaired) {
+      result.how = "no object is handed over; instead " + describe_remedy(*result.plan, request.now);
+    } else {
+      result.how = "no activity can be suggested to reach the goal";
+    }
+    return result;
+  }
+
+ private:
+  StrategyOptions options_;
+};
+
+}  // namespace
+
+RepairResult replan_from(const RepairRequest& request, const pddl::Domain& domain, const pddl::Problem& problem,
+                         const PlannerOptions& options) {
+  const auto began = std::chrono::steady_clock::now();
+  RepairResult result;
+  result.problem = reformulate(domain, problem, request.observed, request.in_progress, request.now);
+  PlanningOutcome outcome = plan_in_process(domain, result.problem, request.now, options);
+  result.planner_calls = 1;
+  result.repaired = outcome.plan.has_value();
+  result.plan = std::move(outcome.plan);
+  if (!result.repaired) result.how = "the planner found no plan from the observed state: " + outcome.message;
+  // The problem to carry on with keeps the base's initial state: the world,
+  // not the problem, says what holds from now on.
+  result.problem.init = problem.init;
+  result.problem.numeric_init = problem.numeric_init;
+  result.problem.timed_literals = problem.timed_literals;
+  result.seconds = since(began);
+  return result;
+}
+
+std::string describe_remedy(const ExecutingPlan& plan, double from) {
+  std::string last;
+  std::size_t steps = 0;
+  for (const ScheduledAction& s : plan.steps) {
+    if (s.start + 1e-9 < from) continue;
+    ++steps;
+    last = s.name;
+  }
+  if (steps == 0) return "nothing is left to do";
+  std::string objects;
+  for (const std::string& o : objects_used(plan, from)) objects += (objects.empty() ? "" : ", ") + o;
+  double end = 0.0;
+  for (const ScheduledAction& s : plan.steps) end = std::max(end, s.end());
+  return "the new plan has " + std::to_string(steps) + " steps, ends with " + last + " at " + seconds_text(end) +
+         " and involves " + objects;
+}
+
+std::vector<std::string> strategy_names() { return {"replan", "substitute", "suggest", "patch"}; }
+
+std::unique_ptr<RepairStrategy> make_strategy(const std::string& name, const StrategyOptions& options) {
+  if (name == "replan") return std::make_unique<ReplanStrategy>(options);
+  if (name == "substitute") return std::make_unique<SubstituteStrategy>(options);
+  if (name == "suggest") return std::make_unique<SuggestStrategy>(options);
+  if (name == "patch") return make_patch_strategy(options);
+  std::string known;
+  for (const std::string& n : strategy_names()) known += (known.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown repair strategy '" + name + "' (known: " + known + ")");
+}
+
+}  // namespace alplan::repair

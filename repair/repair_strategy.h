@@ -1,0 +1,74 @@
+// Repair strategies behind one interface, chosen by name, so that they can
+// be compared on the same failures (bench repair):
+// - replan: plan again from the observed state (the paper's step 3c);
+// - substitute: integrate the new objects perception recognises, of the
+//   types the ontology augments, then replan (the paper's Scenarios 1, 2);
+// - suggest: go straight to suggesting an activity, no object handled
+//   (the paper's Scenario 3 outcome, as a policy);
+// - patch: keep the rest of the plan and swap the failed object for an
+//   available one of the same supertype; replan only when that is invalid.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "pddl_parser/ast.h"
+#include "planner/planner.h"
+#include "planner/violation.h"
+#include "repair/executing_plan.h"
+#include "repair/object_recognizer.h"
+#include "repair/type_ontology.h"
+#include "repair/world.h"
+
+namespace alplan::repair {
+
+struct StrategyOptions {
+  PlannerOptions planner;
+  // Schemas that hand an object over; `suggest` plans without them.
+  std::set<std::string> handling_actions{"carry", "fill", "give"};
+};
+
+struct RepairRequest {
+  const pddl::Domain* domain = nullptr;    // augmented with the ontology's types
+  const pddl::Problem* problem = nullptr;  // the objects known so far, TILs, goal, metric
+  const ExecutingPlan* plan = nullptr;     // the plan that failed
+  const Violation* failure = nullptr;
+  WorldState observed;
+  std::vector<ActionInProgress> in_progress;
+  double now = 0.0;
+  std::string robot_location;              // where the camera looks
+  ObjectRecognizer* recognizer = nullptr;  // may be absent
+  const TypeOntology* ontology = nullptr;  // may be absent
+};
+
+struct RepairResult {
+  bool repaired = false;
+  std::optional<ExecutingPlan> plan;
+  pddl::Problem problem;                 // what the new plan solves (new objects in it)
+  std::vector<RecognizedObject> integrated;
+  std::string how;                       // the third part of the explanation
+  int planner_calls = 0;
+  double seconds = 0.0;
+};
+
+class RepairStrategy {
+ public:
+  virtual ~RepairStrategy() = default;
+  virtual std::string name() const = 0;
+  virtual RepairResult repair(const RepairRequest& request) = 0;
+};
+
+// Throws std::invalid_argument for an unknown name.
+std::unique_ptr<RepairStrategy> make_strategy(const std::string& name, const StrategyOptions& options);
+std::vector<std::string> strategy_names();
+
+// Shared by the strategies: reformulate from the observed state and plan.
+RepairResult replan_from(const RepairRequest& request, const pddl::Domain& domain, const pddl::Problem& problem,
+                         const PlannerOptions& options);
+// A sentence naming what the new plan gives or suggests, to whom.
+std::string describe_remedy(const ExecutingPlan& plan, double from);
+
+}  // namespace alplan::repair

@@ -1,0 +1,35 @@
+// What the monitor acts on and observes. The monitor dispatches the plan's
+// snaps to it (the robot acting) and reads observed states from it; how the
+// world really evolves is its own business — a simulator with exogenous
+// events for experiments, or a home's IoT readings and a robot in service.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "planner/ground_task.h"
+#include "repair/world_state.h"
+
+namespace alplan::repair {
+
+// An action the robot has started and the world has not yet seen end, with
+// the world's estimate of when it will.
+struct ActionInProgress {
+  std::string name;
+  double expected_end = 0.0;
+  std::vector<AtomKey> adds, dels;  // what its end will change
+};
+
+class World {
+ public:
+  virtual ~World() = default;
+  // Lets the world run up to time t (exogenous events, overrunning actions).
+  virtual void advance(double t) = 0;
+  virtual WorldState observe() const = 0;
+  virtual void start_action(const GroundTask& task, ActionId action, double t, double duration) = 0;
+  // False when the action has not finished when the plan said it would.
+  virtual bool end_action(const GroundTask& task, ActionId action, double t) = 0;
+  virtual std::vector<ActionInProgress> in_progress() const = 0;
+};
+
+}  // namespace alplan::repair

@@ -1,0 +1,179 @@
+#include "repair/world_simulator.h"
+
+#include <algorithm>
+
+#include "planner/happening_effects.h"
+
+namespace alplan::repair {
+namespace {
+
+AtomKey key_of(const pddl::Atom& atom) {
+  AtomKey key{atom.name};
+  for (const pddl::Term& t : atom.args) key.push_back(t.name);
+  return key;
+}
+
+}  // namespace
+
+ExogenousEvent becomes_unavailable(double time, const std::string& object) {
+  ExogenousEvent e;
+  e.time = time;
+  e.atom = {"available", object};
+  e.value = false;
+  e.description = object + " becomes unavailable";
+  return e;
+}
+
+ExogenousEvent object_appears(double time, const RecognizedObject& object) {
+  ExogenousEvent e;
+  e.time = time;
+  e.kind = ExogenousEvent::Kind::NewObject;
+  e.object = object;
+  e.description = "a " + object.type + " (" + object.name + ") appears in " + object.location;
+  return e;
+}
+
+std::vector<ExogenousEvent> senior_moves(double time, const std::string& senior, const std::string& from,
+                                         const std::string& to) {
+  ExogenousEvent leave{time, ExogenousEvent::Kind::SetAtom, {"be", senior, from}, false, {}, {}, 0.0, {}};
+  ExogenousEvent arrive{time, ExogenousEvent::Kind::SetAtom, {"be", senior, to}, true, {}, {}, 0.0, {}};
+  leave.description = senior + " moves from " + from + " to " + to;
+  arrive.description = leave.description;
+  return {leave, arrive};
+}
+
+std::vector<ExogenousEvent> emotion_changes(double time, const std::string& senior, const std::string& from,
+                                            const std::string& to) {
+  ExogenousEvent stop{time, ExogenousEvent::Kind::SetAtom, {from, senior}, false, {}, {}, 0.0, {}};
+  ExogenousEvent begin{time, ExogenousEvent::Kind::SetAtom, {to, senior}, true, {}, {}, 0.0, {}};
+  stop.description = senior + " is no longer " + from + " but " + to;
+  begin.description = stop.description;
+  return {stop, begin};
+}
+
+ExogenousEvent action_overruns(const std::string& action, double extra) {
+  ExogenousEvent e;
+  e.kind = ExogenousEvent::Kind::Delay;
+  e.action = action;
+  e.extra = extra;
+  e.description = action + " takes " + std::to_string(extra) + " longer than planned";
+  return e;
+}
+
+WorldState initial_world(const pddl::Problem& problem) {
+  WorldState world;
+  for (const pddl::Atom& a : problem.init) world.atoms.insert(key_of(a));
+  for (const pddl::NumericFact& f : problem.numeric_init) world.values[key_of(f.function)] = f.value;
+  return world;
+}
+
+std::vector<ExogenousEvent> timed_literal_events(const pddl::Problem& problem) {
+  std::vector<ExogenousEvent> events;
+  for (const pddl::TimedInitialLiteral& til : problem.timed_literals) {
+    ExogenousEvent e;
+    e.time = til.time;
+    e.atom = key_of(til.atom);
+    e.value = til.positive;
+    e.description = "timed literal " + std::string(til.positive ? "" : "(not ") + to_string(e.atom) +
+                    (til.positive ? "" : ")");
+    events.push_back(e);
+  }
+  return events;
+}
+
+WorldSimulator::WorldSimulator(WorldState initial, std::vector<ExogenousEvent> events)
+    : world_(std::move(initial)), pending_(std::move(events)) {
+  std::stable_sort(pending_.begin(), pending_.end(),
+                   [](const ExogenousEvent& a, const ExogenousEvent& b) { return a.time < b.time; });
+}
+
+void WorldSimulator::apply(const ExogenousEvent& e) {
+  switch (e.kind) {
+    case ExogenousEvent::Kind::SetAtom: world_.set(e.atom, e.value); break;
+    case ExogenousEvent::Kind::NewObject:
+      appeared_.push_back(e.object);
+      world_.set({"be", e.object.name, e.object.location}, true);
+      world_.set({"available", e.object.name}, true);
+      break;
+    case ExogenousEvent::Kind::Delay: overruns_[e.action] += e.extra; break;
+  }
+  applied_.push_back(e);
+}
+
+void WorldSimulator::advance(double t) {
+  while (!pending_.empty() && pending_.front().time <= t) {
+    apply(pending_.front());
+    pending_.erase(pending_.begin());
+  }
+  // Overrunning actions finish when they finish; the others when the
+  // monitor dispatches their ends.
+  for (auto it = running_.begin(); it != running_.end();) {
+    const ActionInProgress& a = it->second;
+    if (overrunning_.count(a.name) && a.expected_end <= t) {
+      overrunning_.erase(a.name);
+      for (const AtomKey& d : a.dels) world_.set(d, false);
+      for (const AtomKey& k : a.adds) world_.set(k, true);
+      it = running_.erase(it);
+    } else {
+      ++it;
+    }
+  }
+  world_.time = std::max(world_.time, t);
+}
+
+void WorldSimulator::apply_snap(const GroundTask& task, ActionId action, bool start, double t, double duration) {
+  const StateMapping mapping(task);
+  ExplicitState state = mapping.to_explicit(world_);
+  EvaluationContext context;
+  context.duration = duration;
+  const GroundAction& a = task.actions[action];
+  apply_happening(task, start ? a.start : a.end, state, context);
+  mapping.write_back(state, world_);
+  world_.time = std::max(world_.time, t);
+}
+
+void WorldSimulator::start_action(const GroundTask& task, ActionId action, double t, double duration) {
+  apply_snap(task, action, true, t, duration);
+  const GroundAction& a = task.actions[action];
+  if (!a.durative) return;
+  ActionInProgress p;
+  p.name = task.action_name(a);
+  p.expected_end = t + duration;
+  const StateMapping mapping(task);
+  for (FactId f : a.end.add) p.adds.push_back(mapping.fact_key(f));
+  for (FactId f : a.end.del) p.dels.push_back(mapping.fact_key(f));
+  durations_[p.name] = duration;
+  running_[p.name] = std::move(p);
+}
+
+bool WorldSimulator::end_action(const GroundTask& task, ActionId action, double t) {
+  const std::string name = task.action_name(task.actions[action]);
+  auto overrun = overruns_.find(name);
+  auto it = running_.find(name);
+  if (overrun != overruns_.end() && it != running_.end()) {
+    // The action goes on: it will end `extra` later, on its own.
+    it->second.expected_end = t + overrun->second;
+    overruns_.erase(overrun);
+    overrunning_.insert(name);
+    return false;
+  }
+  if (it != running_.end()) running_.erase(it);
+  apply_snap(task, action, false, t, durations_[name]);
+  return true;
+}
+
+std::vector<ActionInProgress> WorldSimulator::in_progress() const {
+  std::vector<ActionInProgress> out;
+  for (const auto& [name, a] : running_) out.push_back(a);
+  return out;
+}
+
+std::vector<RecognizedObject> WorldSimulator::recognize(const WorldState& observed, const std::string& location) {
+  std::vector<RecognizedObject> seen;
+  for (const RecognizedObject& o : appeared_) {
+    if (observed.holds({"be", o.name, location})) seen.push_back(o);
+  }
+  return seen;
+}
+
+}  // namespace alplan::repair

@@ -1,0 +1,76 @@
+// The observation source for experiments: a world that does what the robot
+// does (the plan's effects as the monitor dispatches them) and what scripted
+// or random exogenous events do — objects become unavailable, new objects
+// appear, a senior moves, an emotion changes, an action takes longer than
+// planned. It also plays the camera: it reports the new objects visible at
+// a location, as the perception library's recognizer will on real images.
+#pragma once
+
+#include <map>
+#include <set>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pddl_parser/ast.h"
+#include "repair/object_recognizer.h"
+#include "repair/world.h"
+
+namespace alplan::repair {
+
+struct ExogenousEvent {
+  enum class Kind : unsigned char { SetAtom, NewObject, Delay };
+  double time = 0.0;
+  Kind kind = Kind::SetAtom;
+  AtomKey atom;        // SetAtom
+  bool value = true;   // SetAtom
+  RecognizedObject object;  // NewObject: it appears, available, at its location
+  std::string action;  // Delay: "(move robot1 corridor1 bedroom1)"
+  double extra = 0.0;  // Delay: how much longer it takes
+  std::string description;
+};
+
+// Readable constructors for the events experiments use.
+ExogenousEvent becomes_unavailable(double time, const std::string& object);
+ExogenousEvent object_appears(double time, const RecognizedObject& object);
+std::vector<ExogenousEvent> senior_moves(double time, const std::string& senior, const std::string& from,
+                                         const std::string& to);
+std::vector<ExogenousEvent> emotion_changes(double time, const std::string& senior, const std::string& from,
+                                            const std::string& to);
+ExogenousEvent action_overruns(const std::string& action, double extra);
+
+// The world a problem's :init describes (atoms and numeric values), at 0.
+WorldState initial_world(const pddl::Problem& problem);
+// The problem's timed initial literals, as events the world will apply.
+std::vector<ExogenousEvent> timed_literal_events(const pddl::Problem& problem);
+
+class WorldSimulator : public World, public ObjectRecognizer {
+ public:
+  WorldSimulator(WorldState initial, std::vector<ExogenousEvent> events);
+
+  void advance(double t) override;
+  WorldState observe() const override { return world_; }
+  void start_action(const GroundTask& task, ActionId action, double t, double duration) override;
+  bool end_action(const GroundTask& task, ActionId action, double t) override;
+  std::vector<ActionInProgress> in_progress() const override;
+
+  std::vector<RecognizedObject> recognize(const WorldState& observed, const std::string& location) override;
+
+  // Events applied so far, in order, for reports.
+  const std::vector<ExogenousEvent>& applied() const { return applied_; }
+
+ private:
+  void apply(const ExogenousEvent& e);
+  void apply_snap(const GroundTask& task, ActionId action, bool start, double t, double duration);
+
+  WorldState world_;
+  std::vector<ExogenousEvent> pending_;  // by time
+  std::vector<ExogenousEvent> applied_;
+  std::vector<RecognizedObject> appeared_;
+  std::map<std::string, double> overruns_;            // action name -> extra time
+  std::map<std::string, ActionInProgress> running_;  // by name
+  std::map<std::string, double> durations_;           // of running actions, for their ends
+  std::set<std::string> overrunning_;                 // ends dispatched, not yet happened
+};
+
+}  // namespace alplan::repair

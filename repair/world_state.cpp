@@ -1,0 +1,51 @@
+#include "repair/world_state.h"
+
+#include "planner/evaluation.h"
+
+namespace alplan::repair {
+
+std::string to_string(const AtomKey& key) {
+  std::string out = "(";
+  for (std::size_t i = 0; i < key.size(); ++i) out += (i ? " " : "") + key[i];
+  return out + ")";
+}
+
+StateMapping::StateMapping(const GroundTask& task) : task_(&task) {
+  const NormalizedTask& lifted = *task.lifted;
+  for (FactId f = 0; f < task.facts.size(); ++f) {
+    const GroundKey& k = task.facts.key(f);
+    AtomKey key{lifted.predicates[k.head].name};
+    for (ObjectId o : k.args) key.push_back(lifted.objects[o]);
+    fact_keys_.push_back(std::move(key));
+  }
+  for (NumericVarId v = 0; v < task.numeric.size(); ++v) {
+    const GroundKey& k = task.numeric.key(v);
+    AtomKey key{lifted.functions[k.head].name};
+    for (ObjectId o : k.args) key.push_back(lifted.objects[o]);
+    variable_keys_.push_back(std::move(key));
+  }
+}
+
+ExplicitState StateMapping::to_explicit(const WorldState& world) const {
+  ExplicitState state;
+  for (FactId f = 0; f < fact_keys_.size(); ++f) {
+    if (!task_->is_derived(f)) state.set_fact(f, world.holds(fact_keys_[f]));
+  }
+  for (NumericVarId v = 0; v < variable_keys_.size(); ++v) {
+    auto it = world.values.find(variable_keys_[v]);
+    state.set_value(v, it == world.values.end() ? std::nan("") : it->second);
+  }
+  derive(*task_, state);
+  return state;
+}
+
+void StateMapping::write_back(const ExplicitState& state, WorldState& world) const {
+  for (FactId f = 0; f < fact_keys_.size(); ++f) {
+    if (!task_->is_derived(f)) world.set(fact_keys_[f], state.fact(f));
+  }
+  for (NumericVarId v = 0; v < variable_keys_.size(); ++v) {
+    if (!std::isnan(state.value(v))) world.values[variable_keys_[v]] = state.value(v);
+  }
+}
+
+}  // namespace alplan::repair

@@ -1,0 +1,51 @@
+// The world as the monitor observes it, in PDDL terms (names, not ids): the
+// planner's ids change whenever a repair re-grounds the task (new objects),
+// while what is true of the world does not. StateMapping translates between
+// this and the ExplicitState of one grounded task.
+#pragma once
+
+#include <map>
+#include <set>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "planner/explicit_state.h"
+#include "planner/ground_task.h"
+
+namespace alplan::repair {
+
+// A ground atom or function term: the head, then the arguments, lower-case.
+using AtomKey = std::vector<std::string>;
+
+std::string to_string(const AtomKey& key);  // "(be robot1 kitchen1)"
+
+struct WorldState {
+  double time = 0.0;
+  std::set<AtomKey> atoms;
+  std::map<AtomKey, double> values;
+
+  bool holds(const AtomKey& atom) const { return atoms.count(atom) != 0; }
+  void set(const AtomKey& atom, bool on) { on ? void(atoms.insert(atom)) : void(atoms.erase(atom)); }
+};
+
+// The translation for one grounded task. Facts the task does not know (it
+// grounded them away as static or unreachable) are left alone in the world.
+class StateMapping {
+ public:
+  explicit StateMapping(const GroundTask& task);
+
+  ExplicitState to_explicit(const WorldState& world) const;
+  // Writes every fact and variable the task knows back into the world.
+  void write_back(const ExplicitState& state, WorldState& world) const;
+
+  const AtomKey& fact_key(FactId f) const { return fact_keys_[f]; }
+  const AtomKey& variable_key(NumericVarId v) const { return variable_keys_[v]; }
+  const GroundTask& task() const { return *task_; }
+
+ private:
+  const GroundTask* task_;
+  std::vector<AtomKey> fact_keys_, variable_keys_;
+};
+
+}  // namespace alplan::repair
