@@ -31,11 +31,26 @@ struct Progress {
   explicit Progress(std::size_t n) : started(n, false), ended(n, false) {}
 };
 
+// An action a replaced plan had started: the new plan takes it as given
+// (it was compiled into the problem), but its end must still be dispatched.
+struct CommittedEnd {
+  std::shared_ptr<const GroundTask> task;
+  ActionId action = 0;
+  double end = 0.0;
+};
+
 // The next time to look: the next happening after t, or t + step.
-double next_observation(const Timeline& timeline, double t, double step) {
+double next_observation(const Timeline& timeline, const std::vector<CommittedEnd>& committed, double t,
+                        double step) {
   double next = t + step;
   for (double h : timeline.happening_times()) {
-    if (h > t + 1e-9) return std::min(next, h);
+    if (h > t + 1e-9) {
+      next = std::min(next, h);
+      break;
+    }
+  }
+  for (const CommittedEnd& c : committed) {
+    if (c.end > t + 1e-9) next = std::min(next, c.end);
   }
   return next;
 }
@@ -85,13 +100,15 @@ ExecutionReport Monitor::run(const Mission& mission, ExecutingPlan plan, World& 
   auto timeline = std::make_unique<Timeline>(plan);
   auto mapping = std::make_unique<StateMapping>(*plan.task);
   Progress progress(plan.steps.size());
+  std::vector<CommittedEnd> committed;
   const double tolerance = plan.epsilon / 10.0;
   double t = plan.steps.empty() ? 0.0 : std::min(0.0, plan.steps.front().start);
   for (int guard = 0; guard < 1000000; ++guard) {
     world.advance(t);
     const WorldState observed = world.observe();
     const ExplicitState state = mapping->to_explicit(observed);
-    const bool all_dispatched = std::all_of(progress.ended.begin(), progress.ended.end(), [](bool e) { return e; });
+    const bool all_dispatched =
+        committed.empty() && std::all_of(progress.ended.begin(), progress.ended.end(), [](bool e) { return e; });
     std::optional<Violation> failure = timeline->check_due(t, state);
     bool foreseen = false;
     if (!failure && options_.lookahead) {
@@ -150,6 +167,9 @@ ExecutionReport Monitor::run(const Mission& mission, ExecutingPlan plan, World& 
       record.plan_distance = plan_distance(plan, *result.plan, t);
       report.repairs.push_back(record);
       report.events.push_back(time_text(t) + ": repaired by " + strategy.name() + ": " + result.how);
+      for (std::size_t s = 0; s < plan.steps.size(); ++s) {
+        if (progress.started[s] && !progress.ended[s]) committed.push_back({plan.task, plan.steps[s].action, plan.steps[s].end()});
+      }
       problem = std::move(result.problem);
       plan = with_all_conditions(*result.plan);
       timeline = std::make_unique<Timeline>(plan);
@@ -158,6 +178,14 @@ ExecutionReport Monitor::run(const Mission& mission, ExecutingPlan plan, World& 
       continue;  // look again at the same time, with the new plan
     }
     // Dispatch what happens now: ends first, then starts.
+    for (auto c = committed.begin(); c != committed.end();) {
+      if (c->end > t + tolerance) {
+        ++c;
+        continue;
+      }
+      world.end_action(*c->task, c->action, t);
+      c = committed.erase(c);
+    }
     for (std::size_t s = 0; s < plan.steps.size(); ++s) {
       const ScheduledAction& a = plan.steps[s];
       const bool durative = plan.task->actions[a.action].durative;
@@ -176,9 +204,10 @@ ExecutionReport Monitor::run(const Mission& mission, ExecutingPlan plan, World& 
       if (!plan.task->actions[a.action].durative) progress.ended[s] = true;
       report.events.push_back(time_text(t) + ": start " + a.name);
     }
-    const bool finished = std::all_of(progress.ended.begin(), progress.ended.end(), [](bool e) { return e; });
+    const bool finished =
+        committed.empty() && std::all_of(progress.ended.begin(), progress.ended.end(), [](bool e) { return e; });
     // Once the last end is dispatched, judge the goal at once, not a step later.
-    if (!finished || t + tolerance < timeline->end_time()) t = next_observation(*timeline, t, options_.step_size);
+    if (!finished || t + tolerance < timeline->end_time()) t = next_observation(*timeline, committed, t, options_.step_size);
   }
   report.outcome = "the monitor stopped: too many observations";
   return report;

@@ -1,0 +1,11 @@
+# `alplan scenario` as users run it. Variables: ALPLAN, SHARED, DATA, WORK.
+include(${CMAKE_CURRENT_LIST_DIR}/expect_run.cmake)
+
+expect_run(0 "a1  : 140.008 : (carry robot1 mug_id01 kitchen1)" ${ALPLAN} scenario paper-1)
+expect_run(0 "a6  : 260.016 : (cheer_received senior1 clarinet_id01)" ${ALPLAN} scenario paper-2)
+expect_run(0 "a2  : 5.002   : (entertainment2_suggested senior1 tv_id01)" ${ALPLAN} scenario paper-3)
+expect_run(0 "\"goal_reached\": true" ${ALPLAN} scenario paper-1 --json --strategy patch)
+expect_run(1 "no repair" ${ALPLAN} scenario paper-1 --strategy suggest)
+expect_run(2 "unknown scenario 'paper-4'" ${ALPLAN} scenario paper-4)
+expect_run(2 "unknown repair strategy 'pray'" ${ALPLAN} scenario paper-1 --strategy pray)
+expect_run(2 "cannot open" ${ALPLAN} scenario paper-1 --domains-dir ${WORK}/nowhere)

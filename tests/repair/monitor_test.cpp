@@ -1,0 +1,126 @@
+#include "repair/monitor.h"
+
+#include <catch2/catch.hpp>
+
+#include "domains/paper_scenarios.h"
+#include "tests/support/test_paths.h"
+
+using namespace alplan;
+using namespace alplan::domains;
+
+namespace {
+
+ScenarioOptions options(const std::string& strategy = "substitute") {
+  ScenarioOptions o;
+  o.assisted_living_dir = test::source_dir() + "/domains/assisted_living";
+  o.strategy = strategy;
+  return o;
+}
+
+PaperScenario scenario(int n) { return paper_scenarios().at(static_cast<std::size_t>(n - 1)); }
+
+const repair::RepairRecord& only_repair(const ScenarioRun& run) {
+  REQUIRE(run.report.repairs.size() == 1);
+  return run.report.repairs.front();
+}
+
+}  // namespace
+
+// The paper's Figs. 6-11, as printed there (IPC times; durations ours).
+TEST_CASE("scenario 1 reproduces Figs. 6 and 7: the glass fails, a mug is recognised and used") {
+  const ScenarioRun run = run_paper_scenario(scenario(1), options());
+  CHECK(run.initial_plan ==
+        "0.000: (move robot1 bedroom1 corridor1) [30.000]\n30.002: (move robot1 corridor1 corridor2) [50.000]\n"
+        "80.004: (move robot1 corridor2 dinning_room1) [40.000]\n120.006: (move robot1 dinning_room1 kitchen1) [20.000]\n"
+        "140.008: (carry robot1 glass_id05 kitchen1) [10.000]\n150.010: (fill robot1 glass_id05 kitchen1) [10.000]\n"
+        "160.012: (move robot1 kitchen1 dinning_room1) [20.000]\n180.014: (move robot1 dinning_room1 corridor2) [40.000]\n"
+        "220.016: (move robot1 corridor2 corridor1) [50.000]\n270.018: (move robot1 corridor1 bedroom1) [30.000]\n"
+        "300.020: (give robot1 senior1 glass_id05 bedroom1) [10.000]\n"
+        "310.022: (soothed_received senior1 glass_id05) [10.000]\n");
+  const repair::RepairRecord& r = only_repair(run);
+  CHECK(r.failure.time == Approx(140.008));
+  CHECK(r.failure.condition == "(available glass_id05)");
+  CHECK(r.failure.action == "(carry robot1 glass_id05 kitchen1) - start");
+  CHECK(r.plan_text ==
+        "140.008: (carry robot1 mug_id01 kitchen1) [10.000]\n150.010: (fill robot1 mug_id01 kitchen1) [10.000]\n"
+        "160.012: (move robot1 kitchen1 dinning_room1) [20.000]\n180.014: (move robot1 dinning_room1 corridor2) [40.000]\n"
+        "220.016: (move robot1 corridor2 corridor1) [50.000]\n270.018: (move robot1 corridor1 bedroom1) [30.000]\n"
+        "300.020: (give robot1 senior1 mug_id01 bedroom1) [10.000]\n"
+        "310.022: (soothed_received senior1 mug_id01) [10.000]\n");
+  CHECK(r.explanation.why.find("terrified") != std::string::npos);
+  CHECK(r.explanation.what.find("(available glass_id05)") != std::string::npos);
+  CHECK(r.explanation.how.find("mug_id01 (mug, a kind of drinking_vessel)") != std::string::npos);
+  CHECK(run.report.goal_reached);
+  CHECK(run.report.end_time == Approx(320.022));
+}
+
+TEST_CASE("scenario 2 reproduces Figs. 8 and 9: the guitar fails, the clarinet cheers") {
+  const ScenarioRun run = run_paper_scenario(scenario(2), options());
+  CHECK(run.initial_plan.find("120.006: (carry robot1 guitar_id01 music_room1)") != std::string::npos);
+  CHECK(run.initial_plan.find("260.016: (cheer_received senior1 guitar_id01)") != std::string::npos);
+  const repair::RepairRecord& r = only_repair(run);
+  CHECK(r.failure.time == Approx(120.006));
+  CHECK(r.plan_text ==
+        "120.006: (carry robot1 clarinet_id01 music_room1) [10.000]\n"
+        "130.008: (move robot1 music_room1 corridor2) [40.000]\n170.010: (move robot1 corridor2 corridor1) [50.000]\n"
+        "220.012: (move robot1 corridor1 bedroom1) [30.000]\n250.014: (give robot1 senior1 clarinet_id01 bedroom1) [10.000]\n"
+        "260.016: (cheer_received senior1 clarinet_id01) [10.000]\n");
+  CHECK(run.report.goal_reached);
+}
+
+TEST_CASE("scenario 3 reproduces Figs. 10 and 11: nothing replaces the book, so the robot suggests TV") {
+  const ScenarioRun run = run_paper_scenario(scenario(3), options());
+  CHECK(run.initial_plan.find("120.006: (carry robot1 book_id01 library1)") != std::string::npos);
+  const repair::RepairRecord& r = only_repair(run);
+  CHECK(r.foreseen);
+  CHECK(r.failure.time == Approx(0.0));
+  CHECK(r.plan_text ==
+        "0.000: (suggest_entertainment2 robot1 senior1 tv_id01 bedroom1) [5.000]\n"
+        "5.002: (entertainment2_suggested senior1 tv_id01) [10.000]\n");
+  CHECK(run.report.goal_reached);
+}
+
+TEST_CASE("patch swaps the failed glass for the recognised mug without searching") {
+  const ScenarioRun run = run_paper_scenario(scenario(1), options("patch"));
+  const repair::RepairRecord& r = only_repair(run);
+  CHECK(r.planner_calls == 0);
+  CHECK(r.plan_distance == 8);  // four steps out, four in
+  CHECK(r.explanation.how.find("mug_id01 (mug) takes the place of glass_id05") != std::string::npos);
+  CHECK(run.report.goal_reached);
+}
+
+TEST_CASE("suggest has nothing to offer a terrified senior and says so") {
+  const ScenarioRun run = run_paper_scenario(scenario(1), options("suggest"));
+  CHECK_FALSE(run.report.goal_reached);
+  REQUIRE(run.report.repairs.size() == 1);
+  CHECK_FALSE(run.report.repairs[0].repaired);
+  CHECK(run.report.outcome.find("no repair") == 0);
+}
+
+TEST_CASE("an action that takes longer is committed to and planned around") {
+  PaperScenario s = scenario(2);
+  s.events = {repair::action_overruns("(move robot1 corridor1 corridor2)", 20.0)};
+  const ScenarioRun run = run_paper_scenario(s, options("replan"));
+  const repair::RepairRecord& r = only_repair(run);
+  CHECK(r.failure.condition == "(be robot1 corridor2)");
+  // The robot reaches corridor2 at 100.002; the next move starts after it.
+  CHECK(r.plan_text.rfind("100.", 0) == 0);
+  CHECK(run.report.goal_reached);
+}
+
+TEST_CASE("a senior who moves is followed: the look-ahead sees the give would fail") {
+  PaperScenario s = scenario(2);
+  s.events = repair::senior_moves(200.0, "senior1", "bedroom1", "sunroom1");
+  const ScenarioRun run = run_paper_scenario(s, options("replan"));
+  for (const std::string& e : run.report.events) UNSCOPED_INFO(e);
+  const repair::RepairRecord& r = only_repair(run);
+  CHECK(r.foreseen);
+  CHECK(r.failure.condition == "(be senior1 bedroom1)");
+  CHECK(r.failure.time < 210.0);
+  CHECK(r.plan_text.find("(give robot1 senior1 guitar_id01 sunroom1)") != std::string::npos);
+  CHECK(run.report.goal_reached);
+}
+
+TEST_CASE("an unknown strategy is refused with the known names") {
+  CHECK_THROWS_WITH(repair::make_strategy("pray", {}), Catch::Contains("replan, substitute, suggest, patch"));
+}
