@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   alplan::cli::add_validate_command(app, exit_code);
   alplan::cli::add_plan_command(app, exit_code);
   alplan::cli::add_scenario_command(app, exit_code);
+  alplan::cli::add_gen_command(app, exit_code);
   alplan::cli::add_bench_command(app, exit_code);
   try {
     app.parse(argc, argv);

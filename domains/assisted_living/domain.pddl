@@ -10,8 +10,9 @@
 ;   desktop. Suggesting costs (total-cost), so the metric prefers giving.
 ; - Objects must be (available ...) when the robot takes them: IoT objects
 ;   report it, and the monitor sees it change.
-; - A terrified senior must be soothed while (hydration_time ?s) holds: the
-;   problem ends that window with a timed initial literal.
+; - A terrified senior must be soothed while (hydration_time ?s) holds, a sad
+;   or bored one cheered or entertained while (comfort_time ?s) holds: the
+;   problem ends these windows with timed initial literals.
 (define (domain assisted_living)
   (:requirements :typing :durative-actions :fluents :timed-initial-literals :action-costs)
   (:types
@@ -30,6 +31,9 @@
     (be ?locatable - (either robot senior drinking_vessel making_music entertainment) ?loc - location)
     (path ?loc1 - location ?loc2 - location)
     (hydration_time ?senior - senior)
+    ;; ours: the time window for cheering or entertaining (the paper's
+    ;; Discussion: a sad or bored senior can wait longer than a terrified one)
+    (comfort_time ?senior - senior)
     (terrified ?senior - senior)
     (sad ?senior - senior)
     (bored ?senior - senior)
@@ -92,14 +96,14 @@
   (:durative-action cheer_received
     :parameters (?senior - senior ?item - making_music)
     :duration (= ?duration (receiving_time))
-    :condition (and (at start (given ?item ?senior)) (at start (sad ?senior)))
+    :condition (and (at start (given ?item ?senior)) (at start (sad ?senior)) (over all (comfort_time ?senior)))
     :effect (and (at end (not (sad ?senior))) (at end (cheerful ?senior))))
 
   ;; the senior received the entertainment to soothe boredom
   (:durative-action entertainment1_received
     :parameters (?senior - senior ?item - (either solving reading))
     :duration (= ?duration (receiving_time))
-    :condition (and (at start (given ?item ?senior)) (at start (bored ?senior)))
+    :condition (and (at start (given ?item ?senior)) (at start (bored ?senior)) (over all (comfort_time ?senior)))
     :effect (and (at end (not (bored ?senior))) (at end (entertained ?senior))))
 
   ;; the robot suggests a different course of entertainment, where the senior is
@@ -113,6 +117,6 @@
   (:durative-action entertainment2_suggested
     :parameters (?senior - senior ?item - (either tv desktop))
     :duration (= ?duration (receiving_time))
-    :condition (and (at start (suggested ?item ?senior)) (at start (bored ?senior)))
+    :condition (and (at start (suggested ?item ?senior)) (at start (bored ?senior)) (over all (comfort_time ?senior)))
     :effect (and (at end (not (bored ?senior))) (at end (entertained ?senior))))
 )

@@ -21,7 +21,7 @@
     (be book_id01 library1) (be magazine_id01 library1)
     (be pc_id01 library1) (be pc_id02 library1) (be tv_id01 library1)
     (available glass_id05) (available glass_id06) (available glass_id07) (available glass_id08) (available guitar_id01)
-    (sad senior1)
+    (sad senior1) (comfort_time senior1)
     (path bedroom1 corridor1) (path corridor1 bedroom1) (= (moving_time bedroom1 corridor1) 30) (= (moving_time corridor1 bedroom1) 30)
     (path bedroom2 corridor1) (path corridor1 bedroom2) (= (moving_time bedroom2 corridor1) 30) (= (moving_time corridor1 bedroom2) 30)
     (path sunroom1 corridor1) (path corridor1 sunroom1) (= (moving_time sunroom1 corridor1) 25) (= (moving_time corridor1 sunroom1) 25)

@@ -1,0 +1,62 @@
+// alplan gen home --rooms R --seniors S --robots K --objects O --seed N
+//                 [--stressed M] [--out FILE]
+// Writes a generated home as a PDDL problem for the assisted-living domain
+// (domains/assisted_living/domain.pddl). Exit 2 on impossible options.
+#include <CLI/CLI.hpp>
+
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "cli/commands.h"
+#include "domains/home_generator.h"
+
+namespace alplan::cli {
+namespace {
+
+struct GenOptions {
+  domains::HomeOptions home;
+  std::string out;
+};
+
+int run(const GenOptions& o) {
+  domains::GeneratedHome home;
+  try {
+    home = domains::generate_home(o.home);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitInputError;
+  }
+  if (o.out.empty()) {
+    std::cout << home.problem;
+    return kExitOk;
+  }
+  std::ofstream file(o.out, std::ios::binary);
+  if (!(file << home.problem)) {
+    std::cerr << "error: cannot write " << o.out << "\n";
+    return kExitInputError;
+  }
+  std::cerr << "wrote " << o.out << ": " << home.rooms.size() << " rooms, " << home.objects.size() << " objects, goal";
+  for (const domains::StressedSenior& s : home.stressed) std::cerr << " " << s.goal << " (" << s.emotion << ")";
+  std::cerr << "\n";
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_gen_command(CLI::App& app, int& exit_code) {
+  auto options = std::make_shared<GenOptions>();
+  CLI::App* gen = app.add_subcommand("gen", "Generate problems");
+  gen->require_subcommand(1);
+  CLI::App* home = gen->add_subcommand("home", "An assisted-living home, as a PDDL problem");
+  home->add_option("--rooms", options->home.rooms, "Rooms besides corridors (at least 4)");
+  home->add_option("--seniors", options->home.seniors, "Seniors");
+  home->add_option("--robots", options->home.robots, "Robots");
+  home->add_option("--objects", options->home.objects, "Portable objects");
+  home->add_option("--stressed", options->home.stressed, "Seniors to comfort (the goals)");
+  home->add_option("--seed", options->home.seed, "Random seed (same seed, same home)");
+  home->add_option("--out", options->out, "Write the problem here instead of stdout");
+  home->callback([options, &exit_code] { exit_code = run(*options); });
+}
+
+}  // namespace alplan::cli
