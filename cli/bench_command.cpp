@@ -95,6 +95,8 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   p->add_flag("--anytime", planners->anytime, "Let each run improve its plan until the time limit");
   p->add_option("--search", planners->search, "ehc, gbfs or wastar")->check(CLI::IsMember({"ehc", "gbfs", "wastar"}));
   p->callback([planners, &exit_code] { exit_code = run_planners(*planners); });
+
+  add_bench_repair_command(bench, exit_code);
 }
 
 }  // namespace alplan::cli

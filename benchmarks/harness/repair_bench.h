@@ -1,0 +1,37 @@
+// `alplan bench repair`: generates homes, injects the same failures into the
+// same executions for every strategy, and compares the strategies: success
+// rate, repair latency (median, p95), plan stability (actions removed plus
+// added, Fox et al. 2006), delay until the senior is comforted, makespan,
+// cost, planner calls. Optionally the same repairs through a planner in
+// another process (the paper's architecture), for the latency ratio.
+// Writes runs.csv, runs.json, summary.md, summary.json and one SVG per metric.
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "domains/home_generator.h"
+
+namespace alplan::bench {
+
+struct RepairBenchOptions {
+  int homes = 10;
+  int failures_per_run = 1;
+  int runs_per_home = 3;
+  std::uint64_t seed = 1;
+  std::vector<std::string> strategies{"replan", "substitute", "suggest", "patch"};
+  domains::HomeOptions home;  // its seed is replaced per home
+  std::string assisted_living_dir;
+  std::string out_dir;
+  bool external = false;  // also replan through `alplan plan` in a child process
+  std::string alplan;     // the executable, for the external runs
+  double epsilon = 0.001;
+  double planning_time = 10.0;
+};
+
+// Returns the exit code: 0, or 2 for bad options or unwritable output.
+int run_repair_bench(const RepairBenchOptions& options, std::ostream& out, std::ostream& progress);
+
+}  // namespace alplan::bench

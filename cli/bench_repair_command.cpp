@@ -1,0 +1,79 @@
+// alplan bench repair --homes N --failures-per-run K --seed S
+//                     --strategies replan,substitute,suggest,patch --out DIR
+//                     [--runs-per-home R] [--external] [--rooms ...]
+// Compares repair strategies on the same failures in generated homes.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "benchmarks/harness/process_runner.h"
+#include "benchmarks/harness/repair_bench.h"
+#include "cli/commands.h"
+#include "domains/pddl_files.h"
+#include "repair/repair_strategy.h"
+
+namespace alplan::cli {
+namespace {
+
+struct BenchRepairOptions {
+  bench::RepairBenchOptions bench;
+  std::string strategies = "replan,substitute,suggest,patch";
+};
+
+int run_repair(BenchRepairOptions options) {
+  options.bench.strategies.clear();
+  std::istringstream list(options.strategies);
+  for (std::string name; std::getline(list, name, ',');) {
+    if (name.empty()) continue;
+    try {
+      repair::make_strategy(name, {});
+    } catch (const std::invalid_argument& e) {
+      std::cerr << "error: " << e.what() << "\n";
+      return kExitInputError;
+    }
+    options.bench.strategies.push_back(name);
+  }
+  if (options.bench.out_dir.empty()) {
+    std::cerr << "error: --out is required\n";
+    return kExitInputError;
+  }
+  options.bench.alplan = bench::self_executable();
+  try {
+    return bench::run_repair_bench(options.bench, std::cout, std::cerr);
+  } catch (const domains::InputError& e) {
+    std::cerr << e.what();
+    return kExitInputError;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitInputError;
+  }
+}
+
+}  // namespace
+
+void add_bench_repair_command(CLI::App* bench, int& exit_code) {
+  auto o = std::make_shared<BenchRepairOptions>();
+  o->bench.assisted_living_dir = ALPLAN_ASSISTED_LIVING_DIR;
+  CLI::App* r = bench->add_subcommand("repair", "Compare repair strategies on the same failures in generated homes");
+  r->add_option("--homes", o->bench.homes, "Generated homes")->check(CLI::PositiveNumber);
+  r->add_option("--failures-per-run", o->bench.failures_per_run, "Failures injected into each execution")
+      ->check(CLI::PositiveNumber);
+  r->add_option("--runs-per-home", o->bench.runs_per_home, "Executions per home, each with its own failures")
+      ->check(CLI::PositiveNumber);
+  r->add_option("--seed", o->bench.seed, "First home's seed; the others follow");
+  r->add_option("--strategies", o->strategies, "Comma-separated: replan, substitute, suggest, patch");
+  r->add_option("--out", o->bench.out_dir, "Folder for runs.csv, runs.json, summary.md, summary.json, plots/");
+  r->add_flag("--external", o->bench.external, "Also replan through `alplan plan` in a child process (the paper's way)");
+  r->add_option("--rooms", o->bench.home.rooms, "Rooms per home");
+  r->add_option("--seniors", o->bench.home.seniors, "Seniors per home");
+  r->add_option("--objects", o->bench.home.objects, "Portable objects per home");
+  r->add_option("--stressed", o->bench.home.stressed, "Seniors to comfort per home");
+  r->add_option("--domains-dir", o->bench.assisted_living_dir, "Folder with domain.pddl and types.ttl");
+  r->add_option("--epsilon", o->bench.epsilon, "Separation of dependent happenings")->check(CLI::PositiveNumber);
+  r->add_option("--planning-time", o->bench.planning_time, "Seconds per planner call")->check(CLI::PositiveNumber);
+  r->callback([o, &exit_code] { exit_code = run_repair(*o); });
+}
+
+}  // namespace alplan::cli
