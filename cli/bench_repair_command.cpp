@@ -19,7 +19,7 @@ namespace {
 
 struct BenchRepairOptions {
   bench::RepairBenchOptions bench;
-  std::string strategies = "replan,substitute,suggest,patch";
+  std::string strategies = "replan,substitute,suggest,patch,adapt";
 };
 
 int run_repair(BenchRepairOptions options) {
@@ -63,7 +63,7 @@ void add_bench_repair_command(CLI::App* bench, int& exit_code) {
   r->add_option("--runs-per-home", o->bench.runs_per_home, "Executions per home, each with its own failures")
       ->check(CLI::PositiveNumber);
   r->add_option("--seed", o->bench.seed, "First home's seed; the others follow");
-  r->add_option("--strategies", o->strategies, "Comma-separated: replan, substitute, suggest, patch");
+  r->add_option("--strategies", o->strategies, "Comma-separated: replan, substitute, suggest, patch, adapt");
   r->add_option("--out", o->bench.out_dir, "Folder for runs.csv, runs.json, summary.md, summary.json, plots/");
   r->add_flag("--external", o->bench.external, "Also replan through `alplan plan` in a child process (the paper's way)");
   r->add_option("--rooms", o->bench.home.rooms, "Rooms per home");

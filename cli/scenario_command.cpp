@@ -27,6 +27,7 @@ struct ScenarioCommandOptions {
   double epsilon = 0.002;
   double step = 5.0;
   bool no_lookahead = false;
+  bool proactive = false;
   bool json = false;
 };
 
@@ -64,6 +65,7 @@ int run(const ScenarioCommandOptions& o) {
   options.epsilon = o.epsilon;
   options.monitor.step_size = o.step;
   options.monitor.lookahead = !o.no_lookahead;
+  options.monitor.proactive = o.proactive;
   domains::ScenarioRun run;
   try {
     run = domains::run_paper_scenario(*scenario, options);
@@ -94,7 +96,7 @@ int run(const ScenarioCommandOptions& o) {
     for (const std::string& e : report.events) std::cout << "  " << e << "\n";
     for (const repair::RepairRecord& r : report.repairs) {
       if (!r.repaired) continue;
-      std::cout << "\nRepaired plan (" << r.strategy << ", the paper's " << scenario->repaired_figure << "):\n"
+      std::cout << "\nRepaired plan (" << r.strategy << (r.strategy == "proactive" ? "" : ", the paper's " + scenario->repaired_figure) << "):\n"
                 << paper_format(r.plan_text) << "\n" << r.explanation.text();
     }
     std::cout << "\nOutcome: " << report.outcome << "\n";
@@ -108,12 +110,13 @@ void add_scenario_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<ScenarioCommandOptions>();
   CLI::App* cmd = app.add_subcommand("scenario", "Run one of the paper's scenarios end to end");
   cmd->add_option("SCENARIO", options->name, "paper-1, paper-2 or paper-3")->required();
-  cmd->add_option("--strategy", options->strategy, "Repair strategy: replan, substitute, suggest, patch");
+  cmd->add_option("--strategy", options->strategy, "Repair strategy: replan, substitute, suggest, patch, adapt");
   cmd->add_option("--domains-dir", options->dir, "Folder with domain.pddl, types.ttl and the scenario problems");
   cmd->add_option("--epsilon", options->epsilon, "Separation of dependent happenings (the paper's plans: 0.002)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--step", options->step, "Seconds between observations")->check(CLI::PositiveNumber);
   cmd->add_flag("--no-lookahead", options->no_lookahead, "Check conditions only when they are due");
+  cmd->add_flag("--proactive", options->proactive, "Plan again whenever perception sees new objects; switch if better");
   cmd->add_flag("--json", options->json, "Print the run as JSON");
   cmd->callback([options, &exit_code] { exit_code = run(*options); });
 }

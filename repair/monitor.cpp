@@ -90,127 +90,219 @@ nlohmann::json ExecutionReport::json() const {
           {"end_time", end_time}, {"outcome", outcome}, {"events", events}};
 }
 
-ExecutionReport Monitor::run(const Mission& mission, ExecutingPlan plan, World& world, RepairStrategy& strategy,
-                             ObjectRecognizer* recognizer, const TypeOntology* ontology) const {
-  ExecutionReport report;
-  report.initial_plan_text = plan_text(plan);
-  plan = with_all_conditions(plan);
-  pddl::Problem problem = mission.problem;
-  const std::string goal = problem.goal ? pddl::write_condition(*problem.goal) : "(and)";
-  auto timeline = std::make_unique<Timeline>(plan);
-  auto mapping = std::make_unique<StateMapping>(*plan.task);
-  Progress progress(plan.steps.size());
-  std::vector<CommittedEnd> committed;
-  const double tolerance = plan.epsilon / 10.0;
-  double t = plan.steps.empty() ? 0.0 : std::min(0.0, plan.steps.front().start);
-  for (int guard = 0; guard < 1000000; ++guard) {
-    world.advance(t);
-    const WorldState observed = world.observe();
-    const ExplicitState state = mapping->to_explicit(observed);
-    const bool all_dispatched =
-        committed.empty() && std::all_of(progress.ended.begin(), progress.ended.end(), [](bool e) { return e; });
-    std::optional<Violation> failure = timeline->check_due(t, state);
-    bool foreseen = false;
-    if (!failure && options_.lookahead) {
-      failure = timeline->check_ahead(t, state);
-      foreseen = failure.has_value();
+namespace {
+
+// One execution: the plan in force, what has been dispatched, the report.
+class Execution {
+ public:
+  Execution(const MonitorOptions& options, const Mission& mission, ExecutingPlan plan, World& world,
+            RepairStrategy& strategy, ObjectRecognizer* recognizer, const TypeOntology* ontology)
+      : options_(options), mission_(mission), world_(world), strategy_(strategy), recognizer_(recognizer),
+        ontology_(ontology), problem_(mission.problem) {
+    report_.initial_plan_text = plan_text(plan);
+    goal_ = problem_.goal ? pddl::write_condition(*problem_.goal) : "(and)";
+    adopt(with_all_conditions(plan));
+  }
+
+  ExecutionReport run() {
+    double t = plan_.steps.empty() ? 0.0 : std::min(0.0, plan_.steps.front().start);
+    for (int guard = 0; guard < 1000000; ++guard) {
+      world_.advance(t);
+      const WorldState observed = world_.observe();
+      const ExplicitState state = mapping_->to_explicit(observed);
+      std::optional<Violation> failure = timeline_->check_due(t, state);
+      bool foreseen = false;
+      if (!failure && options_.lookahead) {
+        failure = timeline_->check_ahead(t, state);
+        foreseen = failure.has_value();
+      }
+      if (!failure && finished() && t + tolerance() >= timeline_->end_time()) {
+        failure = timeline_->check_goal(t, state);
+        if (!failure) return done(true, "the goal " + goal_ + " holds at " + time_text(t), t);
+      }
+      if (failure) {
+        if (!repair(*failure, foreseen, observed, t)) return report_;
+        continue;  // look again at the same time, with the new plan
+      }
+      if (options_.proactive && look_for_alternative(observed, t)) continue;
+      dispatch(t);
+      // Once the last end is dispatched, judge the goal at once, not a step later.
+      if (!finished() || t + tolerance() < timeline_->end_time()) t = next_time(t);
     }
-    if (!failure && all_dispatched && t + tolerance >= timeline->end_time()) {
-      failure = timeline->check_goal(t, state);
-      if (!failure) {
-        report.goal_reached = true;
-        report.end_time = t;
-        report.outcome = "the goal " + goal + " holds at " + time_text(t);
-        report.events.push_back(time_text(t) + ": goal reached");
-        return report;
+    return done(false, "the monitor stopped: too many observations", 0.0);
+  }
+
+ private:
+  double tolerance() const { return plan_.epsilon / 10.0; }
+  bool finished() const {
+    return committed_.empty() && std::all_of(progress_.ended.begin(), progress_.ended.end(), [](bool e) { return e; });
+  }
+
+  ExecutionReport done(bool reached, const std::string& outcome, double t) {
+    report_.goal_reached = reached;
+    report_.end_time = t;
+    report_.outcome = outcome;
+    if (reached) report_.events.push_back(time_text(t) + ": goal reached");
+    return report_;
+  }
+
+  void adopt(ExecutingPlan plan) {
+    for (std::size_t s = 0; s < plan_.steps.size(); ++s) {
+      if (progress_.started[s] && !progress_.ended[s]) {
+        committed_.push_back({plan_.task, plan_.steps[s].action, plan_.steps[s].end()});
       }
     }
-    if (failure) {
-      report.events.push_back(time_text(t) + ": failure: " + describe_failure(*failure, foreseen));
-      if (static_cast<int>(report.repairs.size()) >= options_.max_repairs) {
-        report.end_time = t;
-        report.outcome = "gave up after " + std::to_string(report.repairs.size()) + " repairs: " +
-                         describe_failure(*failure, foreseen);
-        return report;
-      }
-      RepairRequest request;
-      request.domain = mission.domain;
-      request.problem = &problem;
-      request.plan = &plan;
-      request.failure = &*failure;
-      request.observed = observed;
-      request.in_progress = world.in_progress();
-      request.now = t;
-      request.robot_location = location_of(observed, mission.robot);
-      request.recognizer = recognizer;
-      request.ontology = ontology;
-      RepairResult result = strategy.repair(request);
-      RepairRecord record;
-      record.failure = *failure;
-      record.foreseen = foreseen;
-      record.strategy = strategy.name();
-      record.repaired = result.repaired;
-      record.seconds = result.seconds;
-      record.planner_calls = result.planner_calls;
-      record.integrated = result.integrated;
-      record.explanation.why = mission.motivation + "; the plan's goal was " + goal;
-      record.explanation.what = describe_failure(*failure, foreseen);
-      record.explanation.how = result.how;
-      if (!result.repaired) {
-        report.repairs.push_back(record);
-        report.end_time = t;
-        report.outcome = "no repair: " + result.how;
-        report.events.push_back(time_text(t) + ": " + strategy.name() + " could not repair: " + result.how);
-        return report;
-      }
+    plan_ = std::move(plan);
+    timeline_ = std::make_unique<Timeline>(plan_);
+    mapping_ = std::make_unique<StateMapping>(*plan_.task);
+    progress_ = Progress(plan_.steps.size());
+  }
+
+  RepairRequest request(const Violation& failure, const WorldState& observed, double t) const {
+    RepairRequest r;
+    r.domain = mission_.domain;
+    r.problem = &problem_;
+    r.plan = &plan_;
+    r.failure = &failure;
+    r.observed = observed;
+    r.in_progress = world_.in_progress();
+    r.now = t;
+    r.robot_location = location_of(observed, mission_.robot);
+    r.recognizer = recognizer_;
+    r.ontology = ontology_;
+    return r;
+  }
+
+  RepairRecord record_of(const Violation& failure, bool foreseen, const RepairResult& result,
+                         const std::string& strategy, double t) const {
+    RepairRecord record;
+    record.failure = failure;
+    record.foreseen = foreseen;
+    record.strategy = strategy;
+    record.repaired = result.repaired;
+    record.seconds = result.seconds;
+    record.planner_calls = result.planner_calls;
+    record.integrated = result.integrated;
+    record.explanation.why = mission_.motivation + "; the plan's goal was " + goal_;
+    record.explanation.what = failure.kind == Violation::Kind::Unsupported ? failure.condition
+                                                                           : describe_failure(failure, foreseen);
+    record.explanation.how = result.how;
+    if (result.repaired) {
       record.plan_text = plan_text(*result.plan);
-      record.plan_distance = plan_distance(plan, *result.plan, t);
-      report.repairs.push_back(record);
-      report.events.push_back(time_text(t) + ": repaired by " + strategy.name() + ": " + result.how);
-      for (std::size_t s = 0; s < plan.steps.size(); ++s) {
-        if (progress.started[s] && !progress.ended[s]) committed.push_back({plan.task, plan.steps[s].action, plan.steps[s].end()});
-      }
-      problem = std::move(result.problem);
-      plan = with_all_conditions(*result.plan);
-      timeline = std::make_unique<Timeline>(plan);
-      mapping = std::make_unique<StateMapping>(*plan.task);
-      progress = Progress(plan.steps.size());
-      continue;  // look again at the same time, with the new plan
+      record.plan_distance = plan_distance(plan_, *result.plan, t);
     }
-    // Dispatch what happens now: ends first, then starts.
-    for (auto c = committed.begin(); c != committed.end();) {
-      if (c->end > t + tolerance) {
+    return record;
+  }
+
+  // False when the run ends here (no repair, or too many).
+  bool repair(const Violation& failure, bool foreseen, const WorldState& observed, double t) {
+    report_.events.push_back(time_text(t) + ": failure: " + describe_failure(failure, foreseen));
+    if (static_cast<int>(report_.repairs.size()) >= options_.max_repairs) {
+      done(false, "gave up after " + std::to_string(report_.repairs.size()) + " repairs: " +
+                      describe_failure(failure, foreseen), t);
+      return false;
+    }
+    RepairResult result = strategy_.repair(request(failure, observed, t));
+    report_.repairs.push_back(record_of(failure, foreseen, result, strategy_.name(), t));
+    if (!result.repaired) {
+      report_.events.push_back(time_text(t) + ": " + strategy_.name() + " could not repair: " + result.how);
+      done(false, "no repair: " + result.how, t);
+      return false;
+    }
+    report_.events.push_back(time_text(t) + ": repaired by " + strategy_.name() + ": " + result.how);
+    problem_ = std::move(result.problem);
+    adopt(with_all_conditions(*result.plan));
+    return true;
+  }
+
+  // The paper's Discussion: look for a better course of action even when
+  // nothing has failed (a new object nearby, a shorter way). Switches only
+  // for a clear gain, so that the robot does not dither.
+  bool look_for_alternative(const WorldState& observed, double t) {
+    Violation none;
+    none.kind = Violation::Kind::Unsupported;
+    none.time = t;
+    none.condition = "nothing failed; the monitor looked for a better plan at " + time_text(t);
+    const RepairRequest r = request(none, observed, t);
+    pddl::Problem known = problem_;
+    const std::vector<RecognizedObject> seen = integrate_recognized(r, known);
+    if (seen.empty()) return false;  // the world offers nothing new
+    // Anytime, briefly: the first plan found may be a costly shortcut (a
+    // suggestion) that the metric would never choose.
+    PlannerOptions planner = options_.planner;
+    planner.epsilon = plan_.epsilon;
+    planner.anytime = true;
+    planner.time_limit = std::min(planner.time_limit, options_.proactive_budget);
+    RepairResult result = replan_from(r, *mission_.domain, known, planner);
+    result.integrated = seen;
+    if (!result.repaired) return false;
+    double current = 0.0, alternative = 0.0;
+    for (const ScheduledAction& s : plan_.steps) current = std::max(current, s.end());
+    for (const ScheduledAction& s : result.plan->steps) alternative = std::max(alternative, s.end());
+    if (alternative > current - options_.proactive_gain) return false;
+    result.how = "switched to a plan that ends at " + time_text(alternative) + " instead of " + time_text(current) +
+                 ": " + describe_remedy(*result.plan, t);
+    report_.repairs.push_back(record_of(none, false, result, "proactive", t));
+    report_.events.push_back(time_text(t) + ": proactive: " + result.how);
+    problem_ = std::move(result.problem);
+    adopt(with_all_conditions(*result.plan));
+    return true;
+  }
+
+  // Dispatches what happens now: ends first, then starts.
+  void dispatch(double t) {
+    for (auto c = committed_.begin(); c != committed_.end();) {
+      if (c->end > t + tolerance()) {
         ++c;
         continue;
       }
-      world.end_action(*c->task, c->action, t);
-      c = committed.erase(c);
+      world_.end_action(*c->task, c->action, t);
+      c = committed_.erase(c);
     }
-    for (std::size_t s = 0; s < plan.steps.size(); ++s) {
-      const ScheduledAction& a = plan.steps[s];
-      const bool durative = plan.task->actions[a.action].durative;
-      if (durative && progress.started[s] && !progress.ended[s] && std::abs(a.end() - t) <= tolerance) {
-        if (!world.end_action(*plan.task, a.action, t)) {
-          report.events.push_back(time_text(t) + ": " + a.name + " has not finished as planned");
+    for (std::size_t s = 0; s < plan_.steps.size(); ++s) {
+      const ScheduledAction& a = plan_.steps[s];
+      const bool durative = plan_.task->actions[a.action].durative;
+      if (durative && progress_.started[s] && !progress_.ended[s] && std::abs(a.end() - t) <= tolerance()) {
+        if (!world_.end_action(*plan_.task, a.action, t)) {
+          report_.events.push_back(time_text(t) + ": " + a.name + " has not finished as planned");
         }
-        progress.ended[s] = true;
+        progress_.ended[s] = true;
       }
     }
-    for (std::size_t s = 0; s < plan.steps.size(); ++s) {
-      const ScheduledAction& a = plan.steps[s];
-      if (progress.started[s] || std::abs(a.start - t) > tolerance) continue;
-      world.start_action(*plan.task, a.action, t, a.duration);
-      progress.started[s] = true;
-      if (!plan.task->actions[a.action].durative) progress.ended[s] = true;
-      report.events.push_back(time_text(t) + ": start " + a.name);
+    for (std::size_t s = 0; s < plan_.steps.size(); ++s) {
+      const ScheduledAction& a = plan_.steps[s];
+      if (progress_.started[s] || std::abs(a.start - t) > tolerance()) continue;
+      world_.start_action(*plan_.task, a.action, t, a.duration);
+      progress_.started[s] = true;
+      if (!plan_.task->actions[a.action].durative) progress_.ended[s] = true;
+      report_.events.push_back(time_text(t) + ": start " + a.name);
     }
-    const bool finished =
-        committed.empty() && std::all_of(progress.ended.begin(), progress.ended.end(), [](bool e) { return e; });
-    // Once the last end is dispatched, judge the goal at once, not a step later.
-    if (!finished || t + tolerance < timeline->end_time()) t = next_observation(*timeline, committed, t, options_.step_size);
   }
-  report.outcome = "the monitor stopped: too many observations";
-  return report;
+
+  double next_time(double t) const { return next_observation(*timeline_, committed_, t, options_.step_size); }
+
+  const MonitorOptions& options_;
+  const Mission& mission_;
+  World& world_;
+  RepairStrategy& strategy_;
+  ObjectRecognizer* recognizer_;
+  const TypeOntology* ontology_;
+  pddl::Problem problem_;
+  std::string goal_;
+  ExecutingPlan plan_;
+  std::unique_ptr<Timeline> timeline_;
+  std::unique_ptr<StateMapping> mapping_;
+  Progress progress_{0};
+  std::vector<CommittedEnd> committed_;
+  ExecutionReport report_;
+};
+
+}  // namespace
+
+ExecutionReport Monitor::run(const Mission& mission, ExecutingPlan plan, World& world, RepairStrategy& strategy,
+                             ObjectRecognizer* recognizer, const TypeOntology* ontology) const {
+  Execution execution(options_, mission, std::move(plan), world, strategy, recognizer, ontology);
+  return execution.run();
 }
 
 }  // namespace alplan::repair

@@ -18,6 +18,7 @@
 #include "repair/explanation.h"
 #include "repair/repair_strategy.h"
 #include "repair/world.h"
+#include "planner/planner.h"
 
 namespace alplan::repair {
 
@@ -25,6 +26,12 @@ struct MonitorOptions {
   double step_size = 5.0;  // observations between happenings
   bool lookahead = true;   // report a failure as soon as it is certain
   int max_repairs = 5;
+  // Proactive mode: whenever perception sees new objects, plan again and
+  // switch if the plan ends at least `proactive_gain` earlier.
+  bool proactive = false;
+  double proactive_gain = 1.0;
+  double proactive_budget = 0.25;  // seconds of anytime search per look
+  PlannerOptions planner;  // for the proactive plans
 };
 
 // What the deliberation is about: the domain (with the ontology's types),

@@ -61,14 +61,7 @@ class PatchStrategy : public RepairStrategy {
   RepairResult repair(const RepairRequest& request) override {
     const auto began = std::chrono::steady_clock::now();
     pddl::Problem problem = *request.problem;
-    std::vector<RecognizedObject> recognized;
-    if (request.recognizer) {
-      for (const RecognizedObject& o : request.recognizer->recognize(request.observed, request.robot_location)) {
-        if (object_type(problem, o.name)) continue;
-        problem.objects.push_back(pddl::TypedName{o.name, {o.type}, {}});
-        recognized.push_back(o);
-      }
-    }
+    const std::vector<RecognizedObject> recognized = integrate_recognized(request, problem);
     const pddl::Problem reformulated =
         reformulate(*request.domain, problem, request.observed, request.in_progress, request.now);
     std::shared_ptr<const GroundTask> task;

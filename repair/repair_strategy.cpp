@@ -10,6 +10,7 @@
 namespace alplan::repair {
 
 std::unique_ptr<RepairStrategy> make_patch_strategy(const StrategyOptions& options);
+std::unique_ptr<RepairStrategy> make_adapt_strategy(const StrategyOptions& options);
 
 namespace {
 
@@ -56,19 +57,7 @@ class SubstituteStrategy : public RepairStrategy {
   std::string name() const override { return "substitute"; }
   RepairResult repair(const RepairRequest& request) override {
     pddl::Problem problem = *request.problem;
-    std::vector<RecognizedObject> integrated;
-    std::set<std::string> types{"object"};
-    for (const pddl::TypeDeclaration& t : request.domain->types) types.insert(t.name);
-    if (request.recognizer) {
-      for (const RecognizedObject& o : request.recognizer->recognize(request.observed, request.robot_location)) {
-        if (object_type(problem, o.name) || !types.count(o.type)) continue;
-        pddl::TypedName object;
-        object.name = o.name;
-        object.types = {o.type};
-        problem.objects.push_back(object);
-        integrated.push_back(o);
-      }
-    }
+    const std::vector<RecognizedObject> integrated = integrate_recognized(request, problem);
     RepairResult result = replan_from(request, *request.domain, problem, options_.planner);
     result.integrated = integrated;
     if (!result.repaired) return result;
@@ -135,6 +124,22 @@ RepairResult replan_from(const RepairRequest& request, const pddl::Domain& domai
   return result;
 }
 
+std::vector<RecognizedObject> integrate_recognized(const RepairRequest& request, pddl::Problem& problem) {
+  std::vector<RecognizedObject> integrated;
+  if (!request.recognizer) return integrated;
+  std::set<std::string> types{"object"};
+  for (const pddl::TypeDeclaration& t : request.domain->types) types.insert(t.name);
+  for (const RecognizedObject& o : request.recognizer->recognize(request.observed, request.robot_location)) {
+    if (object_type(problem, o.name) || !types.count(o.type)) continue;
+    pddl::TypedName object;
+    object.name = o.name;
+    object.types = {o.type};
+    problem.objects.push_back(object);
+    integrated.push_back(o);
+  }
+  return integrated;
+}
+
 std::string describe_remedy(const ExecutingPlan& plan, double from) {
   std::string last;
   std::size_t steps = 0;
@@ -152,13 +157,14 @@ std::string describe_remedy(const ExecutingPlan& plan, double from) {
          " and involves " + objects;
 }
 
-std::vector<std::string> strategy_names() { return {"replan", "substitute", "suggest", "patch"}; }
+std::vector<std::string> strategy_names() { return {"replan", "substitute", "suggest", "patch", "adapt"}; }
 
 std::unique_ptr<RepairStrategy> make_strategy(const std::string& name, const StrategyOptions& options) {
   if (name == "replan") return std::make_unique<ReplanStrategy>(options);
   if (name == "substitute") return std::make_unique<SubstituteStrategy>(options);
   if (name == "suggest") return std::make_unique<SuggestStrategy>(options);
   if (name == "patch") return make_patch_strategy(options);
+  if (name == "adapt") return make_adapt_strategy(options);
   std::string known;
   for (const std::string& n : strategy_names()) known += (known.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown repair strategy '" + name + "' (known: " + known + ")");

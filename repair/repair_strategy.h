@@ -6,7 +6,9 @@
 // - suggest: go straight to suggesting an activity, no object handled
 //   (the paper's Scenario 3 outcome, as a policy);
 // - patch: keep the rest of the plan and swap the failed object for an
-//   available one of the same supertype; replan only when that is invalid.
+//   available one of the same supertype; replan only when that is invalid;
+// - adapt: reuse as much of the old plan as possible (LPG-ADAPT's aim):
+//   search in a view of the task where new actions cost a penalty.
 #pragma once
 
 #include <memory>
@@ -29,6 +31,9 @@ struct StrategyOptions {
   PlannerOptions planner;
   // Schemas that hand an object over; `suggest` plans without them.
   std::set<std::string> handling_actions{"carry", "fill", "give"};
+  // `adapt`: the cost of an action the old plan lacks, and the search budget.
+  double adapt_penalty = 100.0;
+  double adapt_budget = 0.25;  // seconds
 };
 
 struct RepairRequest {
@@ -68,6 +73,9 @@ std::vector<std::string> strategy_names();
 // Shared by the strategies: reformulate from the observed state and plan.
 RepairResult replan_from(const RepairRequest& request, const pddl::Domain& domain, const pddl::Problem& problem,
                          const PlannerOptions& options);
+// Adds the objects perception recognises at the robot's location, of types
+// the domain knows, to the problem; returns them.
+std::vector<RecognizedObject> integrate_recognized(const RepairRequest& request, pddl::Problem& problem);
 // A sentence naming what the new plan gives or suggests, to whom.
 std::string describe_remedy(const ExecutingPlan& plan, double from);
 

@@ -21,7 +21,7 @@ struct RepairBenchOptions {
   int failures_per_run = 1;
   int runs_per_home = 3;
   std::uint64_t seed = 1;
-  std::vector<std::string> strategies{"replan", "substitute", "suggest", "patch"};
+  std::vector<std::string> strategies{"replan", "substitute", "suggest", "patch", "adapt"};
   domains::HomeOptions home;  // its seed is replaced per home
   std::string assisted_living_dir;
   std::string out_dir;

@@ -121,6 +121,31 @@ TEST_CASE("a senior who moves is followed: the look-ahead sees the give would fa
   CHECK(run.report.goal_reached);
 }
 
+TEST_CASE("proactive mode takes a journal seen on the way instead of walking to the library") {
+  PaperScenario s = scenario(3);
+  s.events = {repair::object_appears(50.0, {"journal_id01", "journal", "corridor2", 1.0})};
+  ScenarioOptions o = options();
+  o.monitor.proactive = true;
+  const ScenarioRun run = run_paper_scenario(s, o);
+  const repair::RepairRecord& r = only_repair(run);
+  CHECK(r.strategy == "proactive");
+  CHECK(r.failure.time == Approx(80.004));
+  INFO(r.plan_text);
+  CHECK(r.plan_text.rfind("80.004: (carry robot1 journal_id01 corridor2)", 0) == 0);
+  CHECK(run.report.goal_reached);
+  CHECK(run.report.end_time < 200.0);
+  // Without it, the robot walks on to the book.
+  CHECK(run_paper_scenario(s, options()).report.end_time == Approx(270.016));
+}
+
+TEST_CASE("adapt keeps what it can of the old plan") {
+  const ScenarioRun run = run_paper_scenario(scenario(1), options("adapt"));
+  const repair::RepairRecord& r = only_repair(run);
+  CHECK(r.explanation.how.find("4 of its 8 remaining steps are kept") != std::string::npos);
+  CHECK(r.plan_distance == 8);
+  CHECK(run.report.goal_reached);
+}
+
 TEST_CASE("an unknown strategy is refused with the known names") {
-  CHECK_THROWS_WITH(repair::make_strategy("pray", {}), Catch::Contains("replan, substitute, suggest, patch"));
+  CHECK_THROWS_WITH(repair::make_strategy("pray", {}), Catch::Contains("replan, substitute, suggest, patch, adapt"));
 }

@@ -1,0 +1,110 @@
+// adapt: plan adaptation in the spirit of LPG-ADAPT (Gerevini & Serina 2000;
+// compared with replanning for plan stability by Fox et al., ICAPS 2006):
+// reuse the old plan as far as possible. The reformulated task becomes a
+// view in which every action the remaining plan does not contain costs a
+// penalty (added to total-cost), and anytime search under a small budget
+// minimises the metric plus the penalties — so among good plans it prefers
+// those closest to the old one. The plan then runs on the unpenalised task.
+#include <chrono>
+#include <set>
+
+#include "planner/grounder.h"
+#include "repair/reformulation.h"
+#include "repair/repair_strategy.h"
+
+namespace alplan::repair {
+namespace {
+
+std::optional<NumericVarId> total_cost(const GroundTask& task) {
+  for (NumericVarId v = 0; v < task.numeric.size(); ++v) {
+    const GroundKey& key = task.numeric.key(v);
+    if (key.args.empty() && task.lifted->functions[key.head].name == "total-cost") return v;
+  }
+  return std::nullopt;
+}
+
+// The task with a penalty on every action outside `keep`; the metric gains
+// total-cost when it did not count it.
+std::shared_ptr<const GroundTask> penalised(const GroundTask& task, const std::multiset<std::string>& keep,
+                                            NumericVarId cost, double penalty) {
+  auto view = std::make_shared<GroundTask>(task);
+  GroundExpression amount;
+  amount.value = penalty;
+  for (GroundAction& a : view->actions) {
+    if (keep.count(view->action_name(a))) continue;
+    (a.durative ? a.end : a.start).numeric.push_back({cost, pddl::AssignOperator::Increase, amount});
+  }
+  GroundExpression cost_term;
+  cost_term.kind = GroundExpression::Kind::Variable;
+  cost_term.variable = cost;
+  if (!view->metric) {
+    GroundExpression time;
+    time.kind = GroundExpression::Kind::TotalTime;
+    view->metric = GroundMetric{true, time};
+  }
+  GroundExpression sum;
+  sum.kind = GroundExpression::Kind::Add;
+  sum.operands = {view->metric->expression, cost_term};
+  view->metric->expression = sum;
+  return view;
+}
+
+class AdaptStrategy : public RepairStrategy {
+ public:
+  explicit AdaptStrategy(StrategyOptions options) : options_(std::move(options)) {}
+  std::string name() const override { return "adapt"; }
+
+  RepairResult repair(const RepairRequest& request) override {
+    const auto began = std::chrono::steady_clock::now();
+    RepairResult result;
+    pddl::Problem known = *request.problem;
+    result.integrated = integrate_recognized(request, known);
+    result.problem = reformulate(*request.domain, known, request.observed, request.in_progress, request.now);
+    std::shared_ptr<const GroundTask> task;
+    try {
+      task = ground(*request.domain, result.problem);
+    } catch (const std::exception& error) {
+      result.how = std::string("cannot ground the reformulated problem: ") + error.what();
+      return result;
+    }
+    std::multiset<std::string> keep;
+    for (const ScheduledAction& s : request.plan->steps) {
+      if (s.start + 1e-9 >= request.now) keep.insert(s.name);
+    }
+    const std::optional<NumericVarId> cost = total_cost(*task);
+    PlannerOptions planner = options_.planner;
+    planner.anytime = true;
+    planner.time_limit = std::min(planner.time_limit, options_.adapt_budget);
+    const std::shared_ptr<const GroundTask> view = cost ? penalised(*task, keep, *cost, options_.adapt_penalty) : task;
+    PlanningStart start = initial_start(*view);
+    start.now = request.now;
+    const PlannerResult planned = Planner(view, planner).plan_from(start);
+    result.planner_calls = 1;
+    if (const FoundPlan* best = planned.best()) {
+      result.plan = bind_plan(task, best->plan, planner.epsilon);
+      result.repaired = true;
+      std::size_t reused = 0;
+      for (const ScheduledAction& s : result.plan->steps) reused += keep.count(s.name) ? 1 : 0;
+      result.how = "adapted the old plan: " + std::to_string(reused) + " of its " + std::to_string(keep.size()) +
+                   " remaining steps are kept; " + describe_remedy(*result.plan, request.now);
+    } else {
+      result.how = "the planner found no plan from the observed state: " + planned.message;
+    }
+    result.problem.init = known.init;
+    result.problem.numeric_init = known.numeric_init;
+    result.problem.timed_literals = known.timed_literals;
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+    return result;
+  }
+
+ private:
+  StrategyOptions options_;
+};
+
+}  // namespace
+
+std::unique_ptr<RepairStrategy> make_adapt_strategy(const StrategyOptions& options) {
+  return std::make_unique<AdaptStrategy>(options);
+}
+
+}  // namespace alplan::repair
