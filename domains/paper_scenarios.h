@@ -14,6 +14,8 @@
 // scenarios plan with that separation so that the times match the figures.
 #pragma once
 
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +33,12 @@ struct PaperScenario {
 };
 
 std::vector<PaperScenario> paper_scenarios();
+
+// The paper's goal generation (its Section 6.1) for one senior: terrified ->
+// (soothed s), sad -> (cheerful s), bored -> (entertained s), from the
+// emotion the observed state records.
+std::function<std::optional<std::pair<pddl::Condition, std::string>>(const repair::WorldState&)>
+emotion_goal_generator(const std::string& senior);
 
 struct ScenarioOptions {
   std::string assisted_living_dir;  // domains/assisted_living

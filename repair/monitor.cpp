@@ -98,7 +98,7 @@ class Execution {
   Execution(const MonitorOptions& options, const Mission& mission, ExecutingPlan plan, World& world,
             RepairStrategy& strategy, ObjectRecognizer* recognizer, const TypeOntology* ontology)
       : options_(options), mission_(mission), world_(world), strategy_(strategy), recognizer_(recognizer),
-        ontology_(ontology), problem_(mission.problem) {
+        ontology_(ontology), problem_(mission.problem), motivation_(mission.motivation) {
     report_.initial_plan_text = plan_text(plan);
     goal_ = problem_.goal ? pddl::write_condition(*problem_.goal) : "(and)";
     adopt(with_all_conditions(plan));
@@ -183,7 +183,7 @@ class Execution {
     record.seconds = result.seconds;
     record.planner_calls = result.planner_calls;
     record.integrated = result.integrated;
-    record.explanation.why = mission_.motivation + "; the plan's goal was " + goal_;
+    record.explanation.why = motivation_ + "; the plan's goal was " + goal_;
     record.explanation.what = failure.kind == Violation::Kind::Unsupported ? failure.condition
                                                                            : describe_failure(failure, foreseen);
     record.explanation.how = result.how;
@@ -202,6 +202,7 @@ class Execution {
                       describe_failure(failure, foreseen), t);
       return false;
     }
+    regenerate_goal(observed, t);
     RepairResult result = strategy_.repair(request(failure, observed, t));
     report_.repairs.push_back(record_of(failure, foreseen, result, strategy_.name(), t));
     if (!result.repaired) {
@@ -213,6 +214,19 @@ class Execution {
     problem_ = std::move(result.problem);
     adopt(with_all_conditions(*result.plan));
     return true;
+  }
+
+  // Is the goal still the right one? An emotion may have changed.
+  void regenerate_goal(const WorldState& observed, double t) {
+    if (!mission_.goal_generator) return;
+    auto generated = mission_.goal_generator(observed);
+    if (!generated) return;
+    const std::string goal = pddl::write_condition(generated->first);
+    if (goal == goal_) return;
+    report_.events.push_back(time_text(t) + ": goal generation: " + generated->second + ", so the goal is now " + goal);
+    problem_.goal = generated->first;
+    motivation_ = generated->second;
+    goal_ = goal;
   }
 
   // The paper's Discussion: look for a better course of action even when
@@ -288,6 +302,7 @@ class Execution {
   ObjectRecognizer* recognizer_;
   const TypeOntology* ontology_;
   pddl::Problem problem_;
+  std::string motivation_;
   std::string goal_;
   ExecutingPlan plan_;
   std::unique_ptr<Timeline> timeline_;

@@ -7,6 +7,7 @@
 // Every run ends with the goal reached or with an explained failure.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,6 +42,10 @@ struct Mission {
   pddl::Problem problem;
   std::string motivation;   // "senior1 is terrified"
   std::string robot = "robot1";
+  // Goal generation, re-invoked on every failure (the paper's step 3b): the
+  // goal the observed state calls for and the reason, or nothing to keep
+  // the current goal. Optional.
+  std::function<std::optional<std::pair<pddl::Condition, std::string>>(const WorldState&)> goal_generator;
 };
 
 struct RepairRecord {

@@ -138,6 +138,22 @@ TEST_CASE("proactive mode takes a journal seen on the way instead of walking to 
   CHECK(run_paper_scenario(s, options()).report.end_time == Approx(270.016));
 }
 
+TEST_CASE("when the emotion changes, goal generation gives a new goal and the plan follows it") {
+  PaperScenario s = scenario(3);
+  repair::ExogenousEvent guitar;
+  guitar.atom = {"available", "guitar_id01"};
+  guitar.description = "the guitar is free again";
+  s.events = repair::emotion_changes(50.0, "senior1", "bored", "sad");
+  s.events.push_back(guitar);
+  const ScenarioRun run = run_paper_scenario(s, options("replan"));
+  const repair::RepairRecord& r = only_repair(run);
+  CHECK(r.foreseen);
+  CHECK(r.failure.condition == "(bored senior1)");
+  CHECK(r.explanation.why.find("senior1 is sad; the plan's goal was (cheerful senior1)") != std::string::npos);
+  CHECK(r.plan_text.find("(cheer_received senior1 guitar_id01)") != std::string::npos);
+  CHECK(run.report.goal_reached);
+}
+
 TEST_CASE("adapt keeps what it can of the old plan") {
   const ScenarioRun run = run_paper_scenario(scenario(1), options("adapt"));
   const repair::RepairRecord& r = only_repair(run);
