@@ -1,6 +1,7 @@
 #include "planner/task_index.h"
 
 #include <algorithm>
+#include <map>
 
 namespace alplan {
 namespace {
@@ -80,6 +81,55 @@ bool conditions_mention_duration(const ConditionSet& c) {
   });
 }
 
+// The basic facts and variables a derived fact depends on, through every
+// axiom that can derive it. A snap reading a derived fact reads all of them:
+// without this, a writer of one of them could be scheduled at the same time
+// as the reader, which VAL rejects (the derived value changes in between).
+class DerivedSupport {
+ public:
+  explicit DerivedSupport(const GroundTask& t) : task_(t), memo_(t.facts.size()), state_(t.facts.size(), 0) {
+    for (std::uint32_t x = 0; x < t.axioms.size(); ++x) by_head_[t.axioms[x].head].push_back(x);
+  }
+
+  void expand(Footprint& fp) {
+    const std::vector<FactId> reads = fp.reads;
+    for (FactId f : reads) {
+      if (!task_.is_derived(f)) continue;
+      const Footprint& s = support(f);
+      fp.reads.insert(fp.reads.end(), s.reads.begin(), s.reads.end());
+      fp.reads_values.insert(fp.reads_values.end(), s.reads_values.begin(), s.reads_values.end());
+    }
+  }
+
+ private:
+  const Footprint& support(FactId f) {
+    if (state_[f] != 0) return memo_[f];  // done, or on the stack (a recursive rule)
+    state_[f] = 1;
+    Footprint body;
+    for (std::uint32_t x : by_head_[f]) condition_reads(task_.axioms[x].body, body);
+    Footprint out;
+    for (FactId g : body.reads) {
+      if (!task_.is_derived(g)) {
+        out.reads.push_back(g);
+        continue;
+      }
+      const Footprint& inner = support(g);
+      out.reads.insert(out.reads.end(), inner.reads.begin(), inner.reads.end());
+      out.reads_values.insert(out.reads_values.end(), inner.reads_values.begin(), inner.reads_values.end());
+    }
+    out.reads_values.insert(out.reads_values.end(), body.reads_values.begin(), body.reads_values.end());
+    finish(out);
+    memo_[f] = std::move(out);
+    state_[f] = 2;
+    return memo_[f];
+  }
+
+  const GroundTask& task_;
+  std::vector<Footprint> memo_;
+  std::vector<char> state_;
+  std::map<FactId, std::vector<std::uint32_t>> by_head_;
+};
+
 }  // namespace
 
 TaskIndex::TaskIndex(std::shared_ptr<const GroundTask> task) : task_(std::move(task)) {
@@ -126,6 +176,15 @@ TaskIndex::TaskIndex(std::shared_ptr<const GroundTask> task) : task_(std::move(t
                                          [&](FactId x, FactId y) { return load[x] < load[y]; });
       ++load[f];
       by_fact_[f].push_back(a);
+    }
+  }
+  if (!t.axioms.empty()) {
+    DerivedSupport derived(t);
+    for (std::vector<Footprint>* list : {&instant_, &start_, &end_}) {
+      for (Footprint& fp : *list) {
+        derived.expand(fp);
+        finish(fp);
+      }
     }
   }
   til_.resize(t.timed_literals.size());

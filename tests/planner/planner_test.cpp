@@ -245,6 +245,8 @@ TEST_CASE("IPC problems with deadlines and required concurrency are solved with 
   const std::vector<Case> cases = {
       {"ipc-2011/match-cellar-temporal-satisficing/domain.pddl", "ipc-2011/match-cellar-temporal-satisficing/instances/instance-1.pddl"},
       {"ipc-2004/satellite-time-time-windows-strips/domain.pddl", "ipc-2004/satellite-time-time-windows-strips/instances/instance-1.pddl"},
+      // Derived predicates: a reader of a derived fact must follow writers of its support.
+      {"ipc-2004/psr-middle-derived-predicates-adl/domain.pddl", "ipc-2004/psr-middle-derived-predicates-adl/instances/instance-1.pddl"},
   };
   for (const Case& c : cases) {
     INFO(c.problem);
