@@ -137,6 +137,80 @@ ValidationResult validate_from(const GroundTask& task, const PlanningStart& star
   return executor.run(steps, printed.plan.steps.size(), from);
 }
 
+// A phase of the pipeline: one search, or several taking turns one step
+// each (a portfolio in one thread: GBFS and weighted A* fail on different
+// problems, and neither knows in advance which it will be).
+struct Phase {
+  std::vector<std::pair<std::string, double>> engines;  // kind, weight
+  std::uint64_t expansion_budget = 0;                    // 0: none
+};
+
+struct PhaseOutcome {
+  SearchStatus status = SearchStatus::InProgress;  // InProgress: a limit or the budget
+  bool budget_spent = false;
+  bool root_dead_end = false;
+  std::optional<Solution> solution;
+  std::string engine;
+  SearchStatistics statistics;
+};
+
+void add(SearchStatistics& into, const SearchStatistics& s) {
+  into.expanded += s.expanded;
+  into.evaluated += s.evaluated;
+  into.generated += s.generated;
+  into.duplicates += s.duplicates;
+  into.unschedulable += s.unschedulable;
+  into.dead_ends += s.dead_ends;
+}
+
+PhaseOutcome run_phase(const Phase& phase, const TaskIndex& index, const SearchStart& start, TemporalRpg& heuristic,
+                       const BestFirstOptions& base, const PlannerOptions& options, Clock::time_point began) {
+  std::vector<std::unique_ptr<SearchSpace>> spaces;
+  std::vector<std::unique_ptr<SearchEngine>> engines;
+  for (const auto& [kind, weight] : phase.engines) {
+    spaces.push_back(std::make_unique<SearchSpace>(index, start, options.epsilon));
+    BestFirstOptions bfs = base;
+    bfs.weight = weight;
+    engines.push_back(kind == "ehc" ? make_enforced_hill_climbing(*spaces.back(), heuristic)
+                                    : make_best_first_search(*spaces.back(), heuristic, bfs));
+  }
+  PhaseOutcome outcome;
+  std::vector<bool> exhausted(engines.size(), false);
+  std::size_t left = engines.size();
+  for (std::size_t steps = 0; left > 0; ++steps) {
+    if ((steps & 15) == 0) {
+      std::size_t nodes = 0;
+      std::uint64_t expanded = 0;
+      for (std::size_t e = 0; e < engines.size(); ++e) {
+        nodes += spaces[e]->size();
+        expanded += engines[e]->statistics().expanded;
+      }
+      if (since(began) > options.time_limit || nodes > options.node_limit) break;
+      if (phase.expansion_budget && expanded > phase.expansion_budget) {
+        outcome.budget_spent = true;
+        break;
+      }
+    }
+    const std::size_t e = steps % engines.size();
+    if (exhausted[e]) continue;
+    const SearchStatus status = engines[e]->step();
+    if (status == SearchStatus::Solved) {
+      outcome.status = SearchStatus::Solved;
+      outcome.solution = engines[e]->solution();
+      outcome.engine = engines[e]->name();
+      break;
+    }
+    if (status == SearchStatus::Exhausted) {
+      exhausted[e] = true;
+      --left;
+    }
+  }
+  if (left == 0) outcome.status = SearchStatus::Exhausted;
+  outcome.root_dead_end = spaces.front()->node(spaces.front()->root()).h == std::numeric_limits<double>::infinity();
+  for (const auto& engine : engines) add(outcome.statistics, engine->statistics());
+  return outcome;
+}
+
 }  // namespace
 
 PlanningStart initial_start(const GroundTask& task) {
@@ -220,14 +294,17 @@ PlannerResult Planner::plan_from(const PlanningStart& start, const std::function
   const bool can_prune = !task_->metric || (task_->metric->minimize && monotone(*task_, task_->metric->expression));
   result.times.setup = since(began);
 
-  // One search after another: the configured one (EHC falls back to GBFS),
-  // then, in anytime mode, weighted A* with falling weights under a bound.
-  std::vector<std::pair<std::string, double>> pipeline;
-  if (options_.search == "ehc") pipeline = {{"ehc", 0}, {"gbfs", 0}};
-  if (options_.search == "gbfs") pipeline = {{"gbfs", 0}};
-  if (options_.search == "wastar") pipeline = {{"wastar", options_.weight}};
+  // One phase after another: the configured search (EHC, under a budget of
+  // expansions, falls back to GBFS and weighted A* taking turns), then, in
+  // anytime mode, weighted A* with falling weights under a bound.
+  std::vector<Phase> pipeline;
+  if (options_.search == "ehc") {
+    pipeline = {{{{"ehc", 0.0}}, options_.ehc_expansions}, {{{"gbfs", 0.0}, {"wastar", options_.weight}}, 0}};
+  }
+  if (options_.search == "gbfs") pipeline = {{{{"gbfs", 0.0}}, 0}};
+  if (options_.search == "wastar") pipeline = {{{{"wastar", options_.weight}}, 0}};
   if (options_.anytime) {
-    for (double w : {5.0, 3.0, 2.0, 1.5, 1.0}) pipeline.emplace_back("wastar", w);
+    for (double w : {5.0, 3.0, 2.0, 1.5, 1.0}) pipeline.push_back({{{"wastar", w}}, 0});
   }
   double best_value = std::numeric_limits<double>::infinity();
   bool exhausted_all = true;
@@ -235,10 +312,9 @@ PlannerResult Planner::plan_from(const PlanningStart& start, const std::function
   const Clock::time_point search_began = Clock::now();
   for (std::size_t phase = 0; phase < pipeline.size(); ++phase) {
     if (!options_.anytime && !result.plans.empty()) break;
-    if (pipeline[phase].first == "gbfs" && phase > 0 && !result.plans.empty()) continue;
-    SearchSpace space(index, search_start, options_.epsilon);
+    const bool fallback = phase == 1 && options_.search == "ehc";
+    if (fallback && !result.plans.empty()) continue;
     BestFirstOptions bfs;
-    bfs.weight = pipeline[phase].second;
     if (can_prune && !result.plans.empty()) {
       bfs.prune = [&, this](const SearchNode& node) {
         if (!task_->metric) return static_cast<double>(node.depth) >= best_value;
@@ -251,38 +327,24 @@ PlannerResult Planner::plan_from(const PlanningStart& start, const std::function
         }
       };
     }
-    std::unique_ptr<SearchEngine> engine = pipeline[phase].first == "ehc"
-                                               ? make_enforced_hill_climbing(space, heuristic)
-                                               : make_best_first_search(space, heuristic, bfs);
-    SearchStatus status = SearchStatus::InProgress;
-    std::size_t steps = 0;
-    while (status == SearchStatus::InProgress) {
-      if ((++steps & 15) == 0 && (since(search_began) > options_.time_limit || space.size() > options_.node_limit)) {
-        break;
-      }
-      status = engine->step();
-    }
-    const SearchStatistics& s = engine->statistics();
-    result.statistics.expanded += s.expanded;
-    result.statistics.evaluated += s.evaluated;
-    result.statistics.generated += s.generated;
-    result.statistics.duplicates += s.duplicates;
-    result.statistics.unschedulable += s.unschedulable;
-    result.statistics.dead_ends += s.dead_ends;
-    if (status == SearchStatus::InProgress) {
+    const PhaseOutcome outcome =
+        run_phase(pipeline[phase], index, search_start, heuristic, bfs, options_, search_began);
+    add(result.statistics, outcome.statistics);
+    if (outcome.budget_spent) continue;  // EHC gave up; the fallback takes over
+    if (outcome.status == SearchStatus::InProgress) {
       exhausted_all = false;
       break;  // a limit was reached
     }
-    if (status == SearchStatus::Exhausted) {
-      const SearchNode& root = space.node(space.root());
-      if (root.h == std::numeric_limits<double>::infinity()) {
+    if (outcome.status == SearchStatus::Exhausted) {
+      if (outcome.root_dead_end) {
         proof = "the goal is unreachable even in the relaxation (temporal relaxed planning graph)";
         break;
       }
       // EHC is incomplete. A best-first search without a bound is complete
       // only where schedules cannot close doors: no deadlines (timed
       // literals) and no upper bounds on durations.
-      if (pipeline[phase].first != "ehc" && result.plans.empty() && !deadlines_possible(*task_)) {
+      const bool complete_search = pipeline[phase].engines.front().first != "ehc";
+      if (complete_search && result.plans.empty() && !deadlines_possible(*task_)) {
         proof = "the search space is exhausted";
       }
       continue;
@@ -290,12 +352,12 @@ PlannerResult Planner::plan_from(const PlanningStart& start, const std::function
     const Clock::time_point validation_began = Clock::now();
     FoundPlan found;
     std::vector<ActionId> actions;
-    found.plan = to_plan(*task_, *engine->solution(), &actions);
+    found.plan = to_plan(*task_, *outcome.solution, &actions);
     found.text = plan_text(found.plan);
-    found.engine = engine->name();
+    found.engine = outcome.engine;
     found.seconds = since(search_began);
     found.validation = from_initial ? validator.validate(read_plan(found.text, "planner output").plan)
-                                    : validate_from(*task_, start, *engine->solution(), actions, found.text,
+                                    : validate_from(*task_, start, *outcome.solution, actions, found.text,
                                                     options_.epsilon);
     result.times.validation += since(validation_began);
     if (!found.validation.valid) {

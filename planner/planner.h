@@ -25,9 +25,12 @@
 namespace alplan {
 
 struct PlannerOptions {
-  std::string search = "ehc";      // ehc (falls back to gbfs), gbfs, wastar
+  std::string search = "ehc";      // ehc (falls back to gbfs + wastar), gbfs, wastar
   std::string heuristic = "trpg";  // trpg, or trpg-nohelpful
-  double weight = 3.0;             // for wastar
+  double weight = 3.0;             // for wastar, and wastar's turns in the ehc fallback
+  // EHC gives up after this many expansions (it is incomplete and can wander
+  // on plateaus); GBFS and weighted A* then take turns.
+  std::uint64_t ehc_expansions = 20000;
   double time_limit = std::numeric_limits<double>::infinity();  // seconds, search only
   std::size_t node_limit = std::numeric_limits<std::size_t>::max();
   bool anytime = false;            // keep improving after the first plan
