@@ -113,6 +113,27 @@ std::string layer_computing(const std::vector<TfNode>& nodes, std::string output
   return output;
 }
 
+// OpenCV's importer reads some axes as `int_val(0)` of a Const without
+// checking that it exists (Concat, ConcatV2, ExpandDims); a file giving
+// anything else must be refused here rather than crash there.
+void check_constant_axes(const std::vector<TfNode>& nodes, const std::string& source) {
+  for (const TfNode& node : nodes) {
+    std::optional<std::size_t> axis_input;
+    if (node.op == "ConcatV2" && !node.inputs.empty()) axis_input = node.inputs.size() - 1;
+    if (node.op == "Concat" && !node.inputs.empty()) axis_input = 0;
+    if (node.op == "ExpandDims" && node.inputs.size() > 1) axis_input = 1;
+    if (!axis_input) continue;
+    const std::string axis = producer_name(node.inputs[*axis_input]);
+    const auto producer = std::find_if(nodes.begin(), nodes.end(), [&](const TfNode& n) { return n.name == axis; });
+    const bool scalar = producer != nodes.end() && producer->op == "Const" && producer->value &&
+                        producer->value->dtype == TfDataType::Int32 &&
+                        producer->value->content.size() == sizeof(std::int32_t);
+    if (!scalar)
+      throw ModelFormatError(source + ": node '" + node.name + "' (" + node.op + "): its axis '" + axis +
+                             "' is not a one-element int32 constant");
+  }
+}
+
 std::vector<TfNode> importable_nodes(const std::filesystem::path& model_json, const std::vector<std::string>& outputs) {
   const std::string source = model_json.string();
   const json model = read_model_json(model_json);
@@ -120,7 +141,9 @@ std::vector<TfNode> importable_nodes(const std::filesystem::path& model_json, co
   auto weights = read_tfjs_weights(model.at("weightsManifest"), model_json);
   attach_weights(nodes, weights, source);
   // Pruning first keeps errors about dangling inputs on the model's own names.
-  return unfuse_tfjs_ops(nodes_needed_for(nodes, outputs, source), source);
+  std::vector<TfNode> needed = unfuse_tfjs_ops(nodes_needed_for(nodes, outputs, source), source);
+  check_constant_axes(needed, source);
+  return needed;
 }
 
 }  // namespace

@@ -206,4 +206,10 @@ TEST_CASE("malformed tfjs models are reported with the file and the node, never 
   // An op OpenCV has no layer for, when an output needs it.
   write_file(folder.path() / "tiny.bin", tiny_weights());
   CHECK_THAT(error_for(tiny_model().dump(), {"unused"}), Contains("node 'unused'") && Contains("OpenCV"));
+
+  // ConcatV2 whose axis is not a scalar: OpenCV would read past its values.
+  model = tiny_model();
+  model["modelTopology"]["node"].push_back(
+      {{"name", "joined"}, {"op", "ConcatV2"}, {"input", {"x", "x", "axes"}}, {"attr", {{"N", {{"i", "2"}}}}}});
+  CHECK_THAT(error_for(model.dump(), {"joined"}), Contains("node 'joined' (ConcatV2)") && Contains("'axes'"));
 }
