@@ -95,7 +95,8 @@ void attach_weights(std::vector<TfNode>& nodes, std::map<std::string, TfTensor>&
 // The OpenCV layer computing `output`. OpenCV's importer maps an Identity to
 // the layer it copies, and folds a BiasAdd into the convolution or matrix
 // product before it, whose name the merged layer keeps.
-std::string layer_computing(const std::vector<TfNode>& nodes, std::string output) {
+std::string layer_computing(const std::vector<TfNode>& nodes, const std::string& requested) {
+  std::string output = requested;
   const auto node_named = [&](const std::string& name) {
     return std::find_if(nodes.begin(), nodes.end(), [&](const TfNode& n) { return n.name == name; });
   };

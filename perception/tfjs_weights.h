@@ -7,6 +7,7 @@
 // rounded for int32 weights; or float16) restored to their original type.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
