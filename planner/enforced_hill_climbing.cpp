@@ -12,8 +12,8 @@ bool is_helpful(const SearchNode& parent, const StepRecord& step) {
 
 class EnforcedHillClimbing : public SearchEngine {
  public:
-  EnforcedHillClimbing(SearchSpace& space, TemporalRpg& heuristic, bool helpful_only)
-      : space_(space), heuristic_(heuristic), helpful_only_(helpful_only) {}
+  EnforcedHillClimbing(SearchSpace& space, TemporalRpg& heuristic, bool helpful_only, SearchDeadline deadline)
+      : space_(space), heuristic_(heuristic), helpful_only_(helpful_only), deadline_(deadline) {}
 
   std::string name() const override { return helpful_only_ ? "ehc (helpful actions)" : "ehc"; }
 
@@ -40,6 +40,7 @@ class EnforcedHillClimbing : public SearchEngine {
     const bool any_helpful = !children.empty() && is_helpful(parent, children.front().node.step);
     for (Child& child : children) {
       if (helpful_only_ && any_helpful && !is_helpful(space_.node(id), child.node.step)) break;
+      if (passed(deadline_)) return SearchStatus::InProgress;
       if (!space_.evaluate(child, heuristic_, stats_)) continue;
       const double h = child.node.h;
       PartialPlan child_plan = child.plan;
@@ -68,6 +69,7 @@ class EnforcedHillClimbing : public SearchEngine {
   SearchSpace& space_;
   TemporalRpg& heuristic_;
   bool helpful_only_;
+  SearchDeadline deadline_;
   bool started_ = false;
   double best_h_ = 0;
   std::deque<NodeId> open_;
@@ -76,8 +78,8 @@ class EnforcedHillClimbing : public SearchEngine {
 }  // namespace
 
 std::unique_ptr<SearchEngine> make_enforced_hill_climbing(SearchSpace& space, TemporalRpg& heuristic,
-                                                          bool helpful_only) {
-  return std::make_unique<EnforcedHillClimbing>(space, heuristic, helpful_only);
+                                                          bool helpful_only, SearchDeadline deadline) {
+  return std::make_unique<EnforcedHillClimbing>(space, heuristic, helpful_only, deadline);
 }
 
 }  // namespace alplan
