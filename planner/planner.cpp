@@ -283,8 +283,11 @@ PlannerResult Planner::plan_from(const PlanningStart& start, const std::function
   derive(*task_, search_start.state);
 
   TemporalRpg heuristic(index, {options_.heuristic == "trpg"});
-  PlanValidator validator(task_->lifted, {options_.epsilon, false});
   const bool from_initial = is_initial(*task_, start);
+  // Plans from an observed state are checked by validate_from; the plan
+  // validator (which grounds the task again for itself) only from the start.
+  std::optional<PlanValidator> validator;
+  if (from_initial) validator.emplace(task_->lifted, ValidatorOptions{options_.epsilon, false});
   const bool can_prune = !task_->metric || (task_->metric->minimize && monotone(*task_, task_->metric->expression));
   result.times.setup = since(began);
 
@@ -351,7 +354,7 @@ PlannerResult Planner::plan_from(const PlanningStart& start, const std::function
     found.text = plan_text(found.plan);
     found.engine = outcome.engine;
     found.seconds = since(search_began);
-    found.validation = from_initial ? validator.validate(read_plan(found.text, "planner output").plan)
+    found.validation = from_initial ? validator->validate(read_plan(found.text, "planner output").plan)
                                     : validate_from(*task_, start, *outcome.solution, actions, found.text,
                                                     options_.epsilon);
     result.times.validation += since(validation_began);

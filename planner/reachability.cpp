@@ -257,8 +257,8 @@ class Fixpoint {
     for (std::size_t c = 0; c < count; ++c) {
       deadline_.check("reachability");  // one join can take long on its own
       const std::uint32_t atom_id = tuples_[atom.predicate][(*candidates)[c]];
-      const std::vector<ObjectId> args = result_.atoms.key(atom_id).args;
-      if (match(atom, args, rule, binding)) join(rule, binding, done, matched + 1);
+      // The key is read before join() can intern atoms (and move the keys).
+      if (match(atom, result_.atoms.key(atom_id).args, rule, binding)) join(rule, binding, done, matched + 1);
       binding = saved;
     }
     done[best] = false;
