@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <random>
 #include <sstream>
 
@@ -32,7 +33,10 @@ struct RunRecord {
   std::size_t repairs = 0, stability = 0;
   int planner_calls = 0;
   std::vector<double> latencies_ms;
-  double delay = 0.0, makespan = 0.0, cost = 0.0;
+  // Until the senior is comforted, beyond the original plan's end; none
+  // for a run that never comforts the senior (its end is the failure's).
+  std::optional<double> delay;
+  double makespan = 0.0, cost = 0.0;
   std::string failures, outcome;
 };
 
@@ -132,7 +136,7 @@ RunRecord execute(const std::string& home_name, int run, const pddl::Domain& dom
   double planned_end = 0.0;
   for (const repair::ScheduledAction& s : plan.steps) planned_end = std::max(planned_end, s.end());
   r.makespan = report.end_time;
-  r.delay = report.end_time - planned_end;
+  if (report.goal_reached) r.delay = report.end_time - planned_end;
   const auto cost = world.observe().values.find({"total-cost"});
   r.cost = cost == world.observe().values.end() ? 0.0 : cost->second;
   for (const repair::ExogenousEvent& e : failures) r.failures += (r.failures.empty() ? "" : "; ") + e.description;
@@ -161,7 +165,7 @@ std::vector<Summary> summarise(const std::vector<RunRecord>& records, const std:
       s.planner_calls += r.planner_calls;
       if (!r.reached) continue;
       ++s.reached;
-      s.delays.push_back(r.delay);
+      s.delays.push_back(*r.delay);
       s.makespans.push_back(r.makespan);
       s.costs.push_back(r.cost);
     }
@@ -186,11 +190,12 @@ void write_outputs(const RepairBenchOptions& o, const std::vector<RunRecord>& re
     std::string latencies;
     for (double l : r.latencies_ms) latencies += (latencies.empty() ? "" : " ") + fixed(l, 3);
     runs.add({r.home, std::to_string(r.run), r.strategy, r.reached ? "yes" : "no", std::to_string(r.repairs),
-              latencies, std::to_string(r.stability), std::to_string(r.planner_calls), fixed(r.delay, 3),
+              latencies, std::to_string(r.stability), std::to_string(r.planner_calls), r.delay ? fixed(*r.delay, 3) : "",
               fixed(r.makespan, 3), fixed(r.cost, 1), r.failures, r.outcome});
     runs_json.push_back({{"home", r.home}, {"run", r.run}, {"strategy", r.strategy}, {"comforted", r.reached},
                          {"repairs", r.repairs}, {"latency_ms", r.latencies_ms}, {"stability", r.stability},
-                         {"planner_calls", r.planner_calls}, {"delay", r.delay}, {"makespan", r.makespan},
+                         {"planner_calls", r.planner_calls}, {"delay", r.delay ? nlohmann::json(*r.delay) : nlohmann::json()},
+                         {"makespan", r.makespan},
                          {"cost", r.cost}, {"failures", r.failures}, {"outcome", r.outcome}});
   }
   Table table({"strategy", "comforted", "repairs", "latency median ms", "latency p95 ms", "stability/run",
