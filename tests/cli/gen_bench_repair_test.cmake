@@ -33,3 +33,13 @@ if(failed EQUAL 0)
   message(FATAL_ERROR "expected a failed run (suggest) in ${WORK}/repair/runs.csv")
 endif()
 expect_run(2 "unknown repair strategy 'fast'" ${ALPLAN} bench repair --homes 1 --strategies fast --out ${WORK}/x)
+# Failures of every kind the world simulator draws, emotion changes included.
+expect_run(0 "latency median ms" ${ALPLAN} bench repair --homes 1 --runs-per-home 2 --seed 2 --strategies replan
+  --events all --out ${WORK}/repair-all)
+expect_run(0 "latency median ms" ${ALPLAN} bench repair --homes 1 --runs-per-home 1 --seed 2 --strategies replan
+  --events emotion --out ${WORK}/repair-emotion)
+file(READ ${WORK}/repair-emotion/runs.csv emotion_runs)
+if(NOT emotion_runs MATCHES "senior1 is no longer sad but bored")
+  message(FATAL_ERROR "bench repair --events emotion drew no emotion change:\n${emotion_runs}")
+endif()
+expect_run(2 "--events takes" ${ALPLAN} bench repair --homes 1 --events earthquake --out ${WORK}/x)
