@@ -31,20 +31,25 @@ class EnforcedHillClimbing : public SearchEngine {
     open_.pop_front();
     ++stats_.expanded;
     const PartialPlan plan = space_.partial_plan(id);
-    std::vector<Child> children = space_.children(id, plan, stats_);
+    std::vector<Successor> successors = space_.successors(id, stats_);
     const SearchNode& parent = space_.node(id);
     // Helpful children first; with helpful_only, the others only when the
-    // node has no helpful child at all.
-    std::stable_partition(children.begin(), children.end(),
-                          [&](const Child& c) { return is_helpful(parent, c.node.step); });
-    const bool any_helpful = !children.empty() && is_helpful(parent, children.front().node.step);
-    for (Child& child : children) {
-      if (helpful_only_ && any_helpful && !is_helpful(space_.node(id), child.node.step)) break;
+    // node has no schedulable helpful child at all. Children are scheduled
+    // as they are reached: most are never looked at.
+    const auto helpful_end = std::stable_partition(successors.begin(), successors.end(),
+                                                   [&](const Successor& s) { return is_helpful(parent, s.step); });
+    const std::size_t helpful = static_cast<std::size_t>(helpful_end - successors.begin());
+    bool any_helpful = false;
+    for (std::size_t i = 0; i < successors.size(); ++i) {
+      if (helpful_only_ && any_helpful && i >= helpful) break;
       if (passed(deadline_)) return SearchStatus::InProgress;
-      if (!space_.evaluate(child, heuristic_, stats_)) continue;
-      const double h = child.node.h;
-      PartialPlan child_plan = child.plan;
-      std::optional<NodeId> stored = space_.insert(std::move(child), stats_);
+      std::optional<Child> child = space_.schedule(id, plan, std::move(successors[i]), stats_);
+      if (!child) continue;
+      any_helpful = any_helpful || i < helpful;
+      if (!space_.evaluate(*child, heuristic_, stats_)) continue;
+      const double h = child->node.h;
+      PartialPlan child_plan = child->plan;
+      std::optional<NodeId> stored = space_.insert(std::move(*child), stats_);
       if (!stored) continue;
       if (h < best_h_) {
         best_h_ = h;
