@@ -43,18 +43,30 @@ void build_types(const pddl::Domain& domain, const std::vector<pddl::TypeNames>&
     info.name = type;
     task.types.push_back(std::move(info));
   }
+  // An object belongs to its declared types, their ancestors and "object".
+  auto membership = [&](const pddl::TypeNames& own) {
+    std::vector<bool> member(types.size(), false);
+    auto mark = [&](const std::string& type) {
+      if (auto id = names.types.find(type); id != names.types.end()) member[id->second] = true;
+    };
+    mark("object");
+    for (const std::string& x : own) {
+      mark(x);
+      if (const auto* ancestors = hierarchy.ancestors(x)) {
+        for (const std::string& a : *ancestors) mark(a);
+      }
+    }
+    std::vector<TypeId> ids;
+    for (TypeId t = 0; t < member.size(); ++t) {
+      if (member[t]) ids.push_back(t);
+    }
+    return ids;
+  };
   std::map<pddl::TypeNames, std::vector<TypeId>> memberships;
   for (ObjectId o = 0; o < task.objects.size(); ++o) {
     const pddl::TypeNames& own = object_types[o];
     auto [it, inserted] = memberships.try_emplace(own);
-    if (inserted) {
-      for (TypeId t = 0; t < types.size(); ++t) {
-        const bool member = types[t] == "object" || std::any_of(own.begin(), own.end(), [&](const std::string& x) {
-                              return hierarchy.is_subtype(x, types[t]);
-                            });
-        if (member) it->second.push_back(t);
-      }
-    }
+    if (inserted) it->second = membership(own);
     for (TypeId t : it->second) task.types[t].objects.push_back(o);
   }
 }
