@@ -1,17 +1,19 @@
 // alplan bench repair --homes N --failures-per-run K --seed S
 //                     --strategies replan,substitute,suggest,patch --out DIR
-//                     [--runs-per-home R] [--external] [--rooms ...]
+//                     [--runs-per-home R] [--external] [--events KINDS] [--rooms ...]
 // Compares repair strategies on the same failures in generated homes.
 #include <CLI/CLI.hpp>
 
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "benchmarks/harness/process_runner.h"
 #include "benchmarks/harness/repair_bench.h"
 #include "cli/commands.h"
 #include "domains/pddl_files.h"
+#include "repair/random_events.h"
 #include "repair/repair_strategy.h"
 
 namespace alplan::cli {
@@ -20,7 +22,23 @@ namespace {
 struct BenchRepairOptions {
   bench::RepairBenchOptions bench;
   std::string strategies = "replan,substitute,suggest,patch,adapt";
+  std::string events = "unavailable,moves,overrun";
 };
+
+// "all", or a comma-separated list of random event kinds.
+std::optional<std::vector<repair::RandomEventKind>> event_kinds(const std::string& list) {
+  if (list == "all") return repair::all_random_event_kinds();
+  std::vector<repair::RandomEventKind> kinds;
+  std::istringstream in(list);
+  for (std::string name; std::getline(in, name, ',');) {
+    if (name.empty()) continue;
+    const std::optional<repair::RandomEventKind> kind = repair::random_event_kind(name);
+    if (!kind) return std::nullopt;
+    kinds.push_back(*kind);
+  }
+  if (kinds.empty()) return std::nullopt;
+  return kinds;
+}
 
 int run_repair(BenchRepairOptions options) {
   options.bench.strategies.clear();
@@ -35,6 +53,13 @@ int run_repair(BenchRepairOptions options) {
     }
     options.bench.strategies.push_back(name);
   }
+  const auto kinds = event_kinds(options.events);
+  if (!kinds) {
+    std::cerr << "error: --events takes 'all' or a list of unavailable, appears, moves, emotion, overrun; got '"
+              << options.events << "'\n";
+    return kExitInputError;
+  }
+  options.bench.events.kinds = *kinds;
   if (options.bench.out_dir.empty()) {
     std::cerr << "error: --out is required\n";
     return kExitInputError;
@@ -64,6 +89,8 @@ void add_bench_repair_command(CLI::App* bench, int& exit_code) {
       ->check(CLI::PositiveNumber);
   r->add_option("--seed", o->bench.seed, "First home's seed; the others follow");
   r->add_option("--strategies", o->strategies, "Comma-separated: replan, substitute, suggest, patch, adapt");
+  r->add_option("--events", o->events,
+                "Failures to draw: 'all' or a comma-separated list of unavailable, appears, moves, emotion, overrun");
   r->add_option("--out", o->bench.out_dir, "Folder for runs.csv, runs.json, summary.md, summary.json, plots/");
   r->add_flag("--external", o->bench.external, "Also replan through `alplan plan` in a child process (the paper's way)");
   r->add_option("--rooms", o->bench.home.rooms, "Rooms per home");

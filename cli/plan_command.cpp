@@ -7,11 +7,15 @@
 #include <sys/resource.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <memory>
 #include <new>
+#include <optional>
+#include <string>
 
 #include "cli/commands.h"
 #include "cli/task_files.h"
@@ -38,17 +42,25 @@ struct PlanOptions {
   bool quiet = false;
 };
 
-nlohmann::json plan_json(const FoundPlan& p) {
+// Times are the printed plan's (three decimals on the 0.001 grid), as
+// numbers; `cost` is the sum of action costs where the domain has them (the
+// metric may weigh it with the makespan), VAL's value otherwise; `metric`
+// and `value` are the metric's and VAL's values.
+nlohmann::json plan_json(const FoundPlan& p, std::size_t index) {
   nlohmann::json steps = nlohmann::json::array();
   for (const PlanStep& s : p.plan.steps) {
-    nlohmann::json step = {{"time", *s.time}, {"action", s.action}, {"args", s.args}};
-    if (s.duration) step["duration"] = *s.duration;
+    nlohmann::json step = {{"time", rounded_plan_time(*s.time)}, {"action", s.action}, {"args", s.args}};
+    if (s.duration) step["duration"] = rounded_plan_time(*s.duration);
     steps.push_back(step);
   }
-  return {{"steps", steps},
-          {"makespan", p.validation.makespan},
-          {"metric", p.validation.metric ? nlohmann::json(*p.validation.metric) : nlohmann::json()},
-          {"cost", p.validation.value},
+  const ValidationResult& v = p.validation;
+  return {{"index", index},
+          {"steps", steps},
+          {"makespan", rounded_plan_time(v.makespan)},
+          {"metric", v.metric ? nlohmann::json(*v.metric) : nlohmann::json()},
+          {"value", v.value},
+          {"cost", v.total_cost.value_or(v.value)},
+          {"total_cost", v.total_cost ? nlohmann::json(*v.total_cost) : nlohmann::json()},
           {"found_after_seconds", p.seconds},
           {"search", p.engine},
           {"text", p.text}};
@@ -86,23 +98,57 @@ int exit_code(PlannerResult::Status s) {
   return kExitInternalError;
 }
 
-int run(const PlanOptions& options) {
-  const auto began = std::chrono::steady_clock::now();
-  if (options.memory_limit > 0) {
-    const rlim_t bytes = static_cast<rlim_t>(options.memory_limit * 1024 * 1024);
-    const rlimit limit{bytes, bytes};
-    setrlimit(RLIMIT_AS, &limit);
+// After the stream of improving plans, the best one, one "; best plan
+// KEY: VALUE" line per fact, so that a tool need not parse the stream.
+void print_best(const PlannerResult& result, std::ostream& out) {
+  const FoundPlan& best = *result.best();
+  const ValidationResult& v = best.validation;
+  out << "; best plan: " << result.plans.size() << " of " << result.plans.size() << "\n"
+      << "; best plan makespan: " << format_plan_time(v.makespan) << "\n"
+      << "; best plan metric: " << (v.metric ? readable(*v.metric) : std::string("none")) << "\n";
+  if (v.total_cost) out << "; best plan cost: " << readable(*v.total_cost) << "\n";
+  out << "; best plan found after: " << readable(best.seconds) << " s by " << best.engine << "\n";
+}
+
+// A limit reached before the planner could report one itself (memory while
+// loading or grounding, time while grounding): the same status the planner
+// gives, on the same streams, and exit 11.
+int limit_reached(const PlanOptions& options, const std::string& message) {
+  if (options.json) {
+    const nlohmann::json j = {{"status", status_name(PlannerResult::Status::LimitReached)},
+                              {"message", message},
+                              {"best", nullptr},
+                              {"plans", nlohmann::json::array()}};
+    std::cout << j.dump(2) << "\n";
+  } else {
+    std::cout << "; " << message << "\n; status: " << status_name(PlannerResult::Status::LimitReached) << "\n";
   }
+  return kExitLimit;
+}
+
+// Loads, grounds and plans; `phase` names the step under way, so that a
+// limit reached anywhere can say where. `task` receives the grounded task,
+// for the caller to decide when it is freed.
+int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<const GroundTask>& task) {
+  const auto began = std::chrono::steady_clock::now();
+  phase = "loading the files";
   const auto files = load_task_files(options.domain, options.problem, std::cerr, {!options.quiet});
   if (!files) return kExitInputError;
-  std::shared_ptr<const GroundTask> task;
+  phase = "grounding";
+  GroundingOptions grounding_options{{options.domain, options.problem}, std::nullopt};
+  if (std::isfinite(options.time_limit)) {
+    grounding_options.deadline = began + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                             std::chrono::duration<double>(options.time_limit));
+  }
   try {
-    task = ground(*files->domain, *files->problem, {{options.domain, options.problem}});
+    task = ground(*files->domain, *files->problem, grounding_options);
   } catch (const GroundingError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kExitInputError;
   }
   const double grounding = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+  if (grounding >= options.time_limit) return limit_reached(options, "the time limit was reached while grounding");
+  phase = "search";
   PlannerOptions planner_options;
   planner_options.search = options.search;
   planner_options.heuristic = options.heuristic;
@@ -117,22 +163,18 @@ int run(const PlanOptions& options) {
               << readable(p.validation.makespan) << ", value " << readable(p.validation.value) << "\n"
               << p.text << std::flush;
   };
-  PlannerResult result;
-  try {
-    result = Planner(task, planner_options).plan(on_plan);
-  } catch (const std::bad_alloc&) {
-    std::cerr << "error: memory limit reached\n";
-    return kExitLimit;
-  }
+  const PlannerResult result = Planner(task, planner_options).plan(on_plan);
+  phase = "writing the result";
   if (result.best() && !options.out.empty()) std::ofstream(options.out) << result.best()->text;
   if (options.json) {
     nlohmann::json plans = nlohmann::json::array();
-    for (const FoundPlan& p : result.plans) plans.push_back(plan_json(p));
+    for (std::size_t i = 0; i < result.plans.size(); ++i) plans.push_back(plan_json(result.plans[i], i + 1));
     const SearchStatistics& s = result.statistics;
     nlohmann::json j = {
         {"status", status_name(result.status)},
         {"message", result.message},
-        {"best", result.best() ? plan_json(*result.best()) : nlohmann::json()},
+        {"best", result.best() ? plan_json(*result.best(), result.plans.size()) : nlohmann::json()},
+        {"best_index", result.best() ? nlohmann::json(result.plans.size()) : nlohmann::json()},
         {"plans", plans},
         {"statistics",
          {{"expanded", s.expanded}, {"evaluated", s.evaluated}, {"generated", s.generated},
@@ -142,6 +184,7 @@ int run(const PlanOptions& options) {
           {"validation", result.times.validation}}}};
     std::cout << j.dump(2) << "\n";
   } else {
+    if (options.anytime && result.best()) print_best(result, std::cout);
     if (result.status != PlannerResult::Status::Solved) std::cout << "; " << result.message << "\n";
     std::cout << "; status: " << status_name(result.status) << "; expanded " << result.statistics.expanded
               << ", evaluated " << result.statistics.evaluated << ", grounding "
@@ -152,6 +195,37 @@ int run(const PlanOptions& options) {
     std::cerr << "error: " << result.message << "\n";
   }
   return exit_code(result.status);
+}
+
+int run(const PlanOptions& options) {
+  if (options.memory_limit > 0) {
+    const rlim_t bytes = static_cast<rlim_t>(options.memory_limit * 1024 * 1024);
+    const rlimit limit{bytes, bytes};
+    setrlimit(RLIMIT_AS, &limit);
+  }
+  // Memory can run out in any phase (the limit may also come from outside,
+  // as `bench planners` sets it): every phase's bad_alloc is a limit, exit
+  // 11, never an abort. Unwinding has freed the phase's memory by the time
+  // the handler reports it.
+  const char* phase = "starting";
+  std::shared_ptr<const GroundTask> task;
+  int code = kExitOk;
+  try {
+    code = plan_files(options, phase, task);
+  } catch (const std::bad_alloc&) {
+    task.reset();
+    std::cerr << "error: memory limit reached while " << phase << "\n";
+    code = limit_reached(options, std::string("the memory limit was reached while ") + phase);
+  } catch (const GroundingTimeout& e) {
+    code = limit_reached(options, e.what());
+  }
+  // The process ends here. Freeing a large grounded task piece by piece
+  // takes a good part of a second (0.2 s for driver-log's 134,000 actions),
+  // which a time limit would have to count; the operating system reclaims
+  // it at once.
+  std::cout.flush();
+  std::cerr.flush();
+  std::_Exit(code);
 }
 
 }  // namespace

@@ -95,7 +95,10 @@ int run(const ScenarioCommandOptions& o) {
               << paper_format(run.initial_plan) << "\n";
     for (const std::string& e : report.events) std::cout << "  " << e << "\n";
     for (const repair::RepairRecord& r : report.repairs) {
-      if (!r.repaired) continue;
+      if (!r.repaired) {
+        std::cout << "\nFailed repair (" << r.strategy << "):\n" << r.explanation.text();
+        continue;
+      }
       std::cout << "\nRepaired plan (" << r.strategy << (r.strategy == "proactive" ? "" : ", the paper's " + scenario->repaired_figure) << "):\n"
                 << paper_format(r.plan_text) << "\n" << r.explanation.text();
     }

@@ -37,25 +37,6 @@ std::vector<PaperScenario> paper_scenarios() {
   return all;
 }
 
-std::function<std::optional<std::pair<pddl::Condition, std::string>>(const repair::WorldState&)>
-emotion_goal_generator(const std::string& senior) {
-  return [senior](const repair::WorldState& observed) -> std::optional<std::pair<pddl::Condition, std::string>> {
-    const std::pair<const char*, const char*> remedies[] = {
-        {"terrified", "soothed"}, {"sad", "cheerful"}, {"bored", "entertained"}};
-    for (const auto& [emotion, goal] : remedies) {
-      if (!observed.holds({emotion, senior})) continue;
-      pddl::Condition condition;
-      condition.kind = pddl::Condition::Kind::Atom;
-      condition.atom.name = goal;
-      pddl::Term who;
-      who.name = senior;
-      condition.atom.args.push_back(who);
-      return std::make_pair(condition, senior + " is " + emotion);
-    }
-    return std::nullopt;
-  };
-}
-
 ScenarioRun run_paper_scenario(const PaperScenario& scenario, const ScenarioOptions& options) {
   const std::string dir = options.assisted_living_dir;
   const LoadedFiles files = load_pddl(dir + "/domain.pddl", dir + "/" + scenario.problem_file);

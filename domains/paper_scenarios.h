@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "domains/emotion_goals.h"
 #include "repair/monitor.h"
 #include "repair/world_simulator.h"
 
@@ -33,12 +34,6 @@ struct PaperScenario {
 };
 
 std::vector<PaperScenario> paper_scenarios();
-
-// The paper's goal generation (its Section 6.1) for one senior: terrified ->
-// (soothed s), sad -> (cheerful s), bored -> (entertained s), from the
-// emotion the observed state records.
-std::function<std::optional<std::pair<pddl::Condition, std::string>>(const repair::WorldState&)>
-emotion_goal_generator(const std::string& senior);
 
 struct ScenarioOptions {
   std::string assisted_living_dir;  // domains/assisted_living

@@ -25,6 +25,11 @@ class TypeHierarchy {
   bool overlaps(const TypeNames& a, const TypeNames& b) const;
   // Types whose ancestors include themselves.
   std::vector<std::string> cyclic_types() const;
+  // The proper ancestors of a known type ("object" included); null if unknown.
+  const std::unordered_set<std::string>* ancestors(const std::string& type) const {
+    auto it = ancestors_.find(type);
+    return it == ancestors_.end() ? nullptr : &it->second;
+  }
   // Every known type, "object" first, then in order of first mention.
   const std::vector<std::string>& types() const { return order_; }
 

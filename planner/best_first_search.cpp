@@ -47,6 +47,7 @@ class BestFirstSearch : public SearchEngine {
     const std::vector<Snap>& helpful = space_.node(*id).helpful;
     for (Child& child : children) {
       if (options_.prune && options_.prune(child.node)) continue;
+      if (passed(options_.deadline)) return SearchStatus::InProgress;
       const bool preferred = std::find(helpful.begin(), helpful.end(), child.node.step.snap) != helpful.end();
       if (!space_.evaluate(child, heuristic_, stats_)) continue;
       if (options_.prune && options_.prune(child.node)) continue;

@@ -12,8 +12,8 @@ bool is_helpful(const SearchNode& parent, const StepRecord& step) {
 
 class EnforcedHillClimbing : public SearchEngine {
  public:
-  EnforcedHillClimbing(SearchSpace& space, TemporalRpg& heuristic, bool helpful_only)
-      : space_(space), heuristic_(heuristic), helpful_only_(helpful_only) {}
+  EnforcedHillClimbing(SearchSpace& space, TemporalRpg& heuristic, bool helpful_only, SearchDeadline deadline)
+      : space_(space), heuristic_(heuristic), helpful_only_(helpful_only), deadline_(deadline) {}
 
   std::string name() const override { return helpful_only_ ? "ehc (helpful actions)" : "ehc"; }
 
@@ -31,19 +31,25 @@ class EnforcedHillClimbing : public SearchEngine {
     open_.pop_front();
     ++stats_.expanded;
     const PartialPlan plan = space_.partial_plan(id);
-    std::vector<Child> children = space_.children(id, plan, stats_);
+    std::vector<Successor> successors = space_.successors(id, stats_);
     const SearchNode& parent = space_.node(id);
     // Helpful children first; with helpful_only, the others only when the
-    // node has no helpful child at all.
-    std::stable_partition(children.begin(), children.end(),
-                          [&](const Child& c) { return is_helpful(parent, c.node.step); });
-    const bool any_helpful = !children.empty() && is_helpful(parent, children.front().node.step);
-    for (Child& child : children) {
-      if (helpful_only_ && any_helpful && !is_helpful(space_.node(id), child.node.step)) break;
-      if (!space_.evaluate(child, heuristic_, stats_)) continue;
-      const double h = child.node.h;
-      PartialPlan child_plan = child.plan;
-      std::optional<NodeId> stored = space_.insert(std::move(child), stats_);
+    // node has no schedulable helpful child at all. Children are scheduled
+    // as they are reached: most are never looked at.
+    const auto helpful_end = std::stable_partition(successors.begin(), successors.end(),
+                                                   [&](const Successor& s) { return is_helpful(parent, s.step); });
+    const std::size_t helpful = static_cast<std::size_t>(helpful_end - successors.begin());
+    bool any_helpful = false;
+    for (std::size_t i = 0; i < successors.size(); ++i) {
+      if (helpful_only_ && any_helpful && i >= helpful) break;
+      if (passed(deadline_)) return SearchStatus::InProgress;
+      std::optional<Child> child = space_.schedule(id, plan, std::move(successors[i]), stats_);
+      if (!child) continue;
+      any_helpful = any_helpful || i < helpful;
+      if (!space_.evaluate(*child, heuristic_, stats_)) continue;
+      const double h = child->node.h;
+      PartialPlan child_plan = child->plan;
+      std::optional<NodeId> stored = space_.insert(std::move(*child), stats_);
       if (!stored) continue;
       if (h < best_h_) {
         best_h_ = h;
@@ -68,6 +74,7 @@ class EnforcedHillClimbing : public SearchEngine {
   SearchSpace& space_;
   TemporalRpg& heuristic_;
   bool helpful_only_;
+  SearchDeadline deadline_;
   bool started_ = false;
   double best_h_ = 0;
   std::deque<NodeId> open_;
@@ -76,8 +83,8 @@ class EnforcedHillClimbing : public SearchEngine {
 }  // namespace
 
 std::unique_ptr<SearchEngine> make_enforced_hill_climbing(SearchSpace& space, TemporalRpg& heuristic,
-                                                          bool helpful_only) {
-  return std::make_unique<EnforcedHillClimbing>(space, heuristic, helpful_only);
+                                                          bool helpful_only, SearchDeadline deadline) {
+  return std::make_unique<EnforcedHillClimbing>(space, heuristic, helpful_only, deadline);
 }
 
 }  // namespace alplan

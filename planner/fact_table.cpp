@@ -9,9 +9,13 @@ std::size_t GroundKeyHash::operator()(const GroundKey& key) const noexcept {
 }
 
 std::uint32_t GroundKeyTable::intern(const GroundKey& key) {
-  auto [it, inserted] = ids_.emplace(key, static_cast<std::uint32_t>(keys_.size()));
-  if (inserted) keys_.push_back(key);
-  return it->second;
+  // Look up first: most keys the reachability fixpoint interns are known
+  // already, and emplace would build (and throw away) a node for each.
+  if (const auto it = ids_.find(key); it != ids_.end()) return it->second;
+  const auto id = static_cast<std::uint32_t>(keys_.size());
+  ids_.emplace(key, id);
+  keys_.push_back(key);
+  return id;
 }
 
 std::optional<std::uint32_t> GroundKeyTable::find(const GroundKey& key) const {

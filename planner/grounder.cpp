@@ -27,8 +27,9 @@ bool never_applicable(const GroundAction& a) {
 }
 
 void instantiate_actions(const NormalizedTask& lifted, const ReachableSet& reachable, Instantiator& instantiate,
-                         GroundTask& task) {
+                         GroundTask& task, Deadline deadline) {
   for (const Instantiation& i : reachable.actions) {
+    deadline.check("instantiation");
     if (!lifted.actions[i.schema].unsupported.empty()) continue;
     GroundAction action = instantiate.action(i.schema, i.args);
     if (!never_applicable(action)) task.actions.push_back(std::move(action));
@@ -36,9 +37,10 @@ void instantiate_actions(const NormalizedTask& lifted, const ReachableSet& reach
 }
 
 void instantiate_axioms(const NormalizedTask& lifted, const ReachableSet& reachable, Instantiator& instantiate,
-                        GroundTask& task) {
+                        GroundTask& task, Deadline deadline) {
   const std::vector<std::uint32_t> strata = derived_strata(lifted);
   for (const Instantiation& i : reachable.axioms) {
+    deadline.check("instantiation of axioms");
     const DerivedRule& rule = lifted.derived_rules[i.schema];
     std::vector<ObjectId> binding(std::max<std::size_t>(rule.variable_slots, i.args.size()), kNoId);
     std::copy(i.args.begin(), i.args.end(), binding.begin());
@@ -115,12 +117,14 @@ std::vector<std::uint32_t> derived_strata(const NormalizedTask& task) {
 
 namespace {
 
-std::shared_ptr<GroundTask> build(std::shared_ptr<const NormalizedTask> lifted) {
+std::shared_ptr<GroundTask> build(std::shared_ptr<const NormalizedTask> lifted, const GroundingOptions& options) {
   auto task = std::make_shared<GroundTask>();
   task->lifted = lifted;
 
   Clock::time_point start = Clock::now();
-  const ReachableSet reachable = compute_reachable(*lifted);
+  ReachabilityOptions reachability;
+  reachability.deadline = options.deadline;
+  const ReachableSet reachable = compute_reachable(*lifted, reachability);
   task->times.reachability = seconds_since(start);
 
   // The fact table holds the reachable fluent atoms, in discovery order.
@@ -132,12 +136,12 @@ std::shared_ptr<GroundTask> build(std::shared_ptr<const NormalizedTask> lifted) 
   Instantiator instantiate(*lifted, statics, task->facts, task->numeric, {true, false});
 
   start = Clock::now();
-  instantiate_actions(*lifted, reachable, instantiate, *task);
+  instantiate_actions(*lifted, reachable, instantiate, *task, Deadline(options.deadline));
   instantiate_state(*lifted, instantiate, *task);
   task->times.instantiate = seconds_since(start);
 
   start = Clock::now();
-  instantiate_axioms(*lifted, reachable, instantiate, *task);
+  instantiate_axioms(*lifted, reachable, instantiate, *task, Deadline(options.deadline));
   task->times.axioms = seconds_since(start);
   instantiate_values(*lifted, *task);
   return task;
@@ -145,8 +149,9 @@ std::shared_ptr<GroundTask> build(std::shared_ptr<const NormalizedTask> lifted) 
 
 }  // namespace
 
-std::shared_ptr<const GroundTask> ground(std::shared_ptr<const NormalizedTask> lifted) {
-  return build(std::move(lifted));
+std::shared_ptr<const GroundTask> ground(std::shared_ptr<const NormalizedTask> lifted,
+                                         const GroundingOptions& options) {
+  return build(std::move(lifted), options);
 }
 
 std::shared_ptr<const GroundTask> ground(const pddl::Domain& domain, const pddl::Problem& problem,
@@ -154,7 +159,7 @@ std::shared_ptr<const GroundTask> ground(const pddl::Domain& domain, const pddl:
   const Clock::time_point start = Clock::now();
   auto lifted = std::make_shared<const NormalizedTask>(normalize(domain, problem, options.names));
   const double normalize_time = seconds_since(start);
-  std::shared_ptr<GroundTask> task = build(std::move(lifted));
+  std::shared_ptr<GroundTask> task = build(std::move(lifted), options);
   task->times.normalize = normalize_time;
   return task;
 }

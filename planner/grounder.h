@@ -3,11 +3,14 @@
 //     --instantiate--> GroundTask (+ axiom strata).
 #pragma once
 
+#include <chrono>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "pddl_parser/ast.h"
+#include "planner/deadline.h"
 #include "planner/ground_task.h"
 #include "planner/normalize.h"
 
@@ -22,11 +25,16 @@ class GroundingError : public std::runtime_error {
 
 struct GroundingOptions {
   NormalizeOptions names;
+  // Past this moment grounding stops with GroundingTimeout (deadline.h),
+  // checked in the reachability fixpoint and the instantiation loops, so
+  // that a time limit bounds the whole run, not just the search.
+  std::optional<std::chrono::steady_clock::time_point> deadline;
 };
 
 std::shared_ptr<const GroundTask> ground(const pddl::Domain& domain, const pddl::Problem& problem,
                                          const GroundingOptions& options = {});
-std::shared_ptr<const GroundTask> ground(std::shared_ptr<const NormalizedTask> task);
+std::shared_ptr<const GroundTask> ground(std::shared_ptr<const NormalizedTask> task,
+                                         const GroundingOptions& options = {});
 
 // Strata of the derived predicates (index: PredicateId; 0 for basic ones):
 // a predicate's stratum is above those it depends on negatively and not

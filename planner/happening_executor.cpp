@@ -11,6 +11,22 @@
 namespace alplan {
 namespace {
 
+// The sum of action costs, when the domain declares (total-cost): its value
+// in `state`, or its initial value when no action changes it (grounding then
+// keeps no variable for it).
+std::optional<double> total_cost(const GroundTask& task, const ExplicitState& state) {
+  const NormalizedTask& lifted = *task.lifted;
+  for (FunctionId f = 0; f < lifted.functions.size(); ++f) {
+    if (lifted.functions[f].name != "total-cost") continue;
+    if (const std::optional<NumericVarId> v = task.numeric.find({f, {}})) return state.value(*v);
+    for (const NumericInitialValue& initial : lifted.initial_values) {
+      if (initial.function == f && initial.args.empty()) return initial.value;
+    }
+    return std::nullopt;
+  }
+  return std::nullopt;
+}
+
 void collect_facts(const GroundFormula& f, std::set<FactId>& out) {
   if (f.kind == GroundFormula::Kind::Literal) out.insert(f.fact);
   for (const GroundFormula& child : f.children) collect_facts(child, out);
@@ -376,6 +392,9 @@ ValidationResult HappeningExecutor::finish_run(std::size_t plan_steps) {
   EvaluationContext context;
   const bool timed = val_total_time_ ? task_.lifted->declares_time : task_.lifted->temporal;
   context.total_time = timed ? last_action_time_ : steps_and_literals;
+  const ExplicitState& final_state = last_action_state_ ? *last_action_state_ : state_;
+  result.total_cost = total_cost(task_, final_state);
+  if (result.total_cost && std::isnan(*result.total_cost)) result.total_cost.reset();
   if (task_.metric) {
     try {
       result.metric = evaluate(task_.metric->expression, last_action_state_ ? *last_action_state_ : state_, context);

@@ -1,6 +1,7 @@
 #include "planner/normalize.h"
 
 #include <algorithm>
+#include <map>
 
 #include "pddl_parser/type_hierarchy.h"
 #include "pddl_parser/writer.h"
@@ -29,21 +30,44 @@ void add_objects(const std::vector<pddl::TypedName>& declared, NormalizedTask& t
   }
 }
 
+// Objects of a declared type list belong to the same types, so membership
+// is decided once per distinct list (a home has a few dozen of those and
+// hundreds of objects), not once per object and type.
 void build_types(const pddl::Domain& domain, const std::vector<pddl::TypeNames>& object_types,
                  NormalizedTask& task, NameTables& names) {
   const pddl::TypeHierarchy hierarchy(domain);
-  for (const std::string& type : hierarchy.types()) {
+  const std::vector<std::string>& types = hierarchy.types();
+  for (const std::string& type : types) {
     names.types.emplace(type, static_cast<TypeId>(task.types.size()));
     TypeInfo info;
     info.name = type;
-    for (ObjectId o = 0; o < task.objects.size(); ++o) {
-      const pddl::TypeNames& own = object_types[o];
-      const bool member = type == "object" || std::any_of(own.begin(), own.end(), [&](const std::string& t) {
-                            return hierarchy.is_subtype(t, type);
-                          });
-      if (member) info.objects.push_back(o);
-    }
     task.types.push_back(std::move(info));
+  }
+  // An object belongs to its declared types, their ancestors and "object".
+  auto membership = [&](const pddl::TypeNames& own) {
+    std::vector<bool> member(types.size(), false);
+    auto mark = [&](const std::string& type) {
+      if (auto id = names.types.find(type); id != names.types.end()) member[id->second] = true;
+    };
+    mark("object");
+    for (const std::string& x : own) {
+      mark(x);
+      if (const auto* ancestors = hierarchy.ancestors(x)) {
+        for (const std::string& a : *ancestors) mark(a);
+      }
+    }
+    std::vector<TypeId> ids;
+    for (TypeId t = 0; t < member.size(); ++t) {
+      if (member[t]) ids.push_back(t);
+    }
+    return ids;
+  };
+  std::map<pddl::TypeNames, std::vector<TypeId>> memberships;
+  for (ObjectId o = 0; o < task.objects.size(); ++o) {
+    const pddl::TypeNames& own = object_types[o];
+    auto [it, inserted] = memberships.try_emplace(own);
+    if (inserted) it->second = membership(own);
+    for (TypeId t : it->second) task.types[t].objects.push_back(o);
   }
 }
 

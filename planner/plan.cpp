@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 
 namespace alplan {
@@ -130,6 +131,29 @@ PlanReadResult read_plan(std::string_view text, const std::string& file_name) {
     if (end == text.size()) break;
   }
   return result;
+}
+
+namespace {
+
+bool on_grid(double x, double grid) { return std::fabs(grid - x) < 1e-7; }
+
+}  // namespace
+
+std::string format_plan_time(double x) {
+  char buffer[64];
+  const double grid = std::round(x * 1000.0) / 1000.0;
+  if (on_grid(x, grid)) {
+    std::snprintf(buffer, sizeof buffer, "%.3f", grid == 0.0 ? 0.0 : grid);
+  } else {
+    std::snprintf(buffer, sizeof buffer, "%.6f", x);
+  }
+  return buffer;
+}
+
+double rounded_plan_time(double x) {
+  const double grid = std::round(x * 1000.0) / 1000.0;
+  if (on_grid(x, grid)) return grid == 0.0 ? 0.0 : grid;
+  return std::round(x * 1e6) / 1e6;
 }
 
 std::string write_plan(const Plan& plan, int decimals) {

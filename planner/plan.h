@@ -33,6 +33,14 @@ struct PlanReadResult {
 
 PlanReadResult read_plan(std::string_view text, const std::string& file_name);
 
+// A time or duration as the planner prints it: three decimals when it lies
+// on the 0.001 grid (as OPTIC prints them), six otherwise, so that VAL reads
+// what was scheduled.
+std::string format_plan_time(double x);
+// The number that text denotes: the value to report wherever a time is
+// shown as a number (JSON), without a sum's binary noise (80.00200000000001).
+double rounded_plan_time(double x);
+
 // IPC format, times and durations with the given number of decimals.
 std::string write_plan(const Plan& plan, int decimals = 3);
 

@@ -16,27 +16,14 @@ using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// Times and durations on the 0.001 grid print with three decimals, as OPTIC
-// prints them; others with enough digits that VAL reads what we scheduled.
-std::string format_time(double x) {
-  char buffer[64];
-  const double grid = std::round(x * 1000.0) / 1000.0;
-  if (std::fabs(grid - x) < 1e-7) {
-    std::snprintf(buffer, sizeof buffer, "%.3f", grid == 0.0 ? 0.0 : grid);
-  } else {
-    std::snprintf(buffer, sizeof buffer, "%.6f", x);
-  }
-  return buffer;
-}
-
 std::string plan_text(const Plan& plan) {
   std::string out;
   for (const PlanStep& step : plan.steps) {
-    if (step.time) out += format_time(*step.time) + ": ";
+    if (step.time) out += format_plan_time(*step.time) + ": ";
     out += "(" + step.action;
     for (const std::string& a : step.args) out += " " + a;
     out += ")";
-    if (step.duration) out += " [" + format_time(*step.duration) + "]";
+    if (step.duration) out += " [" + format_plan_time(*step.duration) + "]";
     out += "\n";
   }
   return out;
@@ -164,20 +151,22 @@ void add(SearchStatistics& into, const SearchStatistics& s) {
 }
 
 PhaseOutcome run_phase(const Phase& phase, const TaskIndex& index, const SearchStart& start, TemporalRpg& heuristic,
-                       const BestFirstOptions& base, const PlannerOptions& options, Clock::time_point began) {
+                       const BestFirstOptions& base, const PlannerOptions& options) {
   std::vector<std::unique_ptr<SearchSpace>> spaces;
   std::vector<std::unique_ptr<SearchEngine>> engines;
   for (const auto& [kind, weight] : phase.engines) {
     spaces.push_back(std::make_unique<SearchSpace>(index, start, options.epsilon));
     BestFirstOptions bfs = base;
     bfs.weight = weight;
-    engines.push_back(kind == "ehc" ? make_enforced_hill_climbing(*spaces.back(), heuristic)
+    engines.push_back(kind == "ehc" ? make_enforced_hill_climbing(*spaces.back(), heuristic, true, base.deadline)
                                     : make_best_first_search(*spaces.back(), heuristic, bfs));
   }
   PhaseOutcome outcome;
   std::vector<bool> exhausted(engines.size(), false);
   std::size_t left = engines.size();
   for (std::size_t steps = 0; left > 0; ++steps) {
+    // Every step: a step cut short by the deadline has dropped children.
+    if (passed(base.deadline)) break;
     if ((steps & 15) == 0) {
       std::size_t nodes = 0;
       std::uint64_t expanded = 0;
@@ -185,7 +174,7 @@ PhaseOutcome run_phase(const Phase& phase, const TaskIndex& index, const SearchS
         nodes += spaces[e]->size();
         expanded += engines[e]->statistics().expanded;
       }
-      if (since(began) > options.time_limit || nodes > options.node_limit) break;
+      if (nodes > options.node_limit) break;
       if (phase.expansion_budget && expanded > phase.expansion_budget) {
         outcome.budget_spent = true;
         break;
@@ -257,6 +246,11 @@ PlannerResult Planner::plan(const std::function<void(const FoundPlan&)>& on_plan
 
 PlannerResult Planner::plan_from(const PlanningStart& start, const std::function<void(const FoundPlan&)>& on_plan) {
   const Clock::time_point began = Clock::now();
+  // The limit counts from here, setup included: a caller's budget is wall time.
+  SearchDeadline deadline;
+  if (std::isfinite(options_.time_limit)) {
+    deadline = began + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options_.time_limit));
+  }
   PlannerResult result;
   const TaskIndex index(task_);
   if (index.unsupported()) {
@@ -289,8 +283,11 @@ PlannerResult Planner::plan_from(const PlanningStart& start, const std::function
   derive(*task_, search_start.state);
 
   TemporalRpg heuristic(index, {options_.heuristic == "trpg"});
-  PlanValidator validator(task_->lifted, {options_.epsilon, false});
   const bool from_initial = is_initial(*task_, start);
+  // Plans from an observed state are checked by validate_from; the plan
+  // validator (which grounds the task again for itself) only from the start.
+  std::optional<PlanValidator> validator;
+  if (from_initial) validator.emplace(task_->lifted, ValidatorOptions{options_.epsilon, false});
   const bool can_prune = !task_->metric || (task_->metric->minimize && monotone(*task_, task_->metric->expression));
   result.times.setup = since(began);
 
@@ -315,6 +312,7 @@ PlannerResult Planner::plan_from(const PlanningStart& start, const std::function
     const bool fallback = phase == 1 && options_.search == "ehc";
     if (fallback && !result.plans.empty()) continue;
     BestFirstOptions bfs;
+    bfs.deadline = deadline;
     if (can_prune && !result.plans.empty()) {
       bfs.prune = [&, this](const SearchNode& node) {
         if (!task_->metric) return static_cast<double>(node.depth) >= best_value;
@@ -328,7 +326,7 @@ PlannerResult Planner::plan_from(const PlanningStart& start, const std::function
       };
     }
     const PhaseOutcome outcome =
-        run_phase(pipeline[phase], index, search_start, heuristic, bfs, options_, search_began);
+        run_phase(pipeline[phase], index, search_start, heuristic, bfs, options_);
     add(result.statistics, outcome.statistics);
     if (outcome.budget_spent) continue;  // EHC gave up; the fallback takes over
     if (outcome.status == SearchStatus::InProgress) {
@@ -356,7 +354,7 @@ PlannerResult Planner::plan_from(const PlanningStart& start, const std::function
     found.text = plan_text(found.plan);
     found.engine = outcome.engine;
     found.seconds = since(search_began);
-    found.validation = from_initial ? validator.validate(read_plan(found.text, "planner output").plan)
+    found.validation = from_initial ? validator->validate(read_plan(found.text, "planner output").plan)
                                     : validate_from(*task_, start, *outcome.solution, actions, found.text,
                                                     options_.epsilon);
     result.times.validation += since(validation_began);

@@ -31,7 +31,9 @@ struct PlannerOptions {
   // EHC gives up after this many expansions (it is incomplete and can wander
   // on plateaus); GBFS and weighted A* then take turns.
   std::uint64_t ehc_expansions = 20000;
-  double time_limit = std::numeric_limits<double>::infinity();  // seconds, search only
+  // Seconds from the call to plan(), setup and search; checked before every
+  // heuristic evaluation, so a large task overruns it by one evaluation.
+  double time_limit = std::numeric_limits<double>::infinity();
   std::size_t node_limit = std::numeric_limits<std::size_t>::max();
   bool anytime = false;            // keep improving after the first plan
   double epsilon = 0.001;          // separation of dependent happenings

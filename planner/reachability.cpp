@@ -5,6 +5,8 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "planner/deadline.h"
+
 namespace alplan {
 namespace {
 
@@ -135,7 +137,8 @@ std::vector<Rule> make_rules(const NormalizedTask& task, const ReachabilityOptio
 // rules whose body mentions its predicate (semi-naive evaluation).
 class Fixpoint {
  public:
-  Fixpoint(const NormalizedTask& task, std::vector<Rule> rules) : task_(task), rules_(std::move(rules)) {
+  Fixpoint(const NormalizedTask& task, std::vector<Rule> rules, Deadline deadline)
+      : task_(task), rules_(std::move(rules)), deadline_(deadline) {
     members_.resize(task.types.size());
     for (TypeId t = 0; t < task.types.size(); ++t) {
       members_[t].assign(task.objects.size(), false);
@@ -160,6 +163,7 @@ class Fixpoint {
       }
     }
     while (!queue_.empty()) {
+      deadline_.check("reachability");
       const std::uint32_t atom = queue_.front();
       queue_.pop_front();
       const GroundKey key = result_.atoms.key(atom);
@@ -251,9 +255,10 @@ class Fixpoint {
     const std::vector<ObjectId> saved = binding;
     const std::size_t count = candidates->size();  // atoms reached meanwhile join later
     for (std::size_t c = 0; c < count; ++c) {
+      deadline_.check("reachability");  // one join can take long on its own
       const std::uint32_t atom_id = tuples_[atom.predicate][(*candidates)[c]];
-      const std::vector<ObjectId> args = result_.atoms.key(atom_id).args;
-      if (match(atom, args, rule, binding)) join(rule, binding, done, matched + 1);
+      // The key is read before join() can intern atoms (and move the keys).
+      if (match(atom, result_.atoms.key(atom_id).args, rule, binding)) join(rule, binding, done, matched + 1);
       binding = saved;
     }
     done[best] = false;
@@ -261,6 +266,7 @@ class Fixpoint {
 
   // Enumerates head parameters no body atom bound, then records the head.
   void complete(const Rule& rule, std::vector<ObjectId>& binding, std::uint32_t slot) {
+    deadline_.check("reachability");
     while (slot < rule.parameters && binding[slot] != kNoId) ++slot;
     if (slot < rule.parameters) {
       for (ObjectId o : task_.types[rule.slot_types[slot]].objects) {
@@ -311,12 +317,13 @@ class Fixpoint {
   std::unordered_set<GroundKey, GroundKeyHash> seen_actions_, seen_axioms_;
   std::deque<std::uint32_t> queue_;
   ReachableSet result_;
+  Deadline deadline_;
 };
 
 }  // namespace
 
 ReachableSet compute_reachable(const NormalizedTask& task, const ReachabilityOptions& options) {
-  return Fixpoint(task, make_rules(task, options)).run();
+  return Fixpoint(task, make_rules(task, options), Deadline(options.deadline)).run();
 }
 
 }  // namespace alplan

@@ -8,7 +8,9 @@
 // disjunct of its relaxed precondition is reachable.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "planner/fact_table.h"
@@ -25,6 +27,8 @@ struct ReachabilityOptions {
   // Disjunctive preconditions whose DNF would exceed this many disjuncts are
   // relaxed to true instead of split.
   std::size_t max_disjuncts = 32;
+  // Past this moment the fixpoint stops with GroundingTimeout (deadline.h).
+  std::optional<std::chrono::steady_clock::time_point> deadline;
 };
 
 struct Instantiation {
@@ -38,6 +42,7 @@ struct ReachableSet {
   std::vector<Instantiation> axioms;
 };
 
+// Throws GroundingTimeout when options.deadline passes.
 ReachableSet compute_reachable(const NormalizedTask& task, const ReachabilityOptions& options = {});
 
 }  // namespace alplan

@@ -3,6 +3,7 @@
 // limit, and reports the first solution it finds.
 #pragma once
 
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -17,6 +18,15 @@ enum class SearchStatus { InProgress, Solved, Exhausted };
 
 // Prunes nodes that cannot beat the best plan so far (anytime search).
 using NodeBound = std::function<bool(const SearchNode&)>;
+
+// When a step must stop: on a large task one expansion evaluates dozens of
+// children at tens of milliseconds each, so a time limit checked only
+// between steps would be overrun by seconds. A step that meets its deadline
+// returns InProgress at once, and its caller stops the search.
+using SearchDeadline = std::optional<std::chrono::steady_clock::time_point>;
+inline bool passed(const SearchDeadline& deadline) {
+  return deadline && std::chrono::steady_clock::now() > *deadline;
+}
 
 class SearchEngine {
  public:
@@ -39,13 +49,14 @@ struct BestFirstOptions {
   // main one (Richter & Helmert's preferred operators).
   bool preferred_queue = true;
   NodeBound prune;
+  SearchDeadline deadline;
 };
 
 // Enforced hill-climbing (Hoffmann & Nebel 2001) over helpful snaps, as
 // POPF's first search: breadth-first from the best node until a child has a
 // strictly smaller h. Exhausted when a plateau has no exit.
 std::unique_ptr<SearchEngine> make_enforced_hill_climbing(SearchSpace& space, TemporalRpg& heuristic,
-                                                          bool helpful_only = true);
+                                                          bool helpful_only = true, SearchDeadline deadline = {});
 // Greedy best-first search or weighted A*.
 std::unique_ptr<SearchEngine> make_best_first_search(SearchSpace& space, TemporalRpg& heuristic,
                                                      BestFirstOptions options);

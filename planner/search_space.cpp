@@ -47,29 +47,39 @@ PartialPlan SearchSpace::partial_plan(NodeId id) const {
   return plan;
 }
 
-std::vector<Child> SearchSpace::children(NodeId id, const PartialPlan& plan, SearchStatistics& stats) const {
+std::vector<Successor> SearchSpace::successors(NodeId id, SearchStatistics& stats) const {
   std::vector<Successor> successors;
   successors_.generate(nodes_[id].state, successors);
+  stats.generated += successors.size();
+  return successors;
+}
+
+std::optional<Child> SearchSpace::schedule(NodeId id, const PartialPlan& plan, Successor s,
+                                           SearchStatistics& stats) const {
+  PartialPlan extended = plan;
+  if (!extended.append(s.step)) {
+    ++stats.unschedulable;
+    return std::nullopt;
+  }
+  if (s.step.snap.kind == SnapKind::Start) {
+    s.state.set_start_step(s.step.snap.index, static_cast<std::uint32_t>(extended.size() - 1));
+  }
+  Child child{SearchNode{}, std::move(extended)};
+  child.node.parent = id;
+  child.node.step = s.step;
+  child.node.state = std::move(s.state);
+  child.node.depth = nodes_[id].depth + 1;
+  child.node.makespan = child.plan.makespan();
+  child.node.signature = signature_of(child.node.state, child.plan);
+  return child;
+}
+
+std::vector<Child> SearchSpace::children(NodeId id, const PartialPlan& plan, SearchStatistics& stats) const {
+  std::vector<Successor> all = successors(id, stats);
   std::vector<Child> result;
-  result.reserve(successors.size());
-  for (Successor& s : successors) {
-    ++stats.generated;
-    PartialPlan extended = plan;
-    if (!extended.append(s.step)) {
-      ++stats.unschedulable;
-      continue;
-    }
-    if (s.step.snap.kind == SnapKind::Start) {
-      s.state.set_start_step(s.step.snap.index, static_cast<std::uint32_t>(extended.size() - 1));
-    }
-    Child child{SearchNode{}, std::move(extended)};
-    child.node.parent = id;
-    child.node.step = s.step;
-    child.node.state = std::move(s.state);
-    child.node.depth = nodes_[id].depth + 1;
-    child.node.makespan = child.plan.makespan();
-    child.node.signature = signature_of(child.node.state, child.plan);
-    result.push_back(std::move(child));
+  result.reserve(all.size());
+  for (Successor& s : all) {
+    if (std::optional<Child> child = schedule(id, plan, std::move(s), stats)) result.push_back(std::move(*child));
   }
   return result;
 }

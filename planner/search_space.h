@@ -81,6 +81,13 @@ class SearchSpace {
   PartialPlan partial_plan(NodeId id) const;
   // Every applicable snap of a node that can be scheduled, as children.
   std::vector<Child> children(NodeId id, const PartialPlan& plan, SearchStatistics& stats) const;
+  // The same in two halves, for a search that looks at children one at a
+  // time and stops early (EHC): scheduling (a copy of the partial plan and
+  // an STN update) is most of a child's cost, so it is paid only for the
+  // children looked at.
+  std::vector<Successor> successors(NodeId id, SearchStatistics& stats) const;
+  std::optional<Child> schedule(NodeId id, const PartialPlan& plan, Successor successor,
+                                SearchStatistics& stats) const;
   // Evaluates a child; false for a dead end.
   bool evaluate(Child& child, TemporalRpg& heuristic, SearchStatistics& stats) const;
   // Stores a child unless a stored node with its state dominates it.

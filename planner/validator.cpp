@@ -33,7 +33,7 @@ void ground_world(const NormalizedTask& lifted, const StaticFacts& statics, Grou
     const std::vector<std::uint32_t> strata = derived_strata(lifted);
     // Only at-start atoms are required, so that any state a plan reaches
     // before its first violation is covered.
-    const ReachableSet reachable = compute_reachable(lifted, {false, 32});
+    const ReachableSet reachable = compute_reachable(lifted, {false, 32, std::nullopt});
     for (const Instantiation& i : reachable.axioms) {
       const DerivedRule& rule = lifted.derived_rules[i.schema];
       std::vector<ObjectId> slots(std::max<std::size_t>(rule.variable_slots, i.args.size()), kNoId);

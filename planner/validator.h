@@ -43,6 +43,9 @@ struct ValidationResult {
   double makespan = 0.0;        // time of the last happening with an action
   std::optional<double> metric;  // the metric's value, when the problem has one
   double value = 0.0;           // VAL's "Final value"
+  // The sum of action costs, (total-cost) after the last action happening,
+  // when the domain declares it; the metric may weigh it with other terms.
+  std::optional<double> total_cost;
   std::optional<Violation> violation;
   std::size_t happenings = 0;
 };

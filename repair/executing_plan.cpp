@@ -9,22 +9,66 @@
 
 namespace alplan::repair {
 
+namespace {
+
+std::string step_name(const PlanStep& step) {
+  std::string name = "(" + step.action;
+  for (const std::string& arg : step.args) name += " " + arg;
+  return name + ")";
+}
+
+// The ground action of every step, by schema and argument ids: one pass
+// over the task's actions comparing integers. (Naming every action of the
+// task to look up a dozen steps was 3% of a repair.)
+std::vector<ActionId> step_actions(const GroundTask& task, const Plan& plan) {
+  const NormalizedTask& lifted = *task.lifted;
+  std::unordered_map<std::string, std::uint32_t> schemas;
+  for (std::uint32_t a = 0; a < lifted.actions.size(); ++a) schemas.emplace(lifted.actions[a].name, a);
+  std::unordered_map<std::string, ObjectId> objects;
+  for (ObjectId o = 0; o < lifted.objects.size(); ++o) objects.emplace(lifted.objects[o], o);
+  struct Wanted {
+    std::uint32_t schema = kNoId;
+    std::vector<ObjectId> args;
+    ActionId action = kNoId;
+  };
+  std::vector<Wanted> wanted(plan.steps.size());
+  for (std::size_t i = 0; i < plan.steps.size(); ++i) {
+    const PlanStep& step = plan.steps[i];
+    const auto schema = schemas.find(step.action);
+    if (schema == schemas.end()) continue;
+    wanted[i].schema = schema->second;
+    for (const std::string& arg : step.args) {
+      const auto object = objects.find(arg);
+      wanted[i].args.push_back(object == objects.end() ? kNoId : object->second);
+    }
+  }
+  std::vector<ActionId> found(plan.steps.size(), kNoId);
+  for (ActionId a = 0; a < task.actions.size(); ++a) {
+    const GroundAction& action = task.actions[a];
+    for (Wanted& w : wanted) {
+      if (w.action == kNoId && w.schema == action.schema && w.args == action.args) w.action = a;
+    }
+  }
+  for (std::size_t i = 0; i < plan.steps.size(); ++i) {
+    if (wanted[i].action == kNoId) throw std::invalid_argument("the task has no action " + step_name(plan.steps[i]));
+    found[i] = wanted[i].action;
+  }
+  return found;
+}
+
+}  // namespace
+
 ExecutingPlan bind_plan(std::shared_ptr<const GroundTask> task, const Plan& plan, double epsilon) {
-  std::unordered_map<std::string, ActionId> by_name;
-  for (ActionId a = 0; a < task->actions.size(); ++a) by_name.emplace(task->action_name(task->actions[a]), a);
+  const std::vector<ActionId> actions = step_actions(*task, plan);
   ExecutingPlan bound;
   bound.epsilon = epsilon;
-  for (const PlanStep& step : plan.steps) {
-    std::string name = "(" + step.action;
-    for (const std::string& arg : step.args) name += " " + arg;
-    name += ")";
-    auto it = by_name.find(name);
-    if (it == by_name.end()) throw std::invalid_argument("the task has no action " + name);
+  for (std::size_t i = 0; i < plan.steps.size(); ++i) {
+    const PlanStep& step = plan.steps[i];
     ScheduledAction s;
-    s.action = it->second;
+    s.action = actions[i];
     s.start = step.time.value_or(0.0);
     s.duration = step.duration.value_or(0.0);
-    s.name = std::move(name);
+    s.name = step_name(step);
     bound.steps.push_back(std::move(s));
   }
   std::stable_sort(bound.steps.begin(), bound.steps.end(),

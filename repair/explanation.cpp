@@ -14,10 +14,13 @@ std::string time_text(double t) {
 }  // namespace
 
 std::string Explanation::text() const {
-  return "Why: " + why + "\nWhat went wrong: " + what + "\nHow it was repaired: " + how + "\n";
+  return "Why: " + why + "\nWhat went wrong: " + what + (repaired ? "\nHow it was repaired: " : "\nWhy it could not be repaired: ") +
+         how + "\n";
 }
 
-nlohmann::json Explanation::json() const { return {{"why", why}, {"what", what}, {"how", how}}; }
+nlohmann::json Explanation::json() const {
+  return {{"why", why}, {"what", what}, {"how", how}, {"repaired", repaired}};
+}
 
 std::string describe_failure(const Violation& failure, bool foreseen) {
   using K = Violation::Kind;

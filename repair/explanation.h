@@ -1,7 +1,9 @@
 // The three-part explanation of a repair the paper's Discussion asks for:
 // why the plan (the goal and the emotion behind it), what went wrong (the
 // violated condition, the action, the time), how it was repaired (which
-// object or suggestion, and why). As text for people, as JSON for tools.
+// object or suggestion, and why) — or, for a repair that failed, why it
+// could not be. Every repair record carries one, failed or not. As text for
+// people, as JSON for tools.
 #pragma once
 
 #include <string>
@@ -15,7 +17,8 @@ namespace alplan::repair {
 struct Explanation {
   std::string why;
   std::string what;
-  std::string how;
+  std::string how;  // how it was repaired, or why it could not be
+  bool repaired = true;
 
   std::string text() const;
   nlohmann::json json() const;

@@ -173,8 +173,11 @@ class Execution {
     return r;
   }
 
+  // The first part of an explanation: the plan in force and why it was made.
+  std::string why_the_plan() const { return motivation_ + "; the plan's goal was " + goal_; }
+
   RepairRecord record_of(const Violation& failure, bool foreseen, const RepairResult& result,
-                         const std::string& strategy, double t) const {
+                         const std::string& strategy, double t, const std::string& why) const {
     RepairRecord record;
     record.failure = failure;
     record.foreseen = foreseen;
@@ -183,10 +186,11 @@ class Execution {
     record.seconds = result.seconds;
     record.planner_calls = result.planner_calls;
     record.integrated = result.integrated;
-    record.explanation.why = motivation_ + "; the plan's goal was " + goal_;
+    record.explanation.why = why;
     record.explanation.what = failure.kind == Violation::Kind::Unsupported ? failure.condition
                                                                            : describe_failure(failure, foreseen);
-    record.explanation.how = result.how;
+    record.explanation.how = result.how.empty() ? strategy + " found no repair" : result.how;
+    record.explanation.repaired = result.repaired;
     if (result.repaired) {
       record.plan_text = plan_text(*result.plan);
       record.plan_distance = plan_distance(plan_, *result.plan, t);
@@ -202,9 +206,15 @@ class Execution {
                       describe_failure(failure, foreseen), t);
       return false;
     }
-    regenerate_goal(observed, t);
+    // Why the plan that failed was made, before goal generation moves on.
+    const std::string why = why_the_plan();
+    const std::optional<std::string> new_goal = regenerate_goal(observed, t);
     RepairResult result = strategy_.repair(request(failure, observed, t));
-    report_.repairs.push_back(record_of(failure, foreseen, result, strategy_.name(), t));
+    report_.repairs.push_back(record_of(failure, foreseen, result, strategy_.name(), t, why));
+    if (new_goal) {
+      std::string& how = report_.repairs.back().explanation.how;
+      how = *new_goal + "; " + how;
+    }
     if (!result.repaired) {
       report_.events.push_back(time_text(t) + ": " + strategy_.name() + " could not repair: " + result.how);
       done(false, "no repair: " + result.how, t);
@@ -216,17 +226,20 @@ class Execution {
     return true;
   }
 
-  // Is the goal still the right one? An emotion may have changed.
-  void regenerate_goal(const WorldState& observed, double t) {
-    if (!mission_.goal_generator) return;
+  // Is the goal still the right one? An emotion may have changed. Returns
+  // the change, in words, when there is one.
+  std::optional<std::string> regenerate_goal(const WorldState& observed, double t) {
+    if (!mission_.goal_generator) return std::nullopt;
     auto generated = mission_.goal_generator(observed);
-    if (!generated) return;
+    if (!generated) return std::nullopt;
     const std::string goal = pddl::write_condition(generated->first);
-    if (goal == goal_) return;
-    report_.events.push_back(time_text(t) + ": goal generation: " + generated->second + ", so the goal is now " + goal);
+    if (goal == goal_) return std::nullopt;
+    const std::string change = "goal generation: " + generated->second + ", so the goal is now " + goal;
+    report_.events.push_back(time_text(t) + ": " + change);
     problem_.goal = generated->first;
     motivation_ = generated->second;
     goal_ = goal;
+    return change;
   }
 
   // The paper's Discussion: look for a better course of action even when
@@ -256,7 +269,7 @@ class Execution {
     if (alternative > current - options_.proactive_gain) return false;
     result.how = "switched to a plan that ends at " + time_text(alternative) + " instead of " + time_text(current) +
                  ": " + describe_remedy(*result.plan, t);
-    report_.repairs.push_back(record_of(none, false, result, "proactive", t));
+    report_.repairs.push_back(record_of(none, false, result, "proactive", t, why_the_plan()));
     report_.events.push_back(time_text(t) + ": proactive: " + result.how);
     problem_ = std::move(result.problem);
     adopt(with_all_conditions(*result.plan));

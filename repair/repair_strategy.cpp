@@ -94,7 +94,9 @@ class SuggestStrategy : public RepairStrategy {
     if (result.repaired) {
       result.how = "no object is handed over; instead " + describe_remedy(*result.plan, request.now);
     } else {
-      result.how = "no activity can be suggested to reach the goal";
+      // Name the planner's reason: typically a goal no suggestion reaches
+      // (a suggestion entertains; it neither soothes nor cheers).
+      result.how = "no activity can be suggested to reach the goal: " + result.how;
     }
     return result;
   }

@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "benchmarks/harness/baseline.h"
+#include "benchmarks/harness/run_status.h"
 #include "benchmarks/harness/suite.h"
 #include "benchmarks/harness/table.h"
 
@@ -29,17 +30,6 @@ struct Run {
   std::string message;
 };
 
-std::string status_of(const RunResult& r, const nlohmann::json& j) {
-  if (r.timed_out) return "limit";
-  if (j.is_discarded() || !j.contains("status")) return r.exit_code == 11 ? "limit" : "error";
-  const std::string s = j["status"];
-  if (s == "solved") return "solved";
-  if (s == "unsolvable") return "unsolvable";
-  if (s == "exhausted") return "exhausted";
-  if (s == "limit_reached") return "limit";
-  return "error";
-}
-
 Run run_one(const SuiteProblem& p, const PlannerBenchOptions& options, const std::string& plan_file) {
   Run run;
   run.problem = p;
@@ -54,14 +44,14 @@ Run run_one(const SuiteProblem& p, const PlannerBenchOptions& options, const std
   std::filesystem::remove(plan_file);
   const RunResult r = run_process(argv, limits);
   const nlohmann::json j = nlohmann::json::parse(r.out, nullptr, false);
-  run.status = status_of(r, j);
+  run.status = planner_run_status(r, j);
   run.seconds = r.wall_seconds;
   run.max_rss_kib = r.max_rss_kib;
   if (run.status == "error") run.message = r.err.substr(0, 300);
   if (run.status != "solved") return run;
   const nlohmann::json& best = j["best"];
   run.makespan = best["makespan"];
-  run.value = best["cost"];
+  run.value = best["value"];  // VAL's value: the metric, as the baseline reports it
   const nlohmann::json& plans = j["plans"];
   run.first_plan = plans.front()["found_after_seconds"].get<double>() + j["seconds"]["grounding"].get<double>();
   // Our validator, again, as a separate process on the written file.

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
-#include <random>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -17,6 +17,7 @@
 #include "domains/pddl_files.h"
 #include "pddl_parser/writer.h"
 #include "repair/monitor.h"
+#include "repair/random_events.h"
 #include "repair/reformulation.h"
 #include "repair/world_simulator.h"
 
@@ -32,70 +33,12 @@ struct RunRecord {
   std::size_t repairs = 0, stability = 0;
   int planner_calls = 0;
   std::vector<double> latencies_ms;
-  double delay = 0.0, makespan = 0.0, cost = 0.0;
+  // Until the senior is comforted, beyond the original plan's end; none
+  // for a run that never comforts the senior (its end is the failure's).
+  std::optional<double> delay;
+  double makespan = 0.0, cost = 0.0;
   std::string failures, outcome;
 };
-
-std::string word(const std::string& name, std::size_t index) {
-  std::string cleaned = name;
-  std::replace(cleaned.begin(), cleaned.end(), '(', ' ');
-  std::replace(cleaned.begin(), cleaned.end(), ')', ' ');
-  std::istringstream in(cleaned);
-  std::string w;
-  for (std::size_t i = 0; i <= index && in >> w;) ++i;
-  return w;
-}
-
-// One failure, chosen at random among those the plan makes possible.
-std::vector<repair::ExogenousEvent> make_failure(const repair::ExecutingPlan& plan, const domains::GeneratedHome& home,
-                                                 const repair::TypeOntology& ontology, std::mt19937_64& random,
-                                                 int serial) {
-  auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(random); };
-  std::vector<const repair::ScheduledAction*> carries, gives, moves;
-  for (const repair::ScheduledAction& s : plan.steps) {
-    const std::string schema = word(s.name, 0);
-    if (schema == "carry") carries.push_back(&s);
-    if (schema == "give" || schema == "suggest_entertainment2") gives.push_back(&s);
-    if (schema == "move") moves.push_back(&s);
-  }
-  const int kind = std::uniform_int_distribution<int>(0, 2)(random);
-  if (kind == 0 && !carries.empty()) {
-    const repair::ScheduledAction& carry = *carries[std::uniform_int_distribution<std::size_t>(0, carries.size() - 1)(random)];
-    const std::string object = word(carry.name, 2), room = word(carry.name, 3);
-    const double at = uniform(0.0, std::max(0.0, carry.start - 0.001));
-    std::vector<repair::ExogenousEvent> events{repair::becomes_unavailable(at, object)};
-    std::string type;
-    for (const auto& o : home.objects) {
-      if (o.name == object) type = o.type;
-    }
-    std::vector<std::string> siblings;
-    for (const std::string& a : ontology.augmented()) {
-      if (ontology.parent(a) == ontology.parent(type)) siblings.push_back(a);
-    }
-    if (!siblings.empty() && uniform(0.0, 1.0) < 0.5) {
-      const std::string t = siblings[std::uniform_int_distribution<std::size_t>(0, siblings.size() - 1)(random)];
-      events.push_back(repair::object_appears(at, {t + "_new" + std::to_string(serial), t, room, 1.0}));
-    }
-    return events;
-  }
-  if (kind == 1 && !gives.empty()) {
-    const repair::ScheduledAction& give = *gives.front();
-    const std::string senior = word(give.name, 2), from = word(give.name, 4);
-    std::vector<std::string> rooms;
-    for (const std::string& r : home.rooms) {
-      if ((r.rfind("bedroom", 0) == 0 || r.rfind("sunroom", 0) == 0) && r != from) rooms.push_back(r);
-    }
-    if (!rooms.empty()) {
-      const std::string to = rooms[std::uniform_int_distribution<std::size_t>(0, rooms.size() - 1)(random)];
-      return repair::senior_moves(uniform(0.0, give.start), senior, from, to);
-    }
-  }
-  if (!moves.empty()) {
-    const repair::ScheduledAction& move = *moves[std::uniform_int_distribution<std::size_t>(0, moves.size() - 1)(random)];
-    return {repair::action_overruns(move.name, std::round(uniform(10.0, 60.0)))};
-  }
-  return {};
-}
 
 double percentile(std::vector<double> values, double p) {
   if (values.empty()) return std::nan("");
@@ -106,16 +49,28 @@ double percentile(std::vector<double> values, double p) {
   return values[low] + (rank - static_cast<double>(low)) * (values[high] - values[low]);
 }
 
-RunRecord execute(const std::string& home_name, int run, const pddl::Domain& domain, const pddl::Problem& problem,
+// Why the robot acts, and goal generation for the stressed seniors, so
+// that an emotion change gives a new goal (as in the paper's scenarios).
+repair::Mission mission_for(const pddl::Domain& domain, const pddl::Problem& problem,
+                            const domains::GeneratedHome& home) {
+  repair::Mission mission;
+  mission.domain = &domain;
+  mission.problem = problem;
+  std::vector<std::string> seniors;
+  for (const domains::StressedSenior& s : home.stressed) {
+    seniors.push_back(s.name);
+    mission.motivation += (mission.motivation.empty() ? "" : " and ") + s.name + " is " + s.emotion;
+  }
+  mission.goal_generator = domains::emotion_goal_generator(seniors);
+  return mission;
+}
+
+RunRecord execute(const std::string& home_name, int run, const repair::Mission& mission, const pddl::Problem& problem,
                   const repair::ExecutingPlan& plan, const std::vector<repair::ExogenousEvent>& failures,
                   repair::RepairStrategy& strategy, const repair::TypeOntology& ontology) {
   std::vector<repair::ExogenousEvent> events = repair::timed_literal_events(problem);
   events.insert(events.end(), failures.begin(), failures.end());
   repair::WorldSimulator world(repair::initial_world(problem), events);
-  repair::Mission mission;
-  mission.domain = &domain;
-  mission.problem = problem;
-  mission.motivation = "a senior is stressed";
   const repair::Monitor monitor(repair::MonitorOptions{});
   const repair::ExecutionReport report = monitor.run(mission, plan, world, strategy, &world, &ontology);
   RunRecord r;
@@ -132,10 +87,14 @@ RunRecord execute(const std::string& home_name, int run, const pddl::Domain& dom
   double planned_end = 0.0;
   for (const repair::ScheduledAction& s : plan.steps) planned_end = std::max(planned_end, s.end());
   r.makespan = report.end_time;
-  r.delay = report.end_time - planned_end;
+  if (report.goal_reached) r.delay = report.end_time - planned_end;
   const auto cost = world.observe().values.find({"total-cost"});
   r.cost = cost == world.observe().values.end() ? 0.0 : cost->second;
-  for (const repair::ExogenousEvent& e : failures) r.failures += (r.failures.empty() ? "" : "; ") + e.description;
+  std::string last;  // the parts of one event (leave a room, enter another) share a description
+  for (const repair::ExogenousEvent& e : failures) {
+    if (e.description != last) r.failures += (r.failures.empty() ? "" : "; ") + e.description;
+    last = e.description;
+  }
   r.outcome = report.outcome;
   return r;
 }
@@ -161,7 +120,7 @@ std::vector<Summary> summarise(const std::vector<RunRecord>& records, const std:
       s.planner_calls += r.planner_calls;
       if (!r.reached) continue;
       ++s.reached;
-      s.delays.push_back(r.delay);
+      s.delays.push_back(*r.delay);
       s.makespans.push_back(r.makespan);
       s.costs.push_back(r.cost);
     }
@@ -186,11 +145,12 @@ void write_outputs(const RepairBenchOptions& o, const std::vector<RunRecord>& re
     std::string latencies;
     for (double l : r.latencies_ms) latencies += (latencies.empty() ? "" : " ") + fixed(l, 3);
     runs.add({r.home, std::to_string(r.run), r.strategy, r.reached ? "yes" : "no", std::to_string(r.repairs),
-              latencies, std::to_string(r.stability), std::to_string(r.planner_calls), fixed(r.delay, 3),
+              latencies, std::to_string(r.stability), std::to_string(r.planner_calls), r.delay ? fixed(*r.delay, 3) : "",
               fixed(r.makespan, 3), fixed(r.cost, 1), r.failures, r.outcome});
     runs_json.push_back({{"home", r.home}, {"run", r.run}, {"strategy", r.strategy}, {"comforted", r.reached},
                          {"repairs", r.repairs}, {"latency_ms", r.latencies_ms}, {"stability", r.stability},
-                         {"planner_calls", r.planner_calls}, {"delay", r.delay}, {"makespan", r.makespan},
+                         {"planner_calls", r.planner_calls}, {"delay", r.delay ? nlohmann::json(*r.delay) : nlohmann::json()},
+                         {"makespan", r.makespan},
                          {"cost", r.cost}, {"failures", r.failures}, {"outcome", r.outcome}});
   }
   Table table({"strategy", "comforted", "repairs", "latency median ms", "latency p95 ms", "stability/run",
@@ -277,14 +237,19 @@ int run_repair_bench(const RepairBenchOptions& o, std::ostream& out, std::ostrea
       progress << name << ": no initial plan (" << planned.message << "), skipped\n";
       continue;
     }
+    const repair::Mission mission = mission_for(domain, *files.problem, home);
     for (int run = 0; run < o.runs_per_home; ++run) {
-      std::mt19937_64 random(home_options.seed * 1000003u + static_cast<std::uint64_t>(run));
+      repair::RandomEventOptions events = o.events;
+      events.seed = home_options.seed * 1000003u + static_cast<std::uint64_t>(run);
+      repair::RandomEventGenerator generator(events);
       std::vector<repair::ExogenousEvent> failures;
       for (int k = 0; k < o.failures_per_run; ++k) {
-        for (repair::ExogenousEvent& e : make_failure(*planned.plan, home, ontology, random, k + 1)) failures.push_back(e);
+        for (repair::ExogenousEvent& e : generator.draw(*planned.plan, *files.problem, &ontology, k + 1)) {
+          failures.push_back(e);
+        }
       }
       for (auto& strategy : strategies) {
-        records.push_back(execute(name, run, domain, *files.problem, *planned.plan, failures, *strategy, ontology));
+        records.push_back(execute(name, run, mission, *files.problem, *planned.plan, failures, *strategy, ontology));
         const RunRecord& r = records.back();
         progress << "[" << name << " run " << run << "] " << r.strategy << ": " << (r.reached ? "comforted" : "not comforted")
                  << ", " << r.repairs << " repairs\n";

@@ -13,12 +13,16 @@
 #include <vector>
 
 #include "domains/home_generator.h"
+#include "repair/random_events.h"
 
 namespace alplan::bench {
 
 struct RepairBenchOptions {
   int homes = 10;
   int failures_per_run = 1;
+  // The kinds of failure to draw and how (repair/random_events.h); the
+  // seed is replaced per run, from the home's seed and the run's number.
+  repair::RandomEventOptions events;
   int runs_per_home = 3;
   std::uint64_t seed = 1;
   std::vector<std::string> strategies{"replan", "substitute", "suggest", "patch", "adapt"};

@@ -7,10 +7,39 @@ expect_run(0 "; plan found" ${ALPLAN} plan ${CMAKE_CURRENT_LIST_DIR}/../../domai
   ${WORK}/home.pddl)
 expect_run(2 "at least 4 rooms" ${ALPLAN} gen home --rooms 3)
 expect_run(0 "latency median ms" ${ALPLAN} bench repair --homes 2 --runs-per-home 1 --seed 3
-  --strategies replan,patch --external --out ${WORK}/repair)
+  --strategies replan,patch,suggest --external --out ${WORK}/repair)
 foreach(f runs.csv runs.json summary.md summary.json plots/latency-median-ms.svg plots/stability.svg)
   if(NOT EXISTS ${WORK}/repair/${f})
     message(FATAL_ERROR "bench repair did not write ${f}")
   endif()
 endforeach()
+# A run that never comforts the senior has no delay (it is not negative):
+# columns are home,run,strategy,comforted,repairs,latency_ms,stability,
+# planner_calls,delay,...; suggest fails where the senior is not bored.
+file(STRINGS ${WORK}/repair/runs.csv rows)
+set(failed 0)
+foreach(row IN LISTS rows)
+  if(row MATCHES "^[^,]*,[^,]*,[^,]*,no,[^,]*,[^,]*,[^,]*,[^,]*,([^,]*),")
+    math(EXPR failed "${failed} + 1")
+    if(NOT "${CMAKE_MATCH_1}" STREQUAL "")
+      message(FATAL_ERROR "a run that never comforted the senior has delay '${CMAKE_MATCH_1}': ${row}")
+    endif()
+  endif()
+  if(row MATCHES "^[^,]*,[^,]*,[^,]*,[^,]*,[^,]*,[^,]*,[^,]*,[^,]*,-")
+    message(FATAL_ERROR "negative delay: ${row}")
+  endif()
+endforeach()
+if(failed EQUAL 0)
+  message(FATAL_ERROR "expected a failed run (suggest) in ${WORK}/repair/runs.csv")
+endif()
 expect_run(2 "unknown repair strategy 'fast'" ${ALPLAN} bench repair --homes 1 --strategies fast --out ${WORK}/x)
+# Failures of every kind the world simulator draws, emotion changes included.
+expect_run(0 "latency median ms" ${ALPLAN} bench repair --homes 1 --runs-per-home 2 --seed 2 --strategies replan
+  --events all --out ${WORK}/repair-all)
+expect_run(0 "latency median ms" ${ALPLAN} bench repair --homes 1 --runs-per-home 1 --seed 2 --strategies replan
+  --events emotion --out ${WORK}/repair-emotion)
+file(READ ${WORK}/repair-emotion/runs.csv emotion_runs)
+if(NOT emotion_runs MATCHES "senior1 is no longer sad but bored")
+  message(FATAL_ERROR "bench repair --events emotion drew no emotion change:\n${emotion_runs}")
+endif()
+expect_run(2 "--events takes" ${ALPLAN} bench repair --homes 1 --events earthquake --out ${WORK}/x)

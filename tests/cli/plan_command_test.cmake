@@ -21,3 +21,48 @@ expect_run(11 "limit" ${ALPLAN} plan --time-limit 0.3 ${floor}/domain.pddl ${flo
 expect_run(2 "#t" ${ALPLAN} plan ${data}/tank-continuous.pddl ${data}/tank-problem.pddl)
 expect_run(2 "no-such-file.pddl" ${ALPLAN} plan ${data}/no-such-file.pddl ${data}/tank-problem.pddl)
 expect_run(2 "search" ${ALPLAN} plan --search dfs ${data}/mixed-domain.pddl ${data}/mixed-problem.pddl)
+
+# Limits bound the whole run, whichever phase reaches them: memory running
+# out while loading or grounding is exit 11 with a message, never an abort,
+# and so is a time limit shorter than grounding (driver-log 2014 instance 10
+# grounds in about 1.8 s).
+set(assisted ${CMAKE_CURRENT_LIST_DIR}/../../domains/assisted_living)
+set(driverlog ${ipc}/ipc-2014/driver-log-temporal-satisficing)
+expect_run(11 "memory limit reached while" ${ALPLAN} plan ${assisted}/domain.pddl ${assisted}/paper-scenario-1.pddl
+  --memory-limit 50)
+expect_run(11 "memory limit reached while" ${ALPLAN} plan ${driverlog}/domain.pddl ${driverlog}/instances/instance-10.pddl
+  --memory-limit 300)
+expect_run(11 "\"status\": \"limit_reached\"" ${ALPLAN} plan --json ${driverlog}/domain.pddl
+  ${driverlog}/instances/instance-10.pddl --memory-limit 300)
+expect_run(11 "the time limit was reached while grounding" ${ALPLAN} plan ${driverlog}/domain.pddl
+  ${driverlog}/instances/instance-10.pddl --time-limit 0.5)
+
+# --json: cost is the sum of action costs (the suggestion's 500), the metric
+# (total-time + total-cost) has its own key, times are the printed plan's.
+execute_process(COMMAND ${ALPLAN} plan --json ${assisted}/domain.pddl ${assisted}/paper-scenario-3.pddl
+  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+foreach(expected "\"cost\": 500.0" "\"metric\": 515.001" "\"total_cost\": 500.0" "\"best_index\": 1")
+  string(FIND "${out}" "${expected}" at)
+  if(NOT code EQUAL 0 OR at EQUAL -1)
+    message(FATAL_ERROR "plan --json on paper-scenario-3 (exit ${code}) lacks ${expected}:\n${out}${err}")
+  endif()
+endforeach()
+execute_process(COMMAND ${ALPLAN} plan --json ${assisted}/domain.pddl ${assisted}/paper-scenario-1.pddl
+  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0 OR NOT out MATCHES "\"time\": 80.002[^0-9]")
+  message(FATAL_ERROR "plan --json on paper-scenario-1 (exit ${code}) lacks \"time\": 80.002:\n${out}${err}")
+endif()
+if(out MATCHES "\"(time|duration|makespan)\": [0-9]+\\.[0-9][0-9][0-9][0-9][0-9][0-9][0-9]")
+  message(FATAL_ERROR "plan --json prints a time with float noise (${CMAKE_MATCH_0}):\n${out}")
+endif()
+
+# --anytime ends with the best plan, one "; best plan KEY: VALUE" line each.
+execute_process(COMMAND ${ALPLAN} plan --anytime --time-limit 2 ${assisted}/domain.pddl ${assisted}/paper-scenario-3.pddl
+  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+foreach(expected "; best plan: " "; best plan makespan: " "; best plan metric: " "; best plan cost: "
+        "; best plan found after: ")
+  string(FIND "${out}" "${expected}" at)
+  if(NOT code EQUAL 0 OR at EQUAL -1)
+    message(FATAL_ERROR "plan --anytime (exit ${code}) lacks '${expected}':\n${out}${err}")
+  endif()
+endforeach()

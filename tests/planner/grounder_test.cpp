@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -232,4 +233,16 @@ TEST_CASE("the first problem of every IPC domain grounds") {
     auto task = ground(test::load_task(pair.domain_file, pair.problem_file).normalized);
     CHECK_FALSE(task->actions.empty());
   }
+}
+
+TEST_CASE("grounding stops with GroundingTimeout once its deadline has passed, and not before") {
+  const std::string dir = test::benchmarks_dir() + "/ipc/ipc-2014/driver-log-temporal-satisficing/";
+  const auto loaded = test::load_task(dir + "domain.pddl", dir + "instances/instance-3.pddl");
+  GroundingOptions past;
+  past.deadline = std::chrono::steady_clock::now() - std::chrono::seconds(1);
+  CHECK_THROWS_AS(ground(loaded.normalized, past), GroundingTimeout);
+  CHECK_THROWS_WITH(ground(loaded.normalized, past), Catch::Contains("the time limit was reached while grounding"));
+  GroundingOptions future;
+  future.deadline = std::chrono::steady_clock::now() + std::chrono::hours(1);
+  CHECK(ground(loaded.normalized, future)->actions.size() == ground(loaded.normalized)->actions.size());
 }

@@ -95,6 +95,16 @@ TEST_CASE("suggest has nothing to offer a terrified senior and says so") {
   REQUIRE(run.report.repairs.size() == 1);
   CHECK_FALSE(run.report.repairs[0].repaired);
   CHECK(run.report.outcome.find("no repair") == 0);
+  // A failed repair is explained in three parts too.
+  const repair::Explanation& e = run.report.repairs[0].explanation;
+  CHECK(e.why.find("terrified") != std::string::npos);
+  CHECK(e.why.find("(soothed senior1)") != std::string::npos);
+  CHECK(e.what.find("at 140.008, (available glass_id05), which (carry robot1 glass_id05 kitchen1)") == 0);
+  CHECK(e.how.find("no activity can be suggested to reach the goal: ") == 0);
+  CHECK(e.how.find("(soothed senior1)") != std::string::npos);
+  CHECK_FALSE(e.repaired);
+  CHECK(e.text().find("Why it could not be repaired: no activity") != std::string::npos);
+  CHECK(e.json()["repaired"] == false);
 }
 
 TEST_CASE("an action that takes longer is committed to and planned around") {
@@ -149,7 +159,10 @@ TEST_CASE("when the emotion changes, goal generation gives a new goal and the pl
   const repair::RepairRecord& r = only_repair(run);
   CHECK(r.foreseen);
   CHECK(r.failure.condition == "(bored senior1)");
-  CHECK(r.explanation.why.find("senior1 is sad; the plan's goal was (cheerful senior1)") != std::string::npos);
+  // Why the plan that failed was made (boredom); the new goal is part of how.
+  CHECK(r.explanation.why.find("bored") != std::string::npos);
+  CHECK(r.explanation.why.find("the plan's goal was (entertained senior1)") != std::string::npos);
+  CHECK(r.explanation.how.find("goal generation: senior1 is sad, so the goal is now (cheerful senior1); ") == 0);
   CHECK(r.plan_text.find("(cheer_received senior1 guitar_id01)") != std::string::npos);
   CHECK(run.report.goal_reached);
 }

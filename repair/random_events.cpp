@@ -1,0 +1,189 @@
+#include "repair/random_events.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "repair/reformulation.h"
+
+namespace alplan::repair {
+namespace {
+
+constexpr std::pair<RandomEventKind, const char*> kNames[] = {
+    {RandomEventKind::Unavailable, "unavailable"}, {RandomEventKind::NewObject, "appears"},
+    {RandomEventKind::SeniorMoves, "moves"},       {RandomEventKind::EmotionChanges, "emotion"},
+    {RandomEventKind::Overrun, "overrun"},
+};
+
+// The index-th word of "(carry robot1 glass_id05 kitchen1)": 0 the schema.
+std::string word(const std::string& name, std::size_t index) {
+  std::string cleaned = name;
+  std::replace(cleaned.begin(), cleaned.end(), '(', ' ');
+  std::replace(cleaned.begin(), cleaned.end(), ')', ' ');
+  std::istringstream in(cleaned);
+  std::string w;
+  for (std::size_t i = 0; i <= index && in >> w;) ++i;
+  return w;
+}
+
+bool holds(const pddl::Problem& problem, const std::string& predicate, const std::string& object) {
+  return std::any_of(problem.init.begin(), problem.init.end(), [&](const pddl::Atom& a) {
+    return a.name == predicate && a.args.size() == 1 && a.args.front().name == object;
+  });
+}
+
+}  // namespace
+
+std::string to_string(RandomEventKind kind) {
+  for (const auto& [k, name] : kNames) {
+    if (k == kind) return name;
+  }
+  return "?";
+}
+
+std::optional<RandomEventKind> random_event_kind(const std::string& name) {
+  for (const auto& [k, n] : kNames) {
+    if (name == n) return k;
+  }
+  return std::nullopt;
+}
+
+std::vector<RandomEventKind> all_random_event_kinds() {
+  std::vector<RandomEventKind> all;
+  for (const auto& [k, name] : kNames) all.push_back(k);
+  return all;
+}
+
+// The steps of the plan each kind of event can hit.
+struct RandomEventGenerator::PlanSteps {
+  std::vector<const ScheduledAction*> carries, handovers, moves;
+  double end = 0.0;
+};
+
+RandomEventGenerator::RandomEventGenerator(RandomEventOptions options)
+    : options_(std::move(options)), random_(options_.seed) {}
+
+double RandomEventGenerator::uniform(double lo, double hi) {
+  return std::uniform_real_distribution<double>(lo, hi)(random_);
+}
+
+std::size_t RandomEventGenerator::index(std::size_t size) {
+  return std::uniform_int_distribution<std::size_t>(0, size - 1)(random_);
+}
+
+std::vector<ExogenousEvent> RandomEventGenerator::draw(const ExecutingPlan& plan, const pddl::Problem& problem,
+                                                       const TypeOntology* ontology, int serial) {
+  PlanSteps steps;
+  for (const ScheduledAction& s : plan.steps) {
+    const std::string schema = word(s.name, 0);
+    if (schema == options_.carry_schema) steps.carries.push_back(&s);
+    if (options_.handover_schemas.count(schema)) steps.handovers.push_back(&s);
+    if (schema == options_.move_schema) steps.moves.push_back(&s);
+    steps.end = std::max(steps.end, s.end());
+  }
+  if (options_.kinds.empty()) return {};
+  const int last = static_cast<int>(options_.kinds.size()) - 1;
+  const RandomEventKind kind = options_.kinds[static_cast<std::size_t>(std::uniform_int_distribution<int>(0, last)(random_))];
+  std::vector<ExogenousEvent> events;
+  switch (kind) {
+    case RandomEventKind::Unavailable: events = unavailable(steps, problem, ontology, serial); break;
+    case RandomEventKind::NewObject: events = new_object(steps, ontology, serial); break;
+    case RandomEventKind::SeniorMoves: events = senior_moves(steps, problem); break;
+    case RandomEventKind::EmotionChanges: events = emotion_changes(steps, problem); break;
+    case RandomEventKind::Overrun: break;
+  }
+  return events.empty() ? overrun(steps) : events;
+}
+
+// An object the plan will carry becomes unavailable before the carry; half
+// the time (sibling_appears) an object of a sibling type appears beside it.
+std::vector<ExogenousEvent> RandomEventGenerator::unavailable(const PlanSteps& steps, const pddl::Problem& problem,
+                                                              const TypeOntology* ontology, int serial) {
+  if (steps.carries.empty()) return {};
+  const ScheduledAction& carry = *steps.carries[index(steps.carries.size())];
+  const std::string object = word(carry.name, 2), room = word(carry.name, 3);
+  const double at = uniform(0.0, std::max(0.0, carry.start - 0.001));
+  std::vector<ExogenousEvent> events{becomes_unavailable(at, object)};
+  if (!ontology) return events;
+  const std::string type = object_type(problem, object).value_or("");
+  std::vector<std::string> siblings;
+  for (const std::string& a : ontology->augmented()) {
+    if (ontology->parent(a) == ontology->parent(type)) siblings.push_back(a);
+  }
+  if (!siblings.empty() && uniform(0.0, 1.0) < options_.sibling_appears) {
+    const std::string t = siblings[index(siblings.size())];
+    events.push_back(object_appears(at, {t + "_new" + std::to_string(serial), t, room, 1.0}));
+  }
+  return events;
+}
+
+// A new object of one of the ontology's augmented types (one no IoT device
+// reports) appears where the plan picks something up, or by the senior.
+std::vector<ExogenousEvent> RandomEventGenerator::new_object(const PlanSteps& steps, const TypeOntology* ontology,
+                                                             int serial) {
+  if (!ontology || ontology->augmented().empty()) return {};
+  std::string room;
+  if (!steps.carries.empty()) room = word(steps.carries[index(steps.carries.size())]->name, 3);
+  if (room.empty() && !steps.handovers.empty()) room = word(steps.handovers.front()->name, 4);
+  if (room.empty()) return {};
+  const std::vector<std::string> types(ontology->augmented().begin(), ontology->augmented().end());
+  const std::string type = types[index(types.size())];
+  const double at = uniform(0.0, steps.end);
+  return {object_appears(at, {type + "_new" + std::to_string(serial), type, room, 1.0})};
+}
+
+// The senior the plan hands something to walks to another private room
+// before the handover.
+std::vector<ExogenousEvent> RandomEventGenerator::senior_moves(const PlanSteps& steps, const pddl::Problem& problem) {
+  if (steps.handovers.empty()) return {};
+  const ScheduledAction& give = *steps.handovers.front();
+  const std::string senior = word(give.name, 2), from = word(give.name, 4);
+  std::vector<std::string> rooms;
+  for (const pddl::TypedName& o : problem.objects) {
+    const bool private_room = std::any_of(o.types.begin(), o.types.end(),
+                                          [&](const std::string& t) { return options_.senior_room_types.count(t); });
+    if (private_room && o.name != from) rooms.push_back(o.name);
+  }
+  if (rooms.empty()) return {};
+  const std::string to = rooms[index(rooms.size())];
+  return repair::senior_moves(uniform(0.0, give.start), senior, from, to);
+}
+
+// The senior the plan comforts feels something else before the handover;
+// the window the new emotion needs opens if it was closed.
+std::vector<ExogenousEvent> RandomEventGenerator::emotion_changes(const PlanSteps& steps,
+                                                                  const pddl::Problem& problem) {
+  if (steps.handovers.empty()) return {};
+  const ScheduledAction& give = *steps.handovers.front();
+  const std::string senior = word(give.name, 2);
+  std::string from;
+  for (const std::string& e : options_.emotions) {
+    if (from.empty() && holds(problem, e, senior)) from = e;
+  }
+  std::vector<std::string> others;
+  for (const std::string& e : options_.emotions) {
+    if (e != from) others.push_back(e);
+  }
+  if (from.empty() || others.empty()) return {};
+  const std::string to = others[index(others.size())];
+  const double at = uniform(0.0, give.start);
+  std::vector<ExogenousEvent> events = repair::emotion_changes(at, senior, from, to);
+  const auto window = options_.emotion_windows.find(to);
+  if (window != options_.emotion_windows.end() && !holds(problem, window->second, senior)) {
+    ExogenousEvent open;
+    open.time = at;
+    open.atom = {window->second, senior};
+    open.value = true;
+    open.description = events.front().description;
+    events.push_back(open);
+  }
+  return events;
+}
+
+std::vector<ExogenousEvent> RandomEventGenerator::overrun(const PlanSteps& steps) {
+  if (steps.moves.empty()) return {};
+  const ScheduledAction& move = *steps.moves[index(steps.moves.size())];
+  return {action_overruns(move.name, std::round(uniform(options_.overrun_min, options_.overrun_max)))};
+}
+
+}  // namespace alplan::repair
