@@ -35,6 +35,7 @@ struct PaperCnnImpl : torch::nn::Module {
     }
     output = register_module("output", torch::nn::Linear(features, static_cast<std::int64_t>(classes)));
     dropout = register_module("dropout", torch::nn::Dropout(a.dropout));
+    dropout_every_hidden = a.dropout_every_hidden_layer;
     // He initialisation (He et al., ICCV 2015) for the ReLU layers: torch's
     // default draws weights a third as large in variance, and through five
     // narrow dense layers the signal then fades and training crawls.
@@ -50,8 +51,11 @@ struct PaperCnnImpl : torch::nn::Module {
 
   torch::Tensor forward(torch::Tensor x) {
     for (auto& conv : convs) x = torch::max_pool2d(torch::relu(conv->forward(x)), 2);
-    x = x.flatten(1);
-    for (auto& layer : dense) x = dropout->forward(torch::relu(layer->forward(x)));
+    x = dropout->forward(x.flatten(1));
+    for (auto& layer : dense) {
+      x = torch::relu(layer->forward(x));
+      if (dropout_every_hidden) x = dropout->forward(x);
+    }
     return output->forward(x);
   }
 
@@ -68,12 +72,14 @@ struct PaperCnnImpl : torch::nn::Module {
   std::vector<torch::nn::Linear> dense;
   torch::nn::Linear output{nullptr};
   torch::nn::Dropout dropout{nullptr};
+  bool dropout_every_hidden = false;
 };
 TORCH_MODULE(PaperCnn);
 
 nlohmann::json architecture_json(const CnnArchitecture& a) {
   return {{"input_size", a.input_size}, {"channels", a.channels}, {"conv_filters", a.conv_filters},
-          {"kernel", a.kernel},         {"hidden", a.hidden},     {"dropout", a.dropout}};
+          {"kernel", a.kernel},         {"hidden", a.hidden},     {"dropout", a.dropout},
+          {"dropout_every_hidden_layer", a.dropout_every_hidden_layer}};
 }
 
 CnnArchitecture architecture_from_json(const nlohmann::json& j) {
@@ -84,6 +90,7 @@ CnnArchitecture architecture_from_json(const nlohmann::json& j) {
   a.kernel = j.at("kernel").get<int>();
   a.hidden = j.at("hidden").get<std::vector<int>>();
   a.dropout = j.at("dropout").get<double>();
+  a.dropout_every_hidden_layer = j.value("dropout_every_hidden_layer", false);
   return a;
 }
 
