@@ -4,8 +4,10 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "cli/perception_module.h"
 
 int main(int argc, char** argv) {
+  if (argc > 1 && alplan::cli::is_perception_command(argv[1])) return alplan::cli::run_perception_command(argc, argv);
   CLI::App app{"alplan: PDDL 2.2 temporal planning toolkit for assisted-living deliberation"};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Print help for every subcommand");
@@ -17,6 +19,10 @@ int main(int argc, char** argv) {
   alplan::cli::add_scenario_command(app, exit_code);
   alplan::cli::add_gen_command(app, exit_code);
   alplan::cli::add_bench_command(app, exit_code);
+  // Listed for --help; they run in the perception module (perception_module.h).
+  for (const alplan::cli::ModuleCommand& c : alplan::cli::kPerceptionCommands) {
+    app.add_subcommand(c.name, c.help)->allow_extras();
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

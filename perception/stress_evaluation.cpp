@@ -18,8 +18,10 @@ std::size_t row_of(int stressed) { return stressed == 1 ? kStressedRow : kCalmRo
 void add_windows(SubjectWindows& subject, const PpgRecording& recording, StressFeatureSet features,
                  const WindowingOptions& windowing) {
   for (const StressWindow& w : stress_windows(recording, windowing)) {
-    if (!w.usable || (w.label != 0 && w.label != 1)) {
+    if (w.label != 0 && w.label != 1) continue;
+    if (!w.usable) {
       subject.rejected += 1;
+      if (w.features.has_heart_rate) subject.flagged.push_back({feature_vector(w.features, features), w.label});
       continue;
     }
     subject.examples.push_back({feature_vector(w.features, features), w.label});
@@ -72,7 +74,7 @@ std::vector<SubjectWindows> windows_by_subject(const std::vector<LabelledRecordi
   std::map<std::string, std::size_t> index;
   for (const LabelledRecording& r : recordings) {
     auto [it, inserted] = index.emplace(r.subject_id, out.size());
-    if (inserted) out.push_back({r.subject_id, {}, 0});
+    if (inserted) out.push_back({r.subject_id, {}, 0, {}});
     add_windows(out[it->second], r.simulated.recording, features, windowing);
   }
   return out;
@@ -85,7 +87,7 @@ std::vector<SubjectWindows> windows_by_subject(const std::vector<std::pair<std::
   for (const auto& [subject, recording] : recordings) {
     if (!recording.has_labels()) throw std::invalid_argument("recording of " + subject + " has no label column");
     auto [it, inserted] = index.emplace(subject, out.size());
-    if (inserted) out.push_back({subject, {}, 0});
+    if (inserted) out.push_back({subject, {}, 0, {}});
     add_windows(out[it->second], recording, features, windowing);
   }
   return out;
@@ -128,10 +130,13 @@ StressEvaluation evaluate_stress(const std::vector<SubjectWindows>& subjects, co
   return result;
 }
 
-ConfusionMatrix stress_confusion(const StressClassifier& model, const std::vector<SubjectWindows>& subjects) {
+ConfusionMatrix stress_confusion(const StressClassifier& model, const std::vector<SubjectWindows>& subjects,
+                                 bool include_flagged) {
   ConfusionMatrix matrix({"Stressed", "Un-stressed"});
   for (const SubjectWindows& s : subjects) {
     for (const StressExample& e : s.examples) matrix.add(row_of(e.stressed), row_of(model.predict(e.features)));
+    if (!include_flagged) continue;
+    for (const StressExample& e : s.flagged) matrix.add(row_of(e.stressed), row_of(model.predict(e.features)));
   }
   return matrix;
 }

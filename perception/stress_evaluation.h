@@ -24,6 +24,9 @@ struct SubjectWindows {
   std::string subject;
   std::vector<StressExample> examples;  // usable windows only
   std::size_t rejected = 0;             // windows dropped as artefacts
+  // Of the rejected, those that still had a heart rate (flagged for
+  // motion): what a detector without artefact rejection would have used.
+  std::vector<StressExample> flagged;
 };
 
 // Windows of labelled recordings, grouped by subject (1 = stressed).
@@ -63,6 +66,9 @@ StressEvaluation evaluate_stress(const std::vector<SubjectWindows>& subjects, co
 
 // The model's confusion matrix on other subjects (the paper's Table 2: the
 // same model on data from the wristband).
-ConfusionMatrix stress_confusion(const StressClassifier& model, const std::vector<SubjectWindows>& subjects);
+// With `include_flagged`, the motion-flagged windows count too (no
+// artefact rejection).
+ConfusionMatrix stress_confusion(const StressClassifier& model, const std::vector<SubjectWindows>& subjects,
+                                 bool include_flagged = false);
 
 }  // namespace alplan::perception

@@ -1,0 +1,28 @@
+// The perception module's entry point (perception_module.h): the same
+// command line `alplan` received, parsed here with the perception commands.
+#include <CLI/CLI.hpp>
+
+#include <opencv2/core/utils/logger.hpp>
+
+#include "cli/commands.h"
+
+extern "C" __attribute__((visibility("default"))) int alplan_perception_main(int argc, char** argv) {
+  // OpenCV's own warnings ("can't open/read file") would repeat the
+  // commands' errors in another voice.
+  cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_ERROR);
+  CLI::App app{"alplan: PDDL 2.2 temporal planning toolkit for assisted-living deliberation"};
+  app.require_subcommand(1);
+  int exit_code = alplan::cli::kExitOk;
+  alplan::cli::add_perceive_command(app, exit_code);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return alplan::cli::kExitInputError;
+  }
+  return exit_code;
+}

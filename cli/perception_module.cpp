@@ -1,0 +1,52 @@
+#include "cli/perception_module.h"
+
+#include <dlfcn.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+#include "cli/commands.h"
+
+namespace alplan::cli {
+namespace {
+
+std::filesystem::path module_path() {
+  if (const char* set = std::getenv("ALPLAN_PERCEPTION_MODULE")) return set;
+  char self[4096];
+  const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+  const std::filesystem::path dir = n > 0 ? std::filesystem::path(std::string(self, static_cast<std::size_t>(n))).parent_path()
+                                          : std::filesystem::current_path();
+  return dir / ALPLAN_PERCEPTION_MODULE_FILE;
+}
+
+}  // namespace
+
+bool is_perception_command(const std::string& name) {
+  for (const ModuleCommand& c : kPerceptionCommands) {
+    if (name == c.name) return true;
+  }
+  return false;
+}
+
+int run_perception_command(int argc, char** argv) {
+  const std::filesystem::path path = module_path();
+  // The handle stays open until the process ends: the command's objects
+  // and atexit handlers live in the module.
+  void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!module) {
+    std::cerr << "error: cannot load the perception module " << path.string() << ": " << dlerror()
+              << "\n(build it with the alplan target, or set ALPLAN_PERCEPTION_MODULE to its path)\n";
+    return kExitInputError;
+  }
+  auto entry = reinterpret_cast<PerceptionMain>(dlsym(module, kPerceptionEntryPoint));
+  if (!entry) {
+    std::cerr << "error: " << path.string() << " is not alplan's perception module (no " << kPerceptionEntryPoint
+              << ")\n";
+    return kExitInputError;
+  }
+  return entry(argc, argv);
+}
+
+}  // namespace alplan::cli
