@@ -24,7 +24,9 @@ void add_bench_command(CLI::App& app, int& exit_code);
 void add_plan_command(CLI::App& app, int& exit_code);
 void add_scenario_command(CLI::App& app, int& exit_code);
 void add_gen_command(CLI::App& app, int& exit_code);
-void add_perceive_command(CLI::App& app, int& exit_code);  // in the perception module
+// In the perception module (perception_module.h):
+void add_perceive_command(CLI::App& app, int& exit_code);
+void add_deliberate_command(CLI::App& app, int& exit_code);
 void add_bench_repair_command(CLI::App* bench, int& exit_code);
 
 }  // namespace alplan::cli

@@ -14,6 +14,7 @@ extern "C" __attribute__((visibility("default"))) int alplan_perception_main(int
   app.require_subcommand(1);
   int exit_code = alplan::cli::kExitOk;
   alplan::cli::add_perceive_command(app, exit_code);
+  alplan::cli::add_deliberate_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -23,6 +23,7 @@ struct ModuleCommand {
 };
 inline constexpr ModuleCommand kPerceptionCommands[] = {
     {"perceive", "Perception: emotions and objects in images, the type ontology, stress detection, training"},
+    {"deliberate", "One senior end to end: stress, emotion, goal, plan, act, monitor, repair"},
 };
 
 bool is_perception_command(const std::string& name);

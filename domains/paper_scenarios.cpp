@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "domains/mission_run.h"
 #include "domains/pddl_files.h"
 #include "repair/reformulation.h"
 #include "repair/type_ontology.h"
@@ -43,34 +44,21 @@ ScenarioRun run_paper_scenario(const PaperScenario& scenario, const ScenarioOpti
   const repair::TypeOntology ontology = repair::TypeOntology::from_file(dir + "/types.ttl");
   const pddl::Domain domain = repair::augment_domain(*files.domain, ontology);
 
+  MissionInput input;
+  input.domain = &domain;
+  input.problem = *files.problem;
+  input.events = scenario.events;
+  input.motivation = scenario.motivation;
+  input.seniors = {"senior1"};
+  input.ontology = &ontology;
+  MissionRun mission = run_mission(input, options);
+
   ScenarioRun run;
   run.scenario = scenario;
-  // The first plan is the best the planner can prove within its time: the
-  // metric penalises suggestions, and the first plan found may suggest.
-  PlannerOptions initial;
-  initial.epsilon = options.epsilon;
-  initial.anytime = true;
-  initial.time_limit = options.planning_time;
-  const repair::PlanningOutcome planned = repair::plan_in_process(domain, *files.problem, 0.0, initial);
-  if (!planned.plan) throw std::runtime_error(scenario.name + ": no initial plan: " + planned.message);
-  run.initial_plan = repair::plan_text(*planned.plan);
-  run.initial_planning_seconds = planned.seconds;
-
-  repair::StrategyOptions strategy_options;
-  strategy_options.planner.epsilon = options.epsilon;
-  strategy_options.planner.time_limit = options.planning_time;
-  std::unique_ptr<repair::RepairStrategy> strategy = repair::make_strategy(options.strategy, strategy_options);
-  std::vector<repair::ExogenousEvent> events = repair::timed_literal_events(*files.problem);
-  events.insert(events.end(), scenario.events.begin(), scenario.events.end());
-  repair::WorldSimulator world(repair::initial_world(*files.problem), events);
-  repair::Mission mission;
-  mission.domain = &domain;
-  mission.problem = *files.problem;
-  mission.motivation = scenario.motivation;
-  mission.goal_generator = emotion_goal_generator("senior1");
-  const repair::Monitor monitor(options.monitor);
-  run.report = monitor.run(mission, *planned.plan, world, *strategy, &world, &ontology);
-  for (const repair::ExogenousEvent& e : world.applied()) run.applied_events.push_back(e.description);
+  run.initial_plan = std::move(mission.initial_plan);
+  run.initial_planning_seconds = mission.initial_planning_seconds;
+  run.report = std::move(mission.report);
+  run.applied_events = std::move(mission.applied_events);
   return run;
 }
 

@@ -50,7 +50,7 @@ struct CnnArchitecture {
   double dropout = 0.2;  // on the convolutional features, before the dense layers
   // The other reading of "dropout 0.2": after every hidden layer too. In
   // layers 32 wide it slows learning badly (measured on 10,000 Fashion-MNIST
-  // images, two epochs: 0.64 test accuracy against 0.81 without it).
+  // images, two epochs: 0.64 test accuracy against 0.82 with dropout once).
   bool dropout_every_hidden_layer = false;
 };
 

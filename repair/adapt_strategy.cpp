@@ -58,8 +58,9 @@ class AdaptStrategy : public RepairStrategy {
     const auto began = std::chrono::steady_clock::now();
     RepairResult result;
     pddl::Problem known = *request.problem;
-    result.integrated = integrate_recognized(request, known);
-    result.problem = reformulate(*request.domain, known, request.observed, request.in_progress, request.now);
+    RepairRequest seen = request;
+    result.integrated = integrate_recognized(seen, known);
+    result.problem = reformulate(*request.domain, known, seen.observed, request.in_progress, request.now);
     std::shared_ptr<const GroundTask> task;
     try {
       task = ground(*request.domain, result.problem);

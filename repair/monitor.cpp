@@ -250,7 +250,7 @@ class Execution {
     none.kind = Violation::Kind::Unsupported;
     none.time = t;
     none.condition = "nothing failed; the monitor looked for a better plan at " + time_text(t);
-    const RepairRequest r = request(none, observed, t);
+    RepairRequest r = request(none, observed, t);
     pddl::Problem known = problem_;
     const std::vector<RecognizedObject> seen = integrate_recognized(r, known);
     if (seen.empty()) return false;  // the world offers nothing new

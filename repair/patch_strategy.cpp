@@ -61,9 +61,10 @@ class PatchStrategy : public RepairStrategy {
   RepairResult repair(const RepairRequest& request) override {
     const auto began = std::chrono::steady_clock::now();
     pddl::Problem problem = *request.problem;
-    const std::vector<RecognizedObject> recognized = integrate_recognized(request, problem);
+    RepairRequest seen = request;
+    const std::vector<RecognizedObject> recognized = integrate_recognized(seen, problem);
     const pddl::Problem reformulated =
-        reformulate(*request.domain, problem, request.observed, request.in_progress, request.now);
+        reformulate(*request.domain, problem, seen.observed, request.in_progress, request.now);
     std::shared_ptr<const GroundTask> task;
     try {
       task = ground(*request.domain, reformulated);
@@ -88,7 +89,7 @@ class PatchStrategy : public RepairStrategy {
         }
       }
     }
-    RepairResult result = replan_from(request, *request.domain, problem, options_.planner);
+    RepairResult result = replan_from(seen, *request.domain, problem, options_.planner);
     result.integrated = recognized;
     if (result.repaired) {
       result.how = "no equivalent object made the old plan work, so it replanned: " +

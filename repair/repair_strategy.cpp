@@ -57,8 +57,9 @@ class SubstituteStrategy : public RepairStrategy {
   std::string name() const override { return "substitute"; }
   RepairResult repair(const RepairRequest& request) override {
     pddl::Problem problem = *request.problem;
-    const std::vector<RecognizedObject> integrated = integrate_recognized(request, problem);
-    RepairResult result = replan_from(request, *request.domain, problem, options_.planner);
+    RepairRequest seen = request;
+    const std::vector<RecognizedObject> integrated = integrate_recognized(seen, problem);
+    RepairResult result = replan_from(seen, *request.domain, problem, options_.planner);
     result.integrated = integrated;
     if (!result.repaired) return result;
     std::string how;
@@ -126,7 +127,7 @@ RepairResult replan_from(const RepairRequest& request, const pddl::Domain& domai
   return result;
 }
 
-std::vector<RecognizedObject> integrate_recognized(const RepairRequest& request, pddl::Problem& problem) {
+std::vector<RecognizedObject> integrate_recognized(RepairRequest& request, pddl::Problem& problem) {
   std::vector<RecognizedObject> integrated;
   if (!request.recognizer) return integrated;
   std::set<std::string> types{"object"};
@@ -137,6 +138,8 @@ std::vector<RecognizedObject> integrate_recognized(const RepairRequest& request,
     object.name = o.name;
     object.types = {o.type};
     problem.objects.push_back(object);
+    request.observed.set({"be", o.name, o.location}, true);
+    request.observed.set({"available", o.name}, true);
     integrated.push_back(o);
   }
   return integrated;

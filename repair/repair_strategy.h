@@ -74,8 +74,11 @@ std::vector<std::string> strategy_names();
 RepairResult replan_from(const RepairRequest& request, const pddl::Domain& domain, const pddl::Problem& problem,
                          const PlannerOptions& options);
 // Adds the objects perception recognises at the robot's location, of types
-// the domain knows, to the problem; returns them.
-std::vector<RecognizedObject> integrate_recognized(const RepairRequest& request, pddl::Problem& problem);
+// the domain knows, to the problem, and what perception saw of them -- (be o
+// location) and (available o) -- to the request's observed state (the
+// paper: "integrated into the planning problem along with its location and
+// availability"; IoT sensors know nothing of such objects); returns them.
+std::vector<RecognizedObject> integrate_recognized(RepairRequest& request, pddl::Problem& problem);
 // A sentence naming what the new plan gives or suggests, to whom.
 std::string describe_remedy(const ExecutingPlan& plan, double from);
 

@@ -1,0 +1,44 @@
+#include "domains/mission_run.h"
+
+#include <memory>
+#include <stdexcept>
+
+#include "domains/emotion_goals.h"
+#include "repair/reformulation.h"
+
+namespace alplan::domains {
+
+MissionRun run_mission(const MissionInput& input, const ScenarioOptions& options) {
+  MissionRun run;
+  // The first plan is the best the planner can prove within its time: the
+  // metric penalises suggestions, and the first plan found may suggest.
+  PlannerOptions initial;
+  initial.epsilon = options.epsilon;
+  initial.anytime = true;
+  initial.time_limit = options.planning_time;
+  const repair::PlanningOutcome planned = repair::plan_in_process(*input.domain, input.problem, 0.0, initial);
+  if (!planned.plan) throw std::runtime_error(input.problem.name + ": no initial plan: " + planned.message);
+  run.initial_plan = repair::plan_text(*planned.plan);
+  run.initial_planning_seconds = planned.seconds;
+
+  repair::StrategyOptions strategy_options;
+  strategy_options.planner.epsilon = options.epsilon;
+  strategy_options.planner.time_limit = options.planning_time;
+  std::unique_ptr<repair::RepairStrategy> strategy = repair::make_strategy(options.strategy, strategy_options);
+  std::vector<repair::ExogenousEvent> events = repair::timed_literal_events(input.problem);
+  events.insert(events.end(), input.events.begin(), input.events.end());
+  repair::WorldSimulator world(repair::initial_world(input.problem), events);
+  repair::Mission mission;
+  mission.domain = input.domain;
+  mission.problem = input.problem;
+  mission.motivation = input.motivation;
+  mission.goal_generator = input.seniors.size() == 1 ? emotion_goal_generator(input.seniors.front())
+                                                     : emotion_goal_generator(input.seniors);
+  const repair::Monitor monitor(options.monitor);
+  repair::ObjectRecognizer* eyes = input.recognizer ? input.recognizer : &world;
+  run.report = monitor.run(mission, *planned.plan, world, *strategy, eyes, input.ontology);
+  for (const repair::ExogenousEvent& e : world.applied()) run.applied_events.push_back(e.description);
+  return run;
+}
+
+}  // namespace alplan::domains

@@ -1,0 +1,41 @@
+// One mission of the assisted-living robot end to end: plan the problem,
+// execute the plan against a simulated world with scripted exogenous events,
+// and let the monitor detect failures and repair them with a strategy. The
+// paper's scenarios and `alplan deliberate` (perception's goal, a camera's
+// objects) both run through here.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "domains/paper_scenarios.h"
+#include "repair/monitor.h"
+#include "repair/object_recognizer.h"
+#include "repair/type_ontology.h"
+#include "repair/world_simulator.h"
+
+namespace alplan::domains {
+
+struct MissionInput {
+  const pddl::Domain* domain = nullptr;  // with the ontology's types (augment_domain)
+  pddl::Problem problem;
+  std::vector<repair::ExogenousEvent> events;  // besides the problem's timed literals
+  std::string motivation;                      // why the goal: "senior1 is stressed and terrified"
+  std::vector<std::string> seniors;            // whose emotions goal generation reads
+  const repair::TypeOntology* ontology = nullptr;
+  // What perception sees on request; null: the simulator's own report of
+  // the objects its events made appear.
+  repair::ObjectRecognizer* recognizer = nullptr;
+};
+
+struct MissionRun {
+  std::string initial_plan;  // IPC format
+  double initial_planning_seconds = 0.0;
+  repair::ExecutionReport report;
+  std::vector<std::string> applied_events;
+};
+
+// Throws std::runtime_error when the problem has no initial plan.
+MissionRun run_mission(const MissionInput& input, const ScenarioOptions& options);
+
+}  // namespace alplan::domains
