@@ -145,7 +145,8 @@ std::vector<ReceivedReading> parse_readings(std::string_view body, std::size_t m
   json document;
   try {
     document = json::parse(body);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {
+    // A syntax error (parse_error) or a number beyond double (out_of_range);
     // nlohmann's message: "[json.exception.parse_error.101] parse error at line 1, column 3: ..."
     std::string message = e.what();
     if (const auto at = message.find("] "); at != std::string::npos) message.erase(0, at + 2);

@@ -57,45 +57,60 @@ struct ReadingsClient::Impl {
   std::optional<beast::tcp_stream> stream;
   beast::flat_buffer buffer;
 
+  // Runs the asynchronous operations started before it: Beast's deadlines
+  // (expires_after) bind asynchronous operations only.
+  void run() {
+    io.restart();
+    io.run();
+  }
+
   HttpResult connect() {
     HttpResult failed;
+    beast::error_code error;
     try {
       tcp::resolver resolver(io);
       const auto addresses = resolver.resolve(endpoint.host, std::to_string(endpoint.port));
       stream.emplace(io);
       stream->expires_after(timeout);
-      stream->connect(addresses);
-      stream->socket().set_option(tcp::no_delay(true));
+      stream->async_connect(addresses, [&error](beast::error_code e, const tcp::endpoint&) { error = e; });
+      run();
+    } catch (const boost::system::system_error& e) {
+      error = e.code();
+    }
+    if (!error) {
+      stream->socket().set_option(tcp::no_delay(true), error);
       buffer.clear();
       return failed;  // status 0: connected
-    } catch (const boost::system::system_error& e) {
-      stream.reset();
-      failed.status = e.code() == beast::error::timeout ? kTransportTimeout : kTransportConnectFailed;
-      failed.error = "cannot connect to " + endpoint.host + ":" + std::to_string(endpoint.port) + ": " +
-                     e.code().message();
-      return failed;
     }
+    stream.reset();
+    failed.status = error == beast::error::timeout ? kTransportTimeout : kTransportConnectFailed;
+    failed.error = "cannot connect to " + endpoint.host + ":" + std::to_string(endpoint.port) + ": " + error.message();
+    return failed;
   }
 
   // One exchange on the current connection.
   HttpResult exchange(const http::request<http::string_body>& request) {
     HttpResult result;
-    try {
-      stream->expires_after(timeout);
-      http::write(*stream, request);
-      http::response_parser<http::string_body> parser;
-      parser.body_limit(16 * 1024 * 1024);
-      http::read(*stream, buffer, parser);
-      stream->expires_never();
-      result.status = static_cast<int>(parser.get().result_int());
-      result.body = std::move(parser.get().body());
-      if (!parser.get().keep_alive()) stream.reset();
-    } catch (const boost::system::system_error& e) {
+    http::response_parser<http::string_body> parser;
+    parser.body_limit(16 * 1024 * 1024);
+    beast::error_code error;
+    stream->expires_after(timeout);
+    http::async_write(*stream, request, [&](beast::error_code write_error, std::size_t) {
+      error = write_error;
+      if (write_error) return;
+      http::async_read(*stream, buffer, parser, [&error](beast::error_code read_error, std::size_t) { error = read_error; });
+    });
+    run();
+    if (error) {
       stream.reset();
-      result.status = e.code() == beast::error::timeout ? kTransportTimeout : kTransportConnectionLost;
-      result.error = "request to " + endpoint.host + ":" + std::to_string(endpoint.port) + " failed: " +
-                     e.code().message();
+      result.status = error == beast::error::timeout ? kTransportTimeout : kTransportConnectionLost;
+      result.error = "request to " + endpoint.host + ":" + std::to_string(endpoint.port) + " failed: " + error.message();
+      return result;
     }
+    stream->expires_never();
+    result.status = static_cast<int>(parser.get().result_int());
+    result.body = std::move(parser.get().body());
+    if (!parser.get().keep_alive()) stream.reset();
     return result;
   }
 

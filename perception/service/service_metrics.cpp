@@ -68,7 +68,7 @@ std::string ServiceMetrics::render_prometheus(const IngestCounters& ingest,
     }
   }
   family(out, "alplan_readings_request_seconds", "summary",
-         "Latency of POST /v1/readings, from the complete request to the response (commit included).");
+         "Latency of accepted POST /v1/readings, from the complete request to the response (commit included).");
   for (const double q : {0.5, 0.9, 0.99, 0.999}) {
     out << "alplan_readings_request_seconds{quantile=\"" << q << "\"} " << readings_latency_.quantile(q) << '\n';
   }

@@ -1,6 +1,7 @@
 // What the HTTP side of the service counts: responses by status, rejected
-// requests by reason, connections, and the latency of POST /v1/readings
-// (from the complete request to the response, the commit included).
+// requests by reason, connections, and the latency of accepted POST
+// /v1/readings (from the complete request to the response, the commit
+// included; refusals are quick and would flatter it).
 // Thread-safe. Rendered with the ingest's counters by render_prometheus() in
 // the Prometheus text exposition format (version 0.0.4), which GET /metrics
 // serves.

@@ -14,7 +14,11 @@ namespace {
 std::vector<float> simulate_signal(const WristbandSpec& spec) {
   PpgSimulator simulator(spec.seed);
   SubjectProfile subject = simulator.random_subject();
-  const StressResponse response = simulator.random_stress_response();
+  StressResponse response = simulator.random_stress_response();
+  if (spec.typical_subject) {
+    subject = SubjectProfile{};
+    response = StressResponse{};
+  }
   if (spec.stressed) subject = under_stress(subject, response);
   RecordingConditions conditions;
   conditions.sample_rate_hz = spec.sample_rate_hz;

@@ -34,6 +34,10 @@ struct WristbandSpec {
   std::string token;
   std::uint32_t boot = 0;
   bool stressed = false;
+  // A random subject of the simulator's population (resting HR 72 +- 8 bpm,
+  // its own stress response), or the typical one (SubjectProfile{} and
+  // StressResponse{}: 70 bpm, +15 bpm under stress, HRV x0.55).
+  bool typical_subject = false;
   std::uint64_t seed = 1;  // the subject and the signal
   double sample_rate_hz = 50.0;
   double duration_s = 120.0;  // of signal

@@ -47,6 +47,11 @@ void StressEventQueue::close() {
   available_.notify_all();
 }
 
+bool StressEventQueue::closed() const {
+  const std::lock_guard lock(mutex_);
+  return closed_;
+}
+
 std::size_t StressEventQueue::size() const {
   const std::lock_guard lock(mutex_);
   return events_.size();

@@ -44,6 +44,7 @@ class StressEventQueue {
   // popped.
   void close();
 
+  bool closed() const;
   std::size_t size() const;
   std::uint64_t dropped() const;
   std::size_t capacity() const { return capacity_; }

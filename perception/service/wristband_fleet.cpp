@@ -59,6 +59,7 @@ WristbandFleet::WristbandFleet(const DeviceRegistry& registry, const FleetOption
     spec.token = device.token;
     spec.boot = options_.boot;
     spec.stressed = i < options_.stressed;
+    spec.typical_subject = options_.typical_subjects;
     spec.seed = options_.seed * 1000003ULL + i;
     spec.sample_rate_hz = options_.sample_rate_hz;
     spec.duration_s = options_.duration_s;

@@ -34,6 +34,7 @@ struct FleetOptions {
   double duration_s = 120.0;
   double speed = 1.0;
   std::size_t stressed = 0;
+  bool typical_subjects = false;  // every senior the typical subject (simulated_wristband.h)
   std::uint64_t seed = 1;
   double sample_rate_hz = 50.0;
   std::uint32_t window_ms = 30000;
