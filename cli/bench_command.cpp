@@ -97,6 +97,7 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   p->callback([planners, &exit_code] { exit_code = run_planners(*planners); });
 
   add_bench_repair_command(bench, exit_code);
+  add_bench_service_command(bench, exit_code);
 }
 
 }  // namespace alplan::cli

@@ -17,6 +17,8 @@ int main(int argc, char** argv) {
   alplan::cli::add_scenario_command(app, exit_code);
   alplan::cli::add_gen_command(app, exit_code);
   alplan::cli::add_bench_command(app, exit_code);
+  alplan::cli::add_serve_command(app, exit_code);
+  alplan::cli::add_wristband_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
