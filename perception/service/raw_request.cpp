@@ -42,7 +42,8 @@ HttpResponse respond_to_bytes(RequestHandler& handler, ServiceMetrics& metrics, 
       used += n;
     }
     error = {};
-    if (!parser.is_done()) parser.put_eof(error);
+    // put_eof() asserts that something was parsed; nothing at all is a request that ended early too.
+    if (!parser.is_done() && parser.got_some()) parser.put_eof(error);
     if (error || !parser.is_done()) {
       return parse_error_response(error ? error : make_error_code(http::error::partial_message), metrics);
     }

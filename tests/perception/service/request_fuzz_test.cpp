@@ -155,6 +155,11 @@ TEST_CASE("fuzz: 20000 random requests through parser and handler, always a well
   CHECK(statuses[400] > 1000);
   CHECK(statuses[401] + statuses[403] + statuses[404] + statuses[405] > 100);
   CHECK(statuses.count(500) == 0);
+  // Edge cases the fuzzers found: nothing at all (Beast asserts on an EOF
+  // before any byte), a number beyond double.
+  CHECK(respond_to_bytes(handler, metrics, "", ParseLimits{}).result_int() == 400);
+  const std::string huge = request_text("POST", "/v1/readings", registry.devices()[0].token, "[1e999]");
+  CHECK(respond_to_bytes(handler, metrics, huge, ParseLimits{}).result_int() == 400);
   // And the service still stores a good reading afterwards.
   const std::string good = request_text("POST", "/v1/readings", registry.devices()[0].token, kReading);
   CHECK(respond_to_bytes(handler, metrics, good, ParseLimits{}).result_int() == 200);
