@@ -109,11 +109,10 @@ BenchRow run_one(const BenchServiceOptions& o, std::size_t devices, const percep
 }
 
 void print_row(std::ostream& out, const BenchServiceOptions& o, const BenchRow& r) {
-  const double window_s = 30.0;
-  // Readings are made from the end of the first window to the end of the signal.
-  const double producing_wall_s = (o.duration_s - window_s) / o.speed;
   const double offered = static_cast<double>(r.devices) * o.rate_hz * o.speed;
-  const double held = static_cast<double>(r.fleet.total.acknowledged) / producing_wall_s;
+  // From the first reading made to the last acknowledged: a service that
+  // falls behind stretches the span and the rate drops below the offered one.
+  const double held = r.fleet.acknowledged_per_s();
   char line[512];
   std::snprintf(line, sizeof line, "| %zu | %.0f | %.0f | %llu | %llu | %llu | %.2f | %.2f | %.2f | %.2f | %llu | %s |\n",
                 r.devices, offered, held, static_cast<unsigned long long>(r.fleet.total.made),

@@ -53,11 +53,12 @@ nlohmann::json summary_json(const service::FleetSummary& s) {
           {"latency_p99_ms", s.latency_p99_s * 1000.0}, {"wall_s", s.wall_s}, {"complete", s.complete()}};
 }
 
-int run_simulate(SimulateOptions o) {
+int run_simulate(const SimulateOptions& o) {
   try {
     const service::DeviceRegistry registry = service::read_device_registry_file(o.tokens);
-    o.fleet.http_timeout = std::chrono::milliseconds(static_cast<long>(o.http_timeout_s * 1000.0));
-    service::WristbandFleet fleet(registry, o.fleet);
+    service::FleetOptions fleet_options = o.fleet;
+    fleet_options.http_timeout = std::chrono::milliseconds(static_cast<long>(o.http_timeout_s * 1000.0));
+    service::WristbandFleet fleet(registry, fleet_options);
     const service::FleetSummary summary = fleet.run();
     if (o.json) {
       std::cout << summary_json(summary).dump(2) << "\n";

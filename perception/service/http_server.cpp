@@ -178,12 +178,19 @@ struct HttpServer::Impl {
   void accept() {
     acceptor->async_accept(net::make_strand(*io), [this](beast::error_code ec, tcp::socket socket) {
       if (ec == net::error::operation_aborted) return;
-      if (!ec) {
-        const bool full = context.metrics.open_connections() >= static_cast<std::int64_t>(context.options.max_connections);
-        auto session = std::make_shared<Session>(std::move(socket), context);
-        full ? session->refuse() : session->start();
+      if (ec) {
+        // Out of descriptors, say: try again shortly rather than spin or give up.
+        retry_accept->expires_after(std::chrono::milliseconds(50));
+        retry_accept->async_wait([this](beast::error_code wait_ec) {
+          if (!wait_ec) accept();
+        });
+        return;
       }
-      accept();  // a failed accept (e.g. out of descriptors) must not stop the server
+      const bool full =
+          context.metrics.open_connections() >= static_cast<std::int64_t>(context.options.max_connections);
+      auto session = std::make_shared<Session>(std::move(socket), context);
+      full ? session->refuse() : session->start();
+      accept();
     });
   }
 
@@ -191,6 +198,7 @@ struct HttpServer::Impl {
   ServerContext context;
   std::unique_ptr<net::io_context> io;
   std::unique_ptr<tcp::acceptor> acceptor;
+  std::unique_ptr<net::steady_timer> retry_accept;
   std::vector<std::thread> io_threads;
   std::uint16_t port = 0;
   bool running = false;
@@ -218,6 +226,7 @@ void HttpServer::start() {
     s.acceptor->bind(endpoint);
     s.acceptor->listen(net::socket_base::max_listen_connections);
     s.port = s.acceptor->local_endpoint().port();
+    s.retry_accept = std::make_unique<net::steady_timer>(*s.io);
   } catch (const boost::system::system_error& e) {
     s.acceptor.reset();
     s.io.reset();
@@ -246,6 +255,7 @@ void HttpServer::stop() {
   // posted to the stopped io_context and dropped with it.
   s.handler_pool.join();
   s.acceptor.reset();
+  s.retry_accept.reset();
   s.io.reset();  // destroys the pending operations and with them the sessions and sockets
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <ostream>
 #include <stdexcept>
 #include <optional>
@@ -41,6 +42,11 @@ void check_options(const FleetOptions& o, std::size_t registered) {
 
 }  // namespace
 
+double FleetSummary::acknowledged_per_s() const {
+  const double span = last_acknowledged_wall_s - first_reading_wall_s + hop_wall_s;
+  return span > 0.0 ? static_cast<double>(total.acknowledged) / span : 0.0;
+}
+
 bool FleetSummary::complete() const {
   return pending == 0 && total.dropped == 0 && total.discarded == 0 && total.acknowledged == total.made;
 }
@@ -76,8 +82,11 @@ WristbandFleet::WristbandFleet(const DeviceRegistry& registry, const FleetOption
 
 WristbandFleet::~WristbandFleet() = default;
 
-void WristbandFleet::play(std::size_t worker, std::size_t workers, std::chrono::steady_clock::time_point start) {
+WristbandFleet::WorkerSpan WristbandFleet::play(std::size_t worker, std::size_t workers,
+                                                std::chrono::steady_clock::time_point start) {
   using clock = std::chrono::steady_clock;
+  WorkerSpan span;
+  const auto since_start = [start] { return std::chrono::duration<double>(clock::now() - start).count(); };
   ReadingsClient client(endpoint_, options_.http_timeout);
   std::vector<SimulatedWristband*> mine;
   for (std::size_t i = worker; i < wristbands_.size(); i += workers) mine.push_back(wristbands_[i].get());
@@ -89,22 +98,24 @@ void WristbandFleet::play(std::size_t worker, std::size_t workers, std::chrono::
     for (SimulatedWristband* w : mine) {
       w->advance_to(signal_s);
       signal_done = signal_done && w->signal_done();
+      if (span.first_reading_s < 0.0 && w->counters().made > 0) span.first_reading_s = since_start();
     }
     for (SimulatedWristband* w : mine) {
       if (w->has_pending() && clock::now() >= w->next_attempt()) {
         const std::uint64_t before = w->counters().acknowledged;
         w->upload(client, path_);
         acknowledged_.fetch_add(w->counters().acknowledged - before);
+        if (w->counters().acknowledged > before) span.last_acknowledged_s = since_start();
         posts_.fetch_add(1);
         posted = true;
       }
       pending = pending || w->has_pending();
     }
-    if (signal_done && !pending) return;
+    if (signal_done && !pending) return span;
     if (signal_done && !drain_until) {
       drain_until = now + std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(options_.drain_timeout_s));
     }
-    if (drain_until && now >= *drain_until) return;
+    if (drain_until && now >= *drain_until) return span;
     if (!posted) std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
 }
@@ -112,13 +123,21 @@ void WristbandFleet::play(std::size_t worker, std::size_t workers, std::chrono::
 FleetSummary WristbandFleet::run() {
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::thread> threads;
+  std::vector<WorkerSpan> spans(options_.connections);
   for (std::size_t w = 0; w < options_.connections; ++w) {
-    threads.emplace_back([this, w, start] { play(w, options_.connections, start); });
+    threads.emplace_back([this, w, start, &spans] { spans[w] = play(w, options_.connections, start); });
   }
   for (std::thread& t : threads) t.join();
   FleetSummary summary;
+  summary.first_reading_wall_s = std::numeric_limits<double>::max();
+  for (const WorkerSpan& s : spans) {
+    if (s.first_reading_s >= 0.0) summary.first_reading_wall_s = std::min(summary.first_reading_wall_s, s.first_reading_s);
+    summary.last_acknowledged_wall_s = std::max(summary.last_acknowledged_wall_s, s.last_acknowledged_s);
+  }
+  if (summary.first_reading_wall_s == std::numeric_limits<double>::max()) summary.first_reading_wall_s = 0.0;
   summary.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary.signal_s = options_.duration_s;
+  summary.hop_wall_s = 1.0 / (options_.rate_hz * options_.speed);
   std::vector<double> latencies;
   for (std::size_t i = 0; i < wristbands_.size(); ++i) {
     const SimulatedWristband& w = *wristbands_[i];
@@ -157,7 +176,7 @@ void print_fleet_summary(std::ostream& out, const FleetSummary& s) {
       << "\n"
       << "latency p50: " << s.latency_p50_s * 1000.0 << " ms, p99: " << s.latency_p99_s * 1000.0
       << " ms, max: " << s.latency_max_s * 1000.0 << " ms\n"
-      << "acknowledged/s: " << (s.wall_s > 0 ? static_cast<double>(t.acknowledged) / s.wall_s : 0.0) << "\n"
+      << "acknowledged/s (first reading to last acknowledgement): " << s.acknowledged_per_s() << "\n"
       << (s.complete() ? "complete: every reading acknowledged\n" : "INCOMPLETE: some readings not acknowledged\n");
 }
 

@@ -64,6 +64,15 @@ struct FleetSummary {
   double latency_p50_s = 0.0, latency_p99_s = 0.0, latency_max_s = 0.0;
   double wall_s = 0.0;
   double signal_s = 0.0;
+  // Wall seconds from the start to the first reading made and to the last
+  // acknowledgement, and between a wristband's readings.
+  double first_reading_wall_s = 0.0;
+  double last_acknowledged_wall_s = 0.0;
+  double hop_wall_s = 0.0;
+  // The rate held: acknowledged / (last - first + one hop), the hop because
+  // n readings a hop apart span n - 1 hops. Equals the offered rate when the
+  // service keeps up; a backlog stretches the span.
+  double acknowledged_per_s() const;
   // Every reading made was acknowledged: none dropped, discarded or left over.
   bool complete() const;
 };
@@ -83,7 +92,11 @@ class WristbandFleet {
   std::uint64_t posts_so_far() const { return posts_.load(); }
 
  private:
-  void play(std::size_t worker, std::size_t workers, std::chrono::steady_clock::time_point start);
+  struct WorkerSpan {
+    double first_reading_s = -1.0;  // none yet
+    double last_acknowledged_s = 0.0;
+  };
+  WorkerSpan play(std::size_t worker, std::size_t workers, std::chrono::steady_clock::time_point start);
 
   FleetOptions options_;
   std::string path_;
