@@ -7,7 +7,7 @@
 #include "cli/perception_module.h"
 
 int main(int argc, char** argv) {
-  if (argc > 1 && alplan::cli::is_perception_command(argv[1])) return alplan::cli::run_perception_command(argc, argv);
+  if (alplan::cli::runs_in_perception_module(argc, argv)) return alplan::cli::run_perception_command(argc, argv);
   CLI::App app{"alplan: PDDL 2.2 temporal planning toolkit for assisted-living deliberation"};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Print help for every subcommand");
@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   for (const alplan::cli::ModuleCommand& c : alplan::cli::kPerceptionCommands) {
     app.add_subcommand(c.name, c.help)->allow_extras();
   }
+  app.get_subcommand("bench")->add_subcommand("service", alplan::cli::kBenchServiceHelp)->allow_extras();
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

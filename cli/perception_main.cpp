@@ -15,6 +15,11 @@ extern "C" __attribute__((visibility("default"))) int alplan_perception_main(int
   int exit_code = alplan::cli::kExitOk;
   alplan::cli::add_perceive_command(app, exit_code);
   alplan::cli::add_deliberate_command(app, exit_code);
+  alplan::cli::add_serve_command(app, exit_code);
+  alplan::cli::add_wristband_command(app, exit_code);
+  CLI::App* bench = app.add_subcommand("bench", "Benchmarks");
+  bench->require_subcommand(1);
+  alplan::cli::add_bench_service_command(bench, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

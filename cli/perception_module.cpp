@@ -23,11 +23,13 @@ std::filesystem::path module_path() {
 
 }  // namespace
 
-bool is_perception_command(const std::string& name) {
+bool runs_in_perception_module(int argc, char** argv) {
+  if (argc < 2) return false;
+  const std::string first = argv[1];
   for (const ModuleCommand& c : kPerceptionCommands) {
-    if (name == c.name) return true;
+    if (first == c.name) return true;
   }
-  return false;
+  return first == "bench" && argc > 2 && std::string(argv[2]) == "service";
 }
 
 int run_perception_command(int argc, char** argv) {

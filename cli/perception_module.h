@@ -24,9 +24,15 @@ struct ModuleCommand {
 inline constexpr ModuleCommand kPerceptionCommands[] = {
     {"perceive", "Perception: emotions and objects in images, the type ontology, stress detection, training"},
     {"deliberate", "One senior end to end: stress, emotion, goal, plan, act, monitor, repair"},
+    {"serve", "The signal service: wristband readings in, stress events out (HTTP/JSON, SQLite)"},
+    {"wristband", "Simulated wristbands against the signal service; device tokens"},
 };
 
-bool is_perception_command(const std::string& name);
+// True for the module's commands, and for `bench service` (the signal
+// service's load benchmark; the other benchmarks run in alplan itself).
+bool runs_in_perception_module(int argc, char** argv);
+inline constexpr const char* kBenchServiceHelp =
+    "Load benchmark of the signal service: simulated wristbands, readings/s held and latency";
 
 // Loads the module (ALPLAN_PERCEPTION_MODULE, else beside the executable)
 // and runs the command; prints a clear error and returns 2 if the module

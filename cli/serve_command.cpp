@@ -1,0 +1,153 @@
+// alplan serve --port P --db FILE --tokens FILE [--bind ADDR] [--model FILE]
+//              [--max-body BYTES] [--max-batch N] [--threads N] [--io-threads N]
+//              [--max-connections N] [--request-timeout MS] [--sync full|normal]
+//              [--no-stress] [--duration S]
+// The signal service (perception/service/signal_service.h): wristbands POST
+// readings, the service stores them, detects stress per senior and prints
+// each stress event as a JSON line on stdout (the in-process queue's
+// consumer here; the deliberation loop consumes the same queue). Runs until
+// SIGINT or SIGTERM (or --duration seconds), then stops cleanly: exit 0.
+// Bad options, tokens file, model or database, or an address that cannot be
+// bound: exit 2.
+#include <CLI/CLI.hpp>
+
+#include <csignal>
+#include <ctime>
+#include <iostream>
+#include <memory>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.h"
+#include "perception/service/signal_service.h"
+#include "perception/service/simulated_stress_model.h"
+
+namespace alplan::cli {
+namespace {
+
+namespace service = perception::service;
+
+struct ServeOptions {
+  std::uint16_t port = 8080;
+  std::string bind = "127.0.0.1";
+  std::string db;
+  std::string tokens;
+  std::string model;
+  bool no_stress = false;
+  std::size_t max_body = 64 * 1024;
+  std::size_t max_batch = 12;
+  std::size_t threads = 4;
+  std::size_t io_threads = 1;
+  std::size_t max_connections = 1024;
+  long request_timeout_ms = 10000;
+  std::string sync = "full";
+  double duration_s = 0.0;
+};
+
+std::optional<perception::StressClassifier> load_classifier(const ServeOptions& o) {
+  if (o.no_stress) return std::nullopt;
+  if (!o.model.empty()) return perception::StressClassifier::load(o.model);
+  std::cerr << "serve: no --model given; training the stress classifier on simulated recordings\n";
+  return service::train_simulated_stress_classifier({});
+}
+
+void print_event(const service::StressEvent& e) {
+  const nlohmann::json line = {{"event", e.stressed ? "stressed" : "calm"}, {"senior", e.senior},
+                               {"device", e.device}, {"t_ms", e.t_ms},
+                               {"stressed_fraction", e.stressed_fraction}, {"votes", e.votes}};
+  std::cout << line.dump() << std::endl;
+}
+
+// Blocks SIGINT and SIGTERM in this thread and the ones it starts, so the
+// main thread takes them with sigtimedwait() instead of a handler with
+// global state.
+sigset_t block_stop_signals() {
+  sigset_t signals;
+  sigemptyset(&signals);
+  sigaddset(&signals, SIGINT);
+  sigaddset(&signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+  return signals;
+}
+
+void wait_for_stop(const sigset_t& signals, double duration_s) {
+  const auto start = std::chrono::steady_clock::now();
+  while (true) {
+    const timespec poll{0, 200 * 1000 * 1000};
+    if (sigtimedwait(&signals, nullptr, &poll) > 0) return;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (duration_s > 0.0 && elapsed >= duration_s) return;
+  }
+}
+
+int run_serve(const ServeOptions& o) {
+  service::SignalServiceOptions options;
+  options.database = o.db;
+  options.durability = o.sync == "normal" ? service::Durability::Normal : service::Durability::Full;
+  options.server.bind_address = o.bind;
+  options.server.port = o.port;
+  options.server.handler_threads = o.threads;
+  options.server.io_threads = o.io_threads;
+  options.server.max_connections = o.max_connections;
+  options.server.request_timeout = std::chrono::milliseconds(o.request_timeout_ms);
+  options.limits.max_body_bytes = o.max_body;
+  options.limits.max_batch = o.max_batch;
+  const sigset_t signals = block_stop_signals();
+  std::unique_ptr<service::SignalService> signal_service;
+  try {
+    service::DeviceRegistry registry = service::read_device_registry_file(o.tokens);
+    signal_service = std::make_unique<service::SignalService>(std::move(registry), load_classifier(o), options);
+    signal_service->start();
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitInputError;
+  }
+  std::cout << "serving on " << signal_service->url() << " (database " << o.db << ", "
+            << signal_service->registry().size() << " devices)" << std::endl;
+  std::thread consumer([&events = signal_service->events()] {
+    while (true) {
+      const std::optional<service::StressEvent> e = events.pop_wait(std::chrono::milliseconds(500));
+      if (e) {
+        print_event(*e);
+      } else if (events.closed()) {
+        return;  // closed and drained
+      }
+    }
+  });
+  wait_for_stop(signals, o.duration_s);
+  signal_service->stop();
+  consumer.join();
+  const service::IngestCounters c = signal_service->counters();
+  std::cerr << "serve: stopped; stored " << c.stored << " readings, " << c.duplicates << " duplicates, "
+            << c.became_stressed + c.became_calm << " stress events\n";
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_serve_command(CLI::App& app, int& exit_code) {
+  auto o = std::make_shared<ServeOptions>();
+  CLI::App* s = app.add_subcommand("serve", "The signal service: wristband readings over HTTP, stress events out");
+  s->add_option("--port", o->port, "TCP port (0: any free one, printed at start)");
+  s->add_option("--db", o->db, "SQLite database file (created when missing)")->required();
+  s->add_option("--tokens", o->tokens, "Tokens file: device token senior, one device a line")->required();
+  s->add_option("--bind", o->bind, "Address to listen on");
+  s->add_option("--model", o->model, "Stress classifier file (StressClassifier::save); default: train on simulation");
+  s->add_flag("--no-stress", o->no_stress, "Store readings only; no stress detection");
+  s->add_option("--max-body", o->max_body, "Largest request body in bytes (413 above)")->check(CLI::PositiveNumber);
+  s->add_option("--max-batch", o->max_batch, "Most readings in one POST")->check(CLI::PositiveNumber);
+  s->add_option("--threads", o->threads, "Request-handler threads")->check(CLI::PositiveNumber);
+  s->add_option("--io-threads", o->io_threads, "Network I/O threads")->check(CLI::PositiveNumber);
+  s->add_option("--max-connections", o->max_connections, "Open connections before new ones get 503")
+      ->check(CLI::PositiveNumber);
+  s->add_option("--request-timeout", o->request_timeout_ms, "Milliseconds for a whole request to arrive (408)")
+      ->check(CLI::PositiveNumber);
+  s->add_option("--sync", o->sync, "full: fsync every commit; normal: survive a crash, not a power cut")
+      ->check(CLI::IsMember({"full", "normal"}));
+  s->add_option("--duration", o->duration_s, "Stop after this many seconds (0: until SIGINT/SIGTERM)")
+      ->check(CLI::NonNegativeNumber);
+  s->callback([o, &exit_code] { exit_code = run_serve(*o); });
+}
+
+}  // namespace alplan::cli

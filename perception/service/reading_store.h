@@ -1,0 +1,80 @@
+// Durable storage of readings and stress events in SQLite: a reading is
+// acknowledged to the wristband only after the transaction that holds it has
+// committed, so a restart loses nothing that was acknowledged.
+//
+// Tables (schema version 1, PRAGMA user_version):
+//   readings(device, boot, seq, t_ms, window_ms, hr_bpm, ibi_ms, sdnn_ms,
+//            rmssd_ms, beats, rejected_fraction, motion, received_ms)
+//     primary key (device, boot, seq): a re-sent reading is stored once;
+//     readings may arrive in any order.
+//   stress_events(id, senior, device, stressed, t_ms, stressed_fraction,
+//                 votes, recorded_ms)
+//
+// The database runs in WAL mode, so readers (tests, an operator with the
+// sqlite3 shell) do not block the writer. Durability::Full syncs the log at
+// every commit (an acknowledged reading survives a power cut);
+// Durability::Normal only at checkpoints (it survives the process dying, not
+// the machine). Not thread-safe: one thread at a time (reading_ingest.h
+// serialises the writers).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "perception/service/reading_message.h"
+#include "perception/service/sqlite_database.h"
+#include "perception/service/stress_event_queue.h"
+
+namespace alplan::perception::service {
+
+enum class Durability { Normal, Full };
+enum class StoreAccess { ReadWrite, ReadOnly };
+
+// The readings stored for one boot of one device: with sequence numbers
+// starting at 0, max_seq + 1 - count of them are missing (lost or not yet
+// arrived).
+struct BootSequence {
+  std::string device;
+  std::uint32_t boot = 0;
+  std::uint32_t max_seq = 0;
+  std::uint64_t count = 0;
+};
+
+class ReadingStore {
+ public:
+  // Opens or creates the database. Throws SqliteError (naming the file) when
+  // it cannot, or when the file holds another schema.
+  explicit ReadingStore(const std::filesystem::path& file, Durability durability = Durability::Full,
+                        StoreAccess access = StoreAccess::ReadWrite);
+
+  void begin();
+  void commit();
+  void rollback();
+
+  // True when stored, false when (device, boot, seq) was already there.
+  bool insert_reading(const ReceivedReading& reading, std::int64_t received_ms);
+  void insert_stress_event(const StressEvent& event, std::int64_t recorded_ms);
+
+  std::vector<BootSequence> boot_sequences();
+  std::uint64_t count_readings();
+  // One device's readings by (boot, seq).
+  std::vector<ReceivedReading> readings_of(const std::string& device);
+  // The device's last `limit` readings by time, oldest first.
+  std::vector<ReceivedReading> latest_readings_of(const std::string& device, std::size_t limit);
+  std::vector<StressEvent> stress_events();
+
+  const std::filesystem::path& file() const { return db_.file(); }
+
+ private:
+  void create_schema();
+  std::vector<ReceivedReading> select_readings(SqliteStatement& query);
+
+  SqliteDatabase db_;
+  std::optional<SqliteStatement> insert_reading_;
+  std::optional<SqliteStatement> insert_event_;
+};
+
+}  // namespace alplan::perception::service

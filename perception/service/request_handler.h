@@ -1,0 +1,81 @@
+// The service's HTTP semantics, without sockets: one parsed request in, one
+// response out. The network side (http_server.h) reads requests and writes
+// what this returns; tests and the fuzzer call it directly.
+//
+//   POST /v1/readings  Authorization: Bearer <device token>,
+//                      Content-Type: application/json,
+//                      body: one reading or an array of 1..max_batch (the
+//                      firmware's JSON, reading_message.h)
+//     200 {"stored":2,"duplicates":1,"results":[{"boot":3,"seq":41,"status":"duplicate"},
+//                                                {"boot":3,"seq":42,"status":"stored"},...]}
+//         results in request order; a duplicate was stored before, so the
+//         device may release it too. Sent only after the commit.
+//     400 malformed JSON, wrong types, missing or unknown keys, values out of
+//         range, empty or too long batches (the device drops the batch)
+//     401 no or unknown token (WWW-Authenticate: Bearer)
+//     403 a reading names another device than the token's
+//     413 body over max_body     415 Content-Type is not application/json
+//     503 the database failed (Retry-After: 1)
+//   GET /healthz       200 {"status":"ok","devices":N,"stored_since_start":N,
+//                      "stress_events":N,"uptime_s":S}
+//   GET /metrics       200 Prometheus text format (service_metrics.h)
+//   other paths 404, other methods on these paths 405 (with Allow).
+//
+// Every error body is {"error":"<what, naming the place>","reason":"<label>"}
+// where the label is the one counted in alplan_requests_rejected_total. The
+// 4xx codes match what the board does with them (firmware/core/
+// upload_policy.h): 401/403 keep the readings for a retry (a token can be
+// fixed on the server), other 4xx drop a batch that would never be accepted.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include <boost/beast/http/message.hpp>
+#include <boost/beast/http/string_body.hpp>
+
+#include "perception/service/device_registry.h"
+#include "perception/service/reading_ingest.h"
+#include "perception/service/service_metrics.h"
+#include "perception/service/stress_event_queue.h"
+
+namespace alplan::perception::service {
+
+using HttpRequest = boost::beast::http::request<boost::beast::http::string_body>;
+using HttpResponse = boost::beast::http::response<boost::beast::http::string_body>;
+
+struct HandlerLimits {
+  std::size_t max_body_bytes = 64 * 1024;  // a full batch of 12 is about 4 KB
+  std::size_t max_batch = 12;              // the firmware's batch size
+};
+
+// A JSON error response, counted neither here nor anywhere (callers count).
+HttpResponse error_response(unsigned status, const std::string& reason, const std::string& message,
+                            unsigned version = 11, bool keep_alive = false);
+
+class RequestHandler {
+ public:
+  // Everything referenced must outlive the handler.
+  RequestHandler(const DeviceRegistry& registry, ReadingIngest& ingest, ServiceMetrics& metrics,
+                 const StressEventQueue& events, const HandlerLimits& limits);
+
+  // Never throws: anything unexpected becomes a 500 with a JSON error.
+  // Counts the response (and the rejection reason) in the metrics.
+  HttpResponse handle(const HttpRequest& request);
+
+  const HandlerLimits& limits() const { return limits_; }
+
+ private:
+  HttpResponse route(const HttpRequest& request);
+  HttpResponse post_readings(const HttpRequest& request);
+  HttpResponse healthz(const HttpRequest& request) const;
+  HttpResponse metrics(const HttpRequest& request) const;
+
+  const DeviceRegistry& registry_;
+  ReadingIngest& ingest_;
+  ServiceMetrics& metrics_;
+  const StressEventQueue& events_;
+  HandlerLimits limits_;
+};
+
+}  // namespace alplan::perception::service

@@ -1,0 +1,35 @@
+#include "perception/service/signal_service.h"
+
+namespace alplan::perception::service {
+
+SignalService::SignalService(DeviceRegistry registry, std::optional<StressClassifier> classifier,
+                             const SignalServiceOptions& options)
+    : options_(options),
+      registry_(std::move(registry)),
+      store_(options.database, options.durability),
+      events_(options.event_queue_capacity) {
+  if (classifier) detector_ = std::make_unique<ClassifierStressDetector>(std::move(*classifier), options.smoothing);
+  ingest_ = std::make_unique<ReadingIngest>(store_, detector_.get(), events_, registry_, options.priming_readings);
+  handler_ = std::make_unique<RequestHandler>(registry_, *ingest_, metrics_, events_, options.limits);
+  ServerOptions server = options.server;
+  server.parse_limits.max_body_bytes = options.limits.max_body_bytes;
+  server_ = std::make_unique<HttpServer>(*handler_, metrics_, server);
+}
+
+SignalService::~SignalService() { stop(); }
+
+void SignalService::start() { server_->start(); }
+
+void SignalService::stop() {
+  server_->stop();
+  events_.close();
+}
+
+std::string SignalService::url() const {
+  // A wildcard address is not one to connect to; loopback reaches it.
+  const std::string& host = options_.server.bind_address;
+  const bool wildcard = host == "0.0.0.0" || host == "::";
+  return "http://" + (wildcard ? std::string("127.0.0.1") : host) + ":" + std::to_string(server_->port());
+}
+
+}  // namespace alplan::perception::service

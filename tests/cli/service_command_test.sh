@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# Runs `alplan serve`, `alplan wristband tokens` and `alplan wristband
+# simulate` as users would: exit codes, messages, a live run with stress
+# events on stdout, and a simulator that cannot reach the service.
+# Usage: service_command_test.sh ALPLAN WORKDIR
+set -euo pipefail
+alplan=$1
+work=$2
+rm -rf "$work" && mkdir -p "$work" && cd "$work"
+
+fail() { echo "FAIL: $*" >&2; [ -f serve.err ] && cat serve.err >&2; exit 1; }
+# expect CODE TEXT COMMAND...: exit code CODE and TEXT somewhere in the output.
+expect() {
+  local code=$1 text=$2 out got
+  shift 2
+  set +e
+  out=$("$@" 2>&1)
+  got=$?
+  set -e
+  [ "$got" -eq "$code" ] || fail "$* exited $got, expected $code: $out"
+  grep -qF -- "$text" <<<"$out" || fail "$* output lacks '$text': $out"
+}
+
+expect 0 "" "$alplan" wristband tokens --devices 3 --out tokens.txt
+[ "$(grep -c '^wb-0[123] [0-9a-f]\{32\} senior-0[123]$' tokens.txt)" -eq 3 ] || fail "tokens.txt: $(cat tokens.txt)"
+printf 'wb-01 short senior\n' > short.txt
+
+expect 2 "error: missing.txt: error: cannot open the file" "$alplan" serve --port 0 --db s.db --tokens missing.txt
+expect 2 "short.txt:1: error: token too short" "$alplan" serve --port 0 --db s.db --tokens short.txt
+expect 2 "--db is required" "$alplan" serve --port 0 --tokens tokens.txt
+expect 2 "error: cannot listen on 203.0.113.1:0" "$alplan" serve --bind 203.0.113.1 --port 0 --db s.db --tokens tokens.txt --no-stress
+expect 2 "--devices 9 but the tokens file lists only 3" \
+  "$alplan" wristband simulate --devices 9 --rate 0.2 --url http://127.0.0.1:9 --tokens tokens.txt
+expect 2 "--rate must be between" \
+  "$alplan" wristband simulate --devices 1 --rate 5 --url http://127.0.0.1:9 --tokens tokens.txt
+expect 2 "URL 'ftp://x': expected http://host:port[/path]" \
+  "$alplan" wristband simulate --devices 1 --rate 0.2 --url ftp://x --tokens tokens.txt
+
+"$alplan" serve --port 0 --db s.db --tokens tokens.txt >serve.out 2>serve.err &
+pid=$!
+for _ in $(seq 100); do grep -q "serving on" serve.out && break; sleep 0.2; done
+url=$(grep -o 'http://[0-9.]*:[0-9]*' serve.out) || fail "no 'serving on' line"
+
+[ "$(curl -s -o /dev/null -w '%{http_code}' "$url/healthz")" = 200 ] || fail "healthz"
+answer=$(curl -s -w ' %{http_code}' -H 'Content-Type: application/json' -d '[]' "$url/v1/readings")
+[ "$answer" = '{"error":"missing Authorization: Bearer <device token>","reason":"unauthorized"} 401' ] || fail "$answer"
+
+expect 0 "complete: every reading acknowledged" "$alplan" wristband simulate --devices 3 --rate 0.2 --url "$url" \
+  --tokens tokens.txt --duration 90 --speed 30 --stressed 1 --typical-subjects
+curl -s "$url/metrics" | grep -qx 'alplan_readings_stored_total 36' || fail "metrics: $(curl -s "$url/metrics")"
+
+kill -TERM "$pid"
+wait "$pid" || fail "serve exited $? after SIGTERM"
+grep -q '"event":"stressed","senior":"senior-01"' serve.out || fail "no stress event: $(cat serve.out)"
+[ "$(grep -c '"event"' serve.out)" -eq 1 ] || fail "events for calm seniors: $(cat serve.out)"
+grep -q "serve: stopped; stored 36 readings" serve.err || fail "$(cat serve.err)"
+
+# Nothing listens any more: the readings stay queued, the run is incomplete.
+expect 1 "INCOMPLETE: some readings not acknowledged" "$alplan" wristband simulate --devices 1 --rate 0.2 \
+  --url "$url" --tokens tokens.txt --duration 40 --speed 40 --drain-timeout 0.5
+echo "service CLI: all checks passed"

@@ -1,0 +1,97 @@
+#include "service_fixture.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <random>
+#include <system_error>
+
+#include <boost/asio/connect.hpp>
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/write.hpp>
+#include <boost/beast/core/tcp_stream.hpp>
+
+#include "perception/service/simulated_stress_model.h"
+
+namespace alplan::test {
+
+namespace service = perception::service;
+
+ScratchDir::ScratchDir(const std::string& name) {
+  std::random_device entropy;
+  path_ = std::filesystem::temp_directory_path() / ("alplan-" + name + "-" + std::to_string(entropy()));
+  std::filesystem::remove_all(path_);
+  std::filesystem::create_directories(path_);
+}
+
+ScratchDir::~ScratchDir() {
+  std::error_code ignored;
+  std::filesystem::remove_all(path_, ignored);
+}
+
+service::DeviceRegistry test_registry(std::size_t devices) {
+  std::vector<service::Device> list;
+  for (std::size_t i = 0; i < devices; ++i) {
+    char id[32];
+    std::snprintf(id, sizeof id, "wb-%02zu", i);
+    const std::string number = std::string(id).substr(3);
+    list.push_back({id, "token-for-" + std::string(id) + "-" + std::to_string(1000003 * (i + 7)), "senior-" + number});
+  }
+  return service::DeviceRegistry(std::move(list));
+}
+
+const perception::StressClassifier& test_classifier() {
+  static const perception::StressClassifier classifier = service::train_simulated_stress_classifier({});
+  return classifier;
+}
+
+service::SignalServiceOptions test_options(const std::filesystem::path& database) {
+  service::SignalServiceOptions options;
+  options.database = database;
+  options.durability = service::Durability::Normal;  // tests kill no machine; keep them quick
+  return options;
+}
+
+std::unique_ptr<service::SignalService> start_service(const service::DeviceRegistry& registry,
+                                                       const service::SignalServiceOptions& options,
+                                                       bool detect_stress) {
+  std::optional<perception::StressClassifier> classifier;
+  if (detect_stress) classifier = test_classifier();
+  auto s = std::make_unique<service::SignalService>(registry, classifier, options);
+  s->start();
+  return s;
+}
+
+std::string exchange_raw(std::uint16_t port, const std::string& bytes, std::chrono::milliseconds timeout) {
+  namespace net = boost::asio;
+  net::io_context io;
+  boost::beast::tcp_stream stream(io);
+  stream.connect(net::ip::tcp::endpoint(net::ip::make_address("127.0.0.1"), port));
+  // Beast's deadlines bind asynchronous operations only, hence the async reads.
+  stream.expires_after(timeout);
+  std::string received;
+  char chunk[4096];
+  std::function<void(boost::beast::error_code, std::size_t)> on_read = [&](boost::beast::error_code error,
+                                                                            std::size_t n) {
+    received.append(chunk, n);
+    if (!error) stream.async_read_some(net::buffer(chunk), on_read);
+  };
+  net::async_write(stream, net::buffer(bytes), [&](boost::beast::error_code error, std::size_t) {
+    if (!error) stream.async_read_some(net::buffer(chunk), on_read);
+  });
+  io.run();
+  return received;
+}
+
+int status_of(const std::string& raw) {
+  if (raw.rfind("HTTP/1.", 0) != 0 || raw.size() < 12) return 0;
+  return std::atoi(raw.substr(9, 3).c_str());
+}
+
+std::string body_of(const std::string& raw) {
+  const auto end = raw.find("\r\n\r\n");
+  return end == std::string::npos ? std::string() : raw.substr(end + 4);
+}
+
+}  // namespace alplan::test
