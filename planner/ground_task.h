@@ -56,6 +56,12 @@ struct ConditionSet {
   std::vector<GroundFormula> complex;
   // Set when the condition can never hold, with the condition that fails.
   std::optional<std::string> never;
+  // Fluent facts the lifted condition names that simplification dropped
+  // (a disjunct beside a true static atom, a consequent under a false one).
+  // They do not decide whether the condition holds, but VAL's mutex rule
+  // counts every proposition a precondition names, so the planner orders
+  // snaps by them too. Sorted; never in `positive` or `negative`.
+  std::vector<FactId> mentioned;
 
   bool empty() const {
     return positive.empty() && negative.empty() && numeric.empty() && complex.empty() && !never;

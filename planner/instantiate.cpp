@@ -1,6 +1,7 @@
 #include "planner/instantiate.h"
 
 #include <algorithm>
+#include <iterator>
 #include <stdexcept>
 
 #include "pddl_parser/writer.h"
@@ -276,8 +277,75 @@ ConditionSet flatten(GroundFormula f) {
   return set;
 }
 
+namespace {
+
+bool plain_conjunction(const LiftedCondition& c) {
+  switch (c.kind) {
+    case LK::And:
+      return std::all_of(c.children.begin(), c.children.end(), plain_conjunction);
+    case LK::Or:
+    case LK::Forall:
+    case LK::Exists:
+      return false;
+    default:
+      return true;
+  }
+}
+
+}  // namespace
+
+void Instantiator::mentioned_facts(const LiftedCondition& c, std::vector<ObjectId>& binding,
+                                   std::vector<FactId>& out) {
+  switch (c.kind) {
+    case LK::And:
+    case LK::Or:
+      for (const LiftedCondition& child : c.children) mentioned_facts(child, binding, out);
+      return;
+    case LK::Forall:
+    case LK::Exists: {
+      std::vector<std::size_t> position(c.variables.size(), 0);
+      for (const QuantifiedVariable& v : c.variables) {
+        if (task_.types[v.type].objects.empty()) return;
+      }
+      while (true) {
+        for (std::size_t i = 0; i < c.variables.size(); ++i) {
+          binding[c.variables[i].slot] = task_.types[c.variables[i].type].objects[position[i]];
+        }
+        mentioned_facts(c.children.front(), binding, out);
+        std::size_t i = 0;
+        for (; i < c.variables.size(); ++i) {
+          if (++position[i] < task_.types[c.variables[i].type].objects.size()) break;
+          position[i] = 0;
+        }
+        if (i == c.variables.size()) return;
+      }
+    }
+    case LK::Atom:
+      if (task_.predicates[c.atom.predicate].fluent) {
+        // Unreachable facts are in no effect, so they cannot interfere.
+        if (std::optional<FactId> id = facts_.find(scratch(c.atom.predicate, c.atom.args, binding))) out.push_back(*id);
+      }
+      return;
+    default:
+      return;
+  }
+}
+
 ConditionSet Instantiator::condition(const LiftedCondition& c, std::vector<ObjectId>& binding) {
   return flatten(formula(c, binding));
+}
+
+void Instantiator::add_mentions(const LiftedCondition& c, std::vector<ObjectId>& binding, ConditionSet& set) {
+  // In a plain conjunction nothing can be simplified away but the action
+  // itself, so only disjunctions and quantifiers need the second walk.
+  if (!options_.simplify_static || set.never || plain_conjunction(c)) return;
+  std::vector<FactId> named;
+  mentioned_facts(c, binding, named);
+  sort_unique(named);
+  std::vector<FactId> kept = set.positive;
+  kept.insert(kept.end(), set.negative.begin(), set.negative.end());
+  sort_unique(kept);
+  std::set_difference(named.begin(), named.end(), kept.begin(), kept.end(), std::back_inserter(set.mentioned));
 }
 
 void Instantiator::primitive(const PrimitiveEffect& e, std::vector<ObjectId>& binding, std::size_t forall_index,
@@ -337,6 +405,10 @@ GroundAction Instantiator::action(std::uint32_t schema_index, const std::vector<
   action.at_start = condition(schema.at_start, binding);
   action.over_all = condition(schema.over_all, binding);
   action.at_end = condition(schema.at_end, binding);
+  // Only the snaps' own conditions: they are what VAL's mutex rule reads.
+  add_mentions(schema.at_start, binding, action.at_start);
+  add_mentions(schema.over_all, binding, action.over_all);
+  add_mentions(schema.at_end, binding, action.at_end);
   for (const LiftedDurationConstraint& d : schema.duration) {
     action.duration.push_back({d.comparison, expression(d.value, binding), d.moment});
   }

@@ -60,6 +60,10 @@ class Instantiator {
   const GroundKey& scratch(std::uint32_t head, const std::vector<LiftedTerm>& args,
                            const std::vector<ObjectId>& binding);
   std::string name(const GroundKey& key, bool function) const;
+  // Every fluent fact the condition names, quantifiers expanded.
+  void mentioned_facts(const LiftedCondition& condition, std::vector<ObjectId>& binding, std::vector<FactId>& out);
+  // Fills set.mentioned (ground_task.h) for one of an action's conditions.
+  void add_mentions(const LiftedCondition& condition, std::vector<ObjectId>& binding, ConditionSet& set);
 
   const NormalizedTask& task_;
   const StaticFacts& statics_;

@@ -28,6 +28,7 @@ void formula_reads(const GroundFormula& f, Footprint& fp) {
 void condition_reads(const ConditionSet& c, Footprint& fp) {
   fp.reads.insert(fp.reads.end(), c.positive.begin(), c.positive.end());
   fp.reads.insert(fp.reads.end(), c.negative.begin(), c.negative.end());
+  fp.reads.insert(fp.reads.end(), c.mentioned.begin(), c.mentioned.end());
   for (const GroundComparison& cmp : c.numeric) {
     variables(cmp.left, fp.reads_values);
     variables(cmp.right, fp.reads_values);
