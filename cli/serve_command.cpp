@@ -2,16 +2,21 @@
 //              [--max-body BYTES] [--max-batch N] [--threads N] [--io-threads N]
 //              [--max-connections N] [--request-timeout MS] [--sync full|normal]
 //              [--no-stress] [--duration S]
+//              [--deliberate --emotion E|--face IMAGE [--problem P] [--camera DIR] ...]
 // The signal service (perception/service/signal_service.h): wristbands POST
 // readings, the service stores them, detects stress per senior and prints
 // each stress event as a JSON line on stdout (the in-process queue's
 // consumer here; the deliberation loop consumes the same queue). Runs until
 // SIGINT or SIGTERM (or --duration seconds), then stops cleanly: exit 0.
+// With --deliberate the consumer is the deliberation loop too: each
+// "stressed" event runs layers 2-4 (deliberation_run.h) for that senior, one
+// event at a time, while the service keeps taking readings.
 // Bad options, tokens file, model or database, or an address that cannot be
 // bound: exit 2.
 #include <CLI/CLI.hpp>
 
 #include <csignal>
+#include <filesystem>
 #include <ctime>
 #include <iostream>
 #include <memory>
@@ -20,6 +25,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
+#include "cli/deliberation_run.h"
+#include "cli/perceive_common.h"
 #include "perception/service/signal_service.h"
 #include "perception/service/simulated_stress_model.h"
 
@@ -43,7 +50,37 @@ struct ServeOptions {
   long request_timeout_ms = 10000;
   std::string sync = "full";
   double duration_s = 0.0;
+  bool deliberate = false;
+  DeliberationSettings deliberation;
 };
+
+void check_deliberation(const ServeOptions& o) {
+  if (!o.deliberate) return;
+  if (o.no_stress) throw CommandInputError("--deliberate needs stress detection; drop --no-stress");
+  const DeliberationSettings& d = o.deliberation;
+  if (d.face.empty() && d.emotion.empty()) {
+    throw CommandInputError("--deliberate: give the seniors' face (--face IMAGE) or the emotion (--emotion NAME)");
+  }
+  for (const std::string& file : {d.dir + "/domain.pddl", d.dir + "/" + d.problem, d.dir + "/types.ttl"}) {
+    if (!std::filesystem::is_regular_file(file)) throw CommandInputError("--deliberate: " + file + ": no such file");
+  }
+}
+
+// Runs the deliberation for one stress event; a failure is reported and the
+// service goes on (one senior's bad run must not stop the others' readings).
+void deliberate_on_event(const ServeOptions& o, const service::StressEvent& e) {
+  std::cout << "[service] " << e.senior << " is stressed (" << e.device << "): deliberating" << std::endl;
+  try {
+    perception::StressState state;
+    state.stressed = true;
+    state.stressed_fraction = e.stressed_fraction;
+    state.votes = e.votes;
+    const int code = deliberate_on_stress(o.deliberation, e.senior, state);
+    std::cout << "[service] deliberation for " << e.senior << " ended with exit " << code << std::endl;
+  } catch (const std::exception& error) {
+    std::cerr << "serve: deliberation for " << e.senior << " failed: " << error.what() << "\n";
+  }
+}
 
 std::optional<perception::StressClassifier> load_classifier(const ServeOptions& o) {
   if (o.no_stress) return std::nullopt;
@@ -96,6 +133,7 @@ int run_serve(const ServeOptions& o) {
   const sigset_t signals = block_stop_signals();
   std::unique_ptr<service::SignalService> signal_service;
   try {
+    check_deliberation(o);
     service::DeviceRegistry registry = service::read_device_registry_file(o.tokens);
     signal_service = std::make_unique<service::SignalService>(std::move(registry), load_classifier(o), options);
     signal_service->start();
@@ -105,11 +143,12 @@ int run_serve(const ServeOptions& o) {
   }
   std::cout << "serving on " << signal_service->url() << " (database " << o.db << ", "
             << signal_service->registry().size() << " devices)" << std::endl;
-  std::thread consumer([&events = signal_service->events()] {
+  std::thread consumer([&o, &events = signal_service->events()] {
     while (true) {
       const std::optional<service::StressEvent> e = events.pop_wait(std::chrono::milliseconds(500));
       if (e) {
         print_event(*e);
+        if (o.deliberate && e->stressed) deliberate_on_event(o, *e);
       } else if (events.closed()) {
         return;  // closed and drained
       }
@@ -147,6 +186,9 @@ void add_serve_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"full", "normal"}));
   s->add_option("--duration", o->duration_s, "Stop after this many seconds (0: until SIGINT/SIGTERM)")
       ->check(CLI::NonNegativeNumber);
+  s->add_flag("--deliberate", o->deliberate,
+              "Run the deliberation (emotion, goal, plan, act, repair) for each senior who becomes stressed");
+  add_deliberation_options(*s, o->deliberation);
   s->callback([o, &exit_code] { exit_code = run_serve(*o); });
 }
 

@@ -58,4 +58,21 @@ grep -q "serve: stopped; stored 36 readings" serve.err || fail "$(cat serve.err)
 # Nothing listens any more: the readings stay queued, the run is incomplete.
 expect 1 "INCOMPLETE: some readings not acknowledged" "$alplan" wristband simulate --devices 1 --rate 0.2 \
   --url "$url" --tokens tokens.txt --duration 40 --speed 40 --drain-timeout 0.5
+# The service as the deliberation loop's source: a stressed senior's event
+# runs emotion -> goal -> plan -> act for that senior, in the same process.
+expect 2 "--deliberate: give the seniors' face" "$alplan" serve --port 0 --db d.db --tokens tokens.txt --deliberate
+sed 's/senior-01$/senior1/' tokens.txt > tokens-home.txt
+"$alplan" serve --port 0 --db d.db --tokens tokens-home.txt --deliberate --emotion terrified >deliberate.out 2>serve.err &
+pid=$!
+for _ in $(seq 100); do grep -q "serving on" deliberate.out && break; sleep 0.2; done
+url=$(grep -o 'http://[0-9.]*:[0-9]*' deliberate.out) || fail "no 'serving on' line with --deliberate"
+expect 0 "complete: every reading acknowledged" "$alplan" wristband simulate --devices 2 --rate 0.2 --url "$url" \
+  --tokens tokens-home.txt --duration 90 --speed 30 --stressed 1 --typical-subjects
+for _ in $(seq 100); do grep -q "deliberation for senior1 ended" deliberate.out && break; sleep 0.2; done
+kill -TERM "$pid"
+wait "$pid" || fail "serve --deliberate exited $? after SIGTERM"
+grep -q "\[service\] senior1 is stressed (wb-01): deliberating" deliberate.out || fail "$(cat deliberate.out)"
+grep -q "Outcome: the goal (soothed senior1) holds" deliberate.out || fail "no comforted senior: $(cat deliberate.out)"
+grep -q "deliberation for senior1 ended with exit 0" deliberate.out || fail "$(cat deliberate.out)"
+
 echo "service CLI: all checks passed"
