@@ -107,7 +107,7 @@ TEST_CASE("after 10 s without an accepted beat both medians are relearned") {
   CHECK(events.back().kind == BeatKind::Accepted);
 }
 
-TEST_CASE("window statistics follow the Task Force definitions over accepted intervals in (start, end]") {
+TEST_CASE("window statistics follow the Task Force definitions over the accepted intervals ending inside the window") {
   BeatWindow window;
   BeatTracker tracker({});
   const std::vector<double> times = {0, 800, 1700, 2300, 2450, 3100, 3900};  // 2450 is a false peak

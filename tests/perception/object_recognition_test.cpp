@@ -111,7 +111,7 @@ TEST_CASE("the classifier names the classes no shipped model knows, and the came
   CHECK(eyes.recognize(observed, "kitchen1").empty());
 }
 
-TEST_CASE("a CNN survives a save and a load; foreign files are refused") {
+TEST_CASE("a CNN survives a save and a load, foreign files are refused") {
   const std::vector<std::string> classes = {"book", "cup"};
   CnnArchitecture architecture;
   architecture.channels = 3;

@@ -66,7 +66,7 @@ TEST_CASE("grounding keeps only reachable actions") {
   CHECK(task->actions.size() == names.size());
 }
 
-TEST_CASE("static facts and static numbers are compiled away; fluents stay") {
+TEST_CASE("static facts and static numbers are compiled away, fluents stay") {
   auto task = ground_text(kLogistics, kLogisticsProblem);
   // road is static: no fact for it.
   for (FactId f = 0; f < task->facts.size(); ++f) CHECK(task->fact_name(f).find("(road") == std::string::npos);
@@ -97,7 +97,7 @@ TEST_CASE("grounding is deterministic") {
   CHECK(a.str() == b.str());
 }
 
-TEST_CASE("quantifiers expand over their types; conditional effects stay conditional") {
+TEST_CASE("quantifiers expand over their types, conditional effects stay conditional") {
   const char* domain = R"(
 (define (domain lights) (:requirements :adl :typing)
   (:types room lamp)
@@ -156,7 +156,7 @@ TEST_CASE("either types and multiple inheritance give the right objects") {
   CHECK(action_names(*task) == std::set<std::string>{"(feed rex)", "(feed kermit)"});
 }
 
-TEST_CASE("derived predicates become axioms by stratum; unstratifiable ones are refused") {
+TEST_CASE("derived predicates become axioms by stratum, unstratifiable ones are refused") {
   const char* domain = R"(
 (define (domain graph) (:requirements :derived-predicates :negative-preconditions)
   (:predicates (edge ?a ?b) (reach ?a) (start ?a) (unreachable ?a) (mark ?a))
