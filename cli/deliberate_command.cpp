@@ -68,6 +68,7 @@ perception::StressClassifier stress_model(const DeliberateOptions& o) {
 }
 
 int run(const DeliberateOptions& o) {
+  Deliberator deliberator(o.settings);
   // Layer 1: stress.
   const perception::PpgRecording ppg = o.ppg.empty() ? simulated_senior(o) : perception::read_ppg_csv_file(o.ppg);
   perception::ClassifierStressDetector detector(stress_model(o), {});
@@ -80,7 +81,7 @@ int run(const DeliberateOptions& o) {
   std::printf("[stress] %s's wristband: stressed at %.0f s (%zu of the last %zu readings say so): stress event\n",
               o.senior.c_str(), event->time_s, static_cast<std::size_t>(event->state.stressed_fraction * static_cast<double>(event->state.votes) + 0.5),
               event->state.votes);
-  return deliberate_on_stress(o.settings, o.senior, event->state);
+  return deliberator.on_stress(o.senior, event->state);
 }
 
 }  // namespace

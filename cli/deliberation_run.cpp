@@ -13,35 +13,12 @@
 #include "cli/paper_format.h"
 #include "cli/perceive_common.h"
 #include "domains/mission_run.h"
-#include "domains/pddl_files.h"
 #include "perception/camera_object_recognizer.h"
 #include "perception/deliberation.h"
 #include "perception/pretrained_emotion_recognizer.h"
 
 namespace alplan::cli {
 namespace {
-
-std::optional<perception::EmotionReading> emotion_of(const DeliberationSettings& o) {
-  if (!o.emotion.empty()) {
-    const auto e = perception::emotion_from_name(o.emotion);
-    if (!e) throw CommandInputError("--emotion " + o.emotion + ": not an emotion (terrified, sad, bored, happy, ...)");
-    std::printf("[emotion] given on the command line: %s\n", std::string(perception::emotion_name(*e)).c_str());
-    return perception::EmotionReading{*e, 1.0f, true};
-  }
-  if (o.face.empty()) throw CommandInputError("give the senior's face (--face IMAGE) or the emotion (--emotion NAME)");
-  if (!std::filesystem::is_regular_file(o.face)) throw CommandInputError(o.face + ": no such file");
-  const cv::Mat image = cv::imread(o.face, cv::IMREAD_COLOR);
-  if (image.empty()) throw CommandInputError(o.face + ": cannot read an image from this file");
-  perception::PretrainedEmotionRecognizer recognizer;
-  const auto reading = perception::read_face(recognizer, image, false);
-  if (!reading) {
-    std::printf("[emotion] no face in %s\n", o.face.c_str());
-  } else {
-    std::printf("[emotion] face in %s: %s %.3f\n", o.face.c_str(), std::string(perception::emotion_name(reading->top)).c_str(),
-                static_cast<double>(reading->score));
-  }
-  return reading;
-}
 
 std::vector<repair::ExogenousEvent> scripted_events(const std::vector<std::string>& specs) {
   std::vector<repair::ExogenousEvent> events;
@@ -88,13 +65,51 @@ void add_deliberation_options(CLI::App& cmd, DeliberationSettings& s) {
   cmd.add_option("--strategy", s.strategy, "Repair strategy: replan, substitute, suggest, patch, adapt");
 }
 
-int deliberate_on_stress(const DeliberationSettings& o, const std::string& senior,
-                         const perception::StressState& stress) {
-  const domains::LoadedFiles files = domains::load_pddl(o.dir + "/domain.pddl", o.dir + "/" + o.problem);
-  const repair::TypeOntology ontology = repair::TypeOntology::from_file(o.dir + "/types.ttl");
-  const pddl::Domain domain = repair::augment_domain(*files.domain, ontology);
+Deliberator::Deliberator(DeliberationSettings settings)
+    : settings_(std::move(settings)),
+      home_(domains::load_home(settings_.dir, settings_.problem)),
+      unavailable_(scripted_events(settings_.unavailable)) {
+  if (settings_.emotion.empty() && settings_.face.empty()) {
+    throw CommandInputError("give the seniors' face (--face IMAGE) or the emotion (--emotion NAME)");
+  }
+  if (!settings_.emotion.empty() && !perception::emotion_from_name(settings_.emotion)) {
+    throw CommandInputError("--emotion " + settings_.emotion + ": not an emotion (terrified, sad, bored, happy, ...)");
+  }
+  if (settings_.emotion.empty()) faces_ = std::make_unique<perception::PretrainedEmotionRecognizer>();
+  if (!settings_.camera.empty()) {
+    if (!std::filesystem::is_directory(settings_.camera)) {
+      throw CommandInputError(settings_.camera + ": not a folder of camera views");
+    }
+    images_ = std::make_unique<perception::ImageObjectRecognizer>(std::make_shared<perception::CocoDetector>(), nullptr,
+                                                                  home_.ontology);
+  }
+}
+
+std::optional<perception::EmotionReading> Deliberator::emotion() {
+  const DeliberationSettings& o = settings_;
+  if (!o.emotion.empty()) {
+    const perception::Emotion e = *perception::emotion_from_name(o.emotion);
+    std::printf("[emotion] given on the command line: %s\n", std::string(perception::emotion_name(e)).c_str());
+    return perception::EmotionReading{e, 1.0f, true};
+  }
+  // The face is read at every event: it is what the robot sees now.
+  if (!std::filesystem::is_regular_file(o.face)) throw CommandInputError(o.face + ": no such file");
+  const cv::Mat image = cv::imread(o.face, cv::IMREAD_COLOR);
+  if (image.empty()) throw CommandInputError(o.face + ": cannot read an image from this file");
+  const auto reading = perception::read_face(*faces_, image, false);
+  if (!reading) {
+    std::printf("[emotion] no face in %s\n", o.face.c_str());
+  } else {
+    std::printf("[emotion] face in %s: %s %.3f\n", o.face.c_str(), std::string(perception::emotion_name(reading->top)).c_str(),
+                static_cast<double>(reading->score));
+  }
+  return reading;
+}
+
+int Deliberator::on_stress(const std::string& senior, const perception::StressState& stress) {
+  const DeliberationSettings& o = settings_;
   // Layer 2: emotion and goal.
-  const auto emotion = emotion_of(o);
+  const auto emotion = this->emotion();
   if (!emotion) return kExitOk;
   perception::EmotionGoalGenerator generator;
   std::optional<perception::GeneratedGoal> goal;
@@ -108,20 +123,18 @@ int deliberate_on_stress(const DeliberationSettings& o, const std::string& senio
 
   // Layers 3 and 4: plan, act, monitor, repair.
   domains::MissionInput input;
-  input.domain = &domain;
-  input.problem = perception::reformulate_for_goal(*files.problem, *goal, 0.0);
-  input.events = scripted_events(o.unavailable);
+  input.domain = &home_.domain;
+  input.problem = perception::reformulate_for_goal(*home_.files.problem, *goal, 0.0);
+  input.events = unavailable_;
   input.motivation = goal->motivation;
   input.seniors = {senior};
-  input.ontology = &ontology;
+  input.ontology = &home_.ontology;
+  // A new camera recogniser per run: the names it gives belong to one mission.
   std::unique_ptr<perception::FolderCamera> camera;
-  std::unique_ptr<perception::ImageObjectRecognizer> images;
   std::unique_ptr<perception::CameraObjectRecognizer> eyes;
-  if (!o.camera.empty()) {
-    if (!std::filesystem::is_directory(o.camera)) throw CommandInputError(o.camera + ": not a folder of camera views");
+  if (images_) {
     camera = std::make_unique<perception::FolderCamera>(o.camera);
-    images = std::make_unique<perception::ImageObjectRecognizer>(std::make_shared<perception::CocoDetector>(), nullptr, ontology);
-    eyes = std::make_unique<perception::CameraObjectRecognizer>(*camera, *images);
+    eyes = std::make_unique<perception::CameraObjectRecognizer>(*camera, *images_);
     input.recognizer = eyes.get();
     // What the views show is really there: the simulated world gets those
     // objects from the start (no IoT sensor reports them, so the planner

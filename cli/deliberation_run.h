@@ -6,9 +6,14 @@
 // `alplan serve --deliberate` (stress events from the wristbands' service).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "domains/mission_run.h"
+#include "perception/goal_generator.h"
+#include "perception/object_recognition.h"
+#include "perception/pretrained_emotion_recognizer.h"
 #include "perception/stress_detector.h"
 
 namespace CLI {
@@ -32,10 +37,30 @@ struct DeliberationSettings {
 // --unavailable, --strategy.
 void add_deliberation_options(CLI::App& command, DeliberationSettings& settings);
 
-// Exit 0 when the senior is comforted or the emotion asks for nothing, 1
-// when the run ends with an explained failure; throws CommandInputError on
-// bad input.
-int deliberate_on_stress(const DeliberationSettings& settings, const std::string& senior,
-                         const perception::StressState& stress);
+// The home, the emotion network and the object detector are loaded once,
+// when the deliberator is made, so that a service deliberating on event
+// after event reads no model and no PDDL file again; each run starts from
+// the home's problem file.
+class Deliberator {
+ public:
+  // Throws CommandInputError (or the loaders' errors, naming the file) on
+  // bad settings: no face or emotion, an unreadable home, a missing camera
+  // folder, a malformed --unavailable.
+  explicit Deliberator(DeliberationSettings settings);
+
+  // Exit 0 when the senior is comforted or the emotion asks for nothing, 1
+  // when the run ends with an explained failure; throws CommandInputError
+  // on an unreadable face image.
+  int on_stress(const std::string& senior, const perception::StressState& stress);
+
+ private:
+  std::optional<perception::EmotionReading> emotion();
+
+  DeliberationSettings settings_;
+  domains::LoadedHome home_;
+  std::vector<repair::ExogenousEvent> unavailable_;
+  std::unique_ptr<perception::PretrainedEmotionRecognizer> faces_;   // with --face
+  std::unique_ptr<perception::ImageObjectRecognizer> images_;        // with --camera
+};
 
 }  // namespace alplan::cli

@@ -16,7 +16,6 @@
 #include <CLI/CLI.hpp>
 
 #include <csignal>
-#include <filesystem>
 #include <ctime>
 #include <iostream>
 #include <memory>
@@ -54,28 +53,28 @@ struct ServeOptions {
   DeliberationSettings deliberation;
 };
 
-void check_deliberation(const ServeOptions& o) {
-  if (!o.deliberate) return;
+// The deliberation loop, when --deliberate: made before the service starts,
+// so that bad settings stop `serve` at once.
+std::unique_ptr<Deliberator> make_deliberator(const ServeOptions& o) {
+  if (!o.deliberate) return nullptr;
   if (o.no_stress) throw CommandInputError("--deliberate needs stress detection; drop --no-stress");
-  const DeliberationSettings& d = o.deliberation;
-  if (d.face.empty() && d.emotion.empty()) {
-    throw CommandInputError("--deliberate: give the seniors' face (--face IMAGE) or the emotion (--emotion NAME)");
-  }
-  for (const std::string& file : {d.dir + "/domain.pddl", d.dir + "/" + d.problem, d.dir + "/types.ttl"}) {
-    if (!std::filesystem::is_regular_file(file)) throw CommandInputError("--deliberate: " + file + ": no such file");
+  try {
+    return std::make_unique<Deliberator>(o.deliberation);
+  } catch (const std::exception& e) {
+    throw CommandInputError(std::string("--deliberate: ") + e.what());
   }
 }
 
 // Runs the deliberation for one stress event; a failure is reported and the
 // service goes on (one senior's bad run must not stop the others' readings).
-void deliberate_on_event(const ServeOptions& o, const service::StressEvent& e) {
+void deliberate_on_event(Deliberator& deliberator, const service::StressEvent& e) {
   std::cout << "[service] " << e.senior << " is stressed (" << e.device << "): deliberating" << std::endl;
   try {
     perception::StressState state;
     state.stressed = true;
     state.stressed_fraction = e.stressed_fraction;
     state.votes = e.votes;
-    const int code = deliberate_on_stress(o.deliberation, e.senior, state);
+    const int code = deliberator.on_stress(e.senior, state);
     std::cout << "[service] deliberation for " << e.senior << " ended with exit " << code << std::endl;
   } catch (const std::exception& error) {
     std::cerr << "serve: deliberation for " << e.senior << " failed: " << error.what() << "\n";
@@ -132,8 +131,9 @@ int run_serve(const ServeOptions& o) {
   options.limits.max_batch = o.max_batch;
   const sigset_t signals = block_stop_signals();
   std::unique_ptr<service::SignalService> signal_service;
+  std::unique_ptr<Deliberator> deliberator;
   try {
-    check_deliberation(o);
+    deliberator = make_deliberator(o);
     service::DeviceRegistry registry = service::read_device_registry_file(o.tokens);
     signal_service = std::make_unique<service::SignalService>(std::move(registry), load_classifier(o), options);
     signal_service->start();
@@ -143,12 +143,12 @@ int run_serve(const ServeOptions& o) {
   }
   std::cout << "serving on " << signal_service->url() << " (database " << o.db << ", "
             << signal_service->registry().size() << " devices)" << std::endl;
-  std::thread consumer([&o, &events = signal_service->events()] {
+  std::thread consumer([&deliberator, &events = signal_service->events()] {
     while (true) {
       const std::optional<service::StressEvent> e = events.pop_wait(std::chrono::milliseconds(500));
       if (e) {
         print_event(*e);
-        if (o.deliberate && e->stressed) deliberate_on_event(o, *e);
+        if (deliberator && e->stressed) deliberate_on_event(*deliberator, *e);
       } else if (events.closed()) {
         return;  // closed and drained
       }

@@ -8,6 +8,13 @@
 
 namespace alplan::domains {
 
+LoadedHome load_home(const std::string& dir, const std::string& problem_file) {
+  LoadedFiles files = load_pddl(dir + "/domain.pddl", dir + "/" + problem_file);
+  repair::TypeOntology ontology = repair::TypeOntology::from_file(dir + "/types.ttl");
+  pddl::Domain domain = repair::augment_domain(*files.domain, ontology);
+  return {std::move(files), std::move(ontology), std::move(domain)};
+}
+
 MissionRun run_mission(const MissionInput& input, const ScenarioOptions& options) {
   MissionRun run;
   // The first plan is the best the planner can prove within its time: the

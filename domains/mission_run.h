@@ -8,13 +8,34 @@
 #include <string>
 #include <vector>
 
-#include "domains/paper_scenarios.h"
+#include "domains/pddl_files.h"
 #include "repair/monitor.h"
 #include "repair/object_recognizer.h"
 #include "repair/type_ontology.h"
 #include "repair/world_simulator.h"
 
 namespace alplan::domains {
+
+// How a mission runs: the planner's separation and budget, the repair
+// strategy, the monitor.
+struct ScenarioOptions {
+  std::string assisted_living_dir;  // domains/assisted_living
+  std::string strategy = "substitute";
+  double epsilon = 0.002;
+  double planning_time = 10.0;  // per planner call, seconds
+  repair::MonitorOptions monitor;
+};
+
+// A home as the missions read it: the domain and a problem from `dir`, and
+// the type ontology (`dir`/types.ttl) whose augmented types the domain gets.
+struct LoadedHome {
+  LoadedFiles files;
+  repair::TypeOntology ontology;
+  pddl::Domain domain;  // files.domain with the ontology's types
+};
+
+// Throws domains::InputError (or repair::OntologyError) naming the file.
+LoadedHome load_home(const std::string& dir, const std::string& problem_file);
 
 struct MissionInput {
   const pddl::Domain* domain = nullptr;  // with the ontology's types (augment_domain)

@@ -39,26 +39,17 @@ std::vector<PaperScenario> paper_scenarios() {
 }
 
 ScenarioRun run_paper_scenario(const PaperScenario& scenario, const ScenarioOptions& options) {
-  const std::string dir = options.assisted_living_dir;
-  const LoadedFiles files = load_pddl(dir + "/domain.pddl", dir + "/" + scenario.problem_file);
-  const repair::TypeOntology ontology = repair::TypeOntology::from_file(dir + "/types.ttl");
-  const pddl::Domain domain = repair::augment_domain(*files.domain, ontology);
-
+  const LoadedHome home = load_home(options.assisted_living_dir, scenario.problem_file);
   MissionInput input;
-  input.domain = &domain;
-  input.problem = *files.problem;
+  input.domain = &home.domain;
+  input.problem = *home.files.problem;
   input.events = scenario.events;
   input.motivation = scenario.motivation;
   input.seniors = {"senior1"};
-  input.ontology = &ontology;
-  MissionRun mission = run_mission(input, options);
-
+  input.ontology = &home.ontology;
   ScenarioRun run;
+  static_cast<MissionRun&>(run) = run_mission(input, options);
   run.scenario = scenario;
-  run.initial_plan = std::move(mission.initial_plan);
-  run.initial_planning_seconds = mission.initial_planning_seconds;
-  run.report = std::move(mission.report);
-  run.applied_events = std::move(mission.applied_events);
   return run;
 }
 

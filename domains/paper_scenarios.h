@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "domains/emotion_goals.h"
+#include "domains/mission_run.h"
 #include "repair/monitor.h"
 #include "repair/world_simulator.h"
 
@@ -35,20 +35,9 @@ struct PaperScenario {
 
 std::vector<PaperScenario> paper_scenarios();
 
-struct ScenarioOptions {
-  std::string assisted_living_dir;  // domains/assisted_living
-  std::string strategy = "substitute";
-  double epsilon = 0.002;
-  double planning_time = 10.0;  // per planner call, seconds
-  repair::MonitorOptions monitor;
-};
 
-struct ScenarioRun {
+struct ScenarioRun : MissionRun {
   PaperScenario scenario;
-  std::string initial_plan;  // IPC format
-  double initial_planning_seconds = 0.0;
-  repair::ExecutionReport report;
-  std::vector<std::string> applied_events;
 };
 
 // Throws domains::InputError on unreadable input, std::runtime_error when

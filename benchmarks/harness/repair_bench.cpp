@@ -13,6 +13,7 @@
 #include "benchmarks/harness/external_replan.h"
 #include "benchmarks/harness/svg_chart.h"
 #include "benchmarks/harness/table.h"
+#include "domains/emotion_goals.h"
 #include "domains/paper_scenarios.h"
 #include "domains/pddl_files.h"
 #include "pddl_parser/writer.h"
