@@ -9,26 +9,39 @@ struct Remedy {
 };
 constexpr Remedy kRemedies[] = {{"terrified", "soothed"}, {"sad", "cheerful"}, {"bored", "entertained"}};
 
-pddl::Condition atom(const std::string& predicate, const std::string& senior) {
-  pddl::Condition condition;
-  condition.kind = pddl::Condition::Kind::Atom;
-  condition.atom.name = predicate;
-  pddl::Term who;
-  who.name = senior;
-  condition.atom.args.push_back(who);
-  return condition;
-}
-
 // What the senior's emotion calls for, with the reason.
 std::optional<std::pair<pddl::Condition, std::string>> goal_for(const repair::WorldState& observed,
                                                                  const std::string& senior) {
   for (const Remedy& r : kRemedies) {
-    if (observed.holds({r.emotion, senior})) return std::make_pair(atom(r.goal, senior), senior + " is " + r.emotion);
+    if (observed.holds({r.emotion, senior})) return std::make_pair(senior_condition(r.goal, senior), senior + " is " + r.emotion);
   }
   return std::nullopt;
 }
 
 }  // namespace
+
+std::optional<std::string_view> goal_for_emotion(std::string_view emotion) {
+  for (const Remedy& r : kRemedies) {
+    if (emotion == r.emotion) return r.goal;
+  }
+  return std::nullopt;
+}
+
+pddl::Atom senior_atom(const std::string& predicate, const std::string& senior) {
+  pddl::Atom atom;
+  atom.name = predicate;
+  pddl::Term who;
+  who.name = senior;
+  atom.args.push_back(who);
+  return atom;
+}
+
+pddl::Condition senior_condition(const std::string& predicate, const std::string& senior) {
+  pddl::Condition condition;
+  condition.kind = pddl::Condition::Kind::Atom;
+  condition.atom = senior_atom(predicate, senior);
+  return condition;
+}
 
 GoalGenerator emotion_goal_generator(const std::string& senior) {
   return [senior](const repair::WorldState& observed) { return goal_for(observed, senior); };
@@ -46,7 +59,7 @@ GoalGenerator emotion_goal_generator(const std::vector<std::string>& seniors) {
         continue;
       }
       for (const Remedy& r : kRemedies) {
-        if (observed.holds({r.goal, senior})) all.children.push_back(atom(r.goal, senior));
+        if (observed.holds({r.goal, senior})) all.children.push_back(senior_condition(r.goal, senior));
       }
     }
     if (reasons.empty()) return std::nullopt;

@@ -7,6 +7,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -14,6 +15,14 @@
 #include "repair/world_state.h"
 
 namespace alplan::domains {
+
+// The paper's table: the goal predicate an emotion calls for ("terrified"
+// -> "soothed", "sad" -> "cheerful", "bored" -> "entertained"), or nothing.
+std::optional<std::string_view> goal_for_emotion(std::string_view emotion);
+
+// (predicate senior), as the domain's one-senior predicates are written.
+pddl::Atom senior_atom(const std::string& predicate, const std::string& senior);
+pddl::Condition senior_condition(const std::string& predicate, const std::string& senior);
 
 // The goal and the reason for it ("senior1 is sad"), or nothing.
 using GoalGenerator =

@@ -2,17 +2,10 @@
 
 #include <algorithm>
 
+#include "domains/emotion_goals.h"
+
 namespace alplan::perception {
 namespace {
-
-pddl::Atom atom_of(const std::string& predicate, const std::string& senior) {
-  pddl::Atom a;
-  a.name = predicate;
-  pddl::Term t;
-  t.name = senior;
-  a.args.push_back(t);
-  return a;
-}
 
 bool about(const pddl::Atom& a, const std::string& predicate, const std::string& senior) {
   return a.name == predicate && a.args.size() == 1 && a.args[0].name == senior;
@@ -48,16 +41,16 @@ pddl::Problem reformulate_for_goal(const pddl::Problem& problem, const Generated
     return false;
   };
   out.init.erase(std::remove_if(out.init.begin(), out.init.end(), is_emotion_fact), out.init.end());
-  out.init.push_back(atom_of(std::string(*emotion_predicate(goal.emotion)), senior));
+  out.init.push_back(domains::senior_atom(std::string(*emotion_predicate(goal.emotion)), senior));
 
   const std::string window = goal.emotion == Emotion::Terrified ? "hydration_time" : "comfort_time";
   const bool open = std::any_of(out.init.begin(), out.init.end(), [&](const pddl::Atom& a) { return about(a, window, senior); });
   if (!open) {
-    out.init.push_back(atom_of(window, senior));
+    out.init.push_back(domains::senior_atom(window, senior));
     pddl::TimedInitialLiteral close;
     close.time = now + (goal.emotion == Emotion::Terrified ? windows.terrified_s : windows.other_s);
     close.positive = false;
-    close.atom = atom_of(window, senior);
+    close.atom = domains::senior_atom(window, senior);
     out.timed_literals.push_back(close);
   }
   out.goal = goal.goal;

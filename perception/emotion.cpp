@@ -4,6 +4,8 @@
 #include <cctype>
 #include <utility>
 
+#include "domains/emotion_goals.h"
+
 namespace alplan::perception {
 
 std::string_view emotion_name(Emotion emotion) {
@@ -38,12 +40,7 @@ std::optional<Emotion> emotion_from_name(std::string_view name) {
 }
 
 std::optional<std::string_view> goal_predicate(Emotion emotion) {
-  switch (emotion) {
-    case Emotion::Terrified: return "soothed";
-    case Emotion::Sad: return "cheerful";
-    case Emotion::Bored: return "entertained";
-    default: return std::nullopt;
-  }
+  return domains::goal_for_emotion(emotion_name(emotion));
 }
 
 std::optional<std::string_view> emotion_predicate(Emotion emotion) {

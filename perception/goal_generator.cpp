@@ -2,17 +2,9 @@
 
 #include <cstdio>
 
-namespace alplan::perception {
+#include "domains/emotion_goals.h"
 
-pddl::Condition goal_atom(const std::string& predicate, const std::string& senior) {
-  pddl::Condition c;
-  c.kind = pddl::Condition::Kind::Atom;
-  c.atom.name = predicate;
-  pddl::Term who;
-  who.name = senior;
-  c.atom.args.push_back(who);
-  return c;
-}
+namespace alplan::perception {
 
 std::optional<GeneratedGoal> EmotionGoalGenerator::generate(const std::string& senior, const StressState& stress,
                                                             const EmotionReading& emotion) {
@@ -36,7 +28,7 @@ std::optional<GeneratedGoal> EmotionGoalGenerator::generate(const std::string& s
   GeneratedGoal g;
   g.senior = senior;
   g.emotion = decided;
-  g.goal = goal_atom(std::string(*predicate), senior);
+  g.goal = domains::senior_condition(std::string(*predicate), senior);
   g.facts = {"(" + std::string(*emotion_predicate(decided)) + " " + senior + ")"};
   g.motivation = senior + " is stressed and " + std::string(emotion_name(decided));
   g.decided_by = decided_by;

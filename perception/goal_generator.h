@@ -70,7 +70,4 @@ class EmotionGoalGenerator : public GoalGenerator {
   std::map<std::string, std::size_t> neutral_streak_;
 };
 
-// The goal atom (predicate senior) as a PDDL condition.
-pddl::Condition goal_atom(const std::string& predicate, const std::string& senior);
-
 }  // namespace alplan::perception
