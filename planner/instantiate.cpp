@@ -78,6 +78,31 @@ void fold(GroundExpression& e) {
   e.operands.clear();
 }
 
+// Binds the quantified variables to every combination of their types'
+// objects in turn and calls visit() for each, until it returns false.
+// Returns false when visit() stopped it; a type without objects means no
+// combination at all.
+template <typename Visit>
+bool for_each_assignment(const NormalizedTask& task, const std::vector<QuantifiedVariable>& variables,
+                         std::vector<ObjectId>& binding, Visit visit) {
+  for (const QuantifiedVariable& v : variables) {
+    if (task.types[v.type].objects.empty()) return true;
+  }
+  std::vector<std::size_t> position(variables.size(), 0);
+  while (true) {
+    for (std::size_t i = 0; i < variables.size(); ++i) {
+      binding[variables[i].slot] = task.types[variables[i].type].objects[position[i]];
+    }
+    if (!visit()) return false;
+    std::size_t i = 0;
+    for (; i < variables.size(); ++i) {
+      if (++position[i] < task.types[variables[i].type].objects.size()) break;
+      position[i] = 0;
+    }
+    if (i == variables.size()) return true;
+  }
+}
+
 template <typename T>
 void sort_unique(std::vector<T>& v) {
   std::sort(v.begin(), v.end());
@@ -187,25 +212,15 @@ GroundFormula Instantiator::formula(const LiftedCondition& c, std::vector<Object
     case LK::Exists: {
       // Expand over every combination of the quantified variables' objects.
       const bool all = c.kind == LK::Forall;
-      std::vector<GroundFormula> children;
-      std::vector<std::size_t> position(c.variables.size(), 0);
       for (const QuantifiedVariable& v : c.variables) {
         if (task_.types[v.type].objects.empty()) return constant_formula(all, all ? "" : "(exists over no object)");
       }
-      while (true) {
-        for (std::size_t i = 0; i < c.variables.size(); ++i) {
-          binding[c.variables[i].slot] = task_.types[c.variables[i].type].objects[position[i]];
-        }
+      std::vector<GroundFormula> children;
+      const bool decided = !for_each_assignment(task_, c.variables, binding, [&] {
         children.push_back(formula(c.children.front(), binding));
-        if (all && children.back().kind == FK::False) return std::move(children.back());
-        if (!all && children.back().kind == FK::True) return std::move(children.back());
-        std::size_t i = 0;
-        for (; i < c.variables.size(); ++i) {
-          if (++position[i] < task_.types[c.variables[i].type].objects.size()) break;
-          position[i] = 0;
-        }
-        if (i == c.variables.size()) break;
-      }
+        return children.back().kind != (all ? FK::False : FK::True);
+      });
+      if (decided) return std::move(children.back());
       return junction(all ? FK::And : FK::Or, std::move(children));
     }
     case LK::Equality: {
@@ -302,24 +317,12 @@ void Instantiator::mentioned_facts(const LiftedCondition& c, std::vector<ObjectI
       for (const LiftedCondition& child : c.children) mentioned_facts(child, binding, out);
       return;
     case LK::Forall:
-    case LK::Exists: {
-      std::vector<std::size_t> position(c.variables.size(), 0);
-      for (const QuantifiedVariable& v : c.variables) {
-        if (task_.types[v.type].objects.empty()) return;
-      }
-      while (true) {
-        for (std::size_t i = 0; i < c.variables.size(); ++i) {
-          binding[c.variables[i].slot] = task_.types[c.variables[i].type].objects[position[i]];
-        }
+    case LK::Exists:
+      for_each_assignment(task_, c.variables, binding, [&] {
         mentioned_facts(c.children.front(), binding, out);
-        std::size_t i = 0;
-        for (; i < c.variables.size(); ++i) {
-          if (++position[i] < task_.types[c.variables[i].type].objects.size()) break;
-          position[i] = 0;
-        }
-        if (i == c.variables.size()) return;
-      }
-    }
+        return true;
+      });
+      return;
     case LK::Atom:
       if (task_.predicates[c.atom.predicate].fluent) {
         // Unreachable facts are in no effect, so they cannot interfere.
