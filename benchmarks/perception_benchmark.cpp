@@ -20,6 +20,7 @@
 #include "perception/object_image_generator.h"
 #include "perception/ppg_simulator.h"
 #include "perception/pretrained_emotion_recognizer.h"
+#include "perception/service/simulated_stress_model.h"
 #include "perception/stress_classifier.h"
 #include "perception/stress_features.h"
 #include "perception/tfjs_graph_model.h"
@@ -110,17 +111,9 @@ void BM_StressFeaturesFiveMinutes(benchmark::State& state) {
 BENCHMARK(BM_StressFeaturesFiveMinutes)->Unit(benchmark::kMillisecond);
 
 StressClassifier trained_stress_classifier(StressModelKind kind) {
-  DatabaseSpec spec;
-  spec.subjects = 6;
-  spec.recordings_per_state = 1;
-  spec.conditions.duration_s = 120.0;
-  std::vector<StressExample> examples;
-  for (const LabelledRecording& recording : generate_labelled_database(spec))
-    for (const StressWindow& window : stress_windows(recording.simulated.recording))
-      if (window.usable) examples.push_back({feature_vector(window.features, StressFeatureSet::Paper), window.label});
-  StressClassifierOptions options;
-  options.kind = kind;
-  return StressClassifier::train(examples, options);
+  service::SimulatedModelSpec spec;
+  spec.classifier = {kind, StressFeatureSet::Paper, 5};
+  return service::train_simulated_stress_classifier(spec);
 }
 
 void BM_StressVerdictPerWindow(benchmark::State& state, StressModelKind kind) {

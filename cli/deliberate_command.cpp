@@ -15,7 +15,9 @@
 #include "cli/deliberation_run.h"
 #include "cli/perceive_common.h"
 #include "perception/deliberation.h"
-#include "perception/learning_runs.h"
+#include "perception/ppg_simulator.h"
+#include "perception/service/simulated_stress_model.h"
+#include "perception/stress_features.h"
 
 namespace alplan::cli {
 namespace {
@@ -53,18 +55,13 @@ perception::PpgRecording simulated_senior(const DeliberateOptions& o) {
 
 perception::StressClassifier stress_model(const DeliberateOptions& o) {
   if (!o.stress_model.empty()) return perception::StressClassifier::load(o.stress_model);
-  perception::DatabaseSpec spec;
+  perception::service::SimulatedModelSpec spec;
   spec.subjects = 24;
-  spec.recordings_per_state = 1;
-  spec.conditions.duration_s = 150;
-  spec.conditions.sample_rate_hz = 50;
+  spec.recording_s = 150;
   spec.seed = o.seed + 1;  // not the senior's own recordings
-  std::vector<perception::StressExample> examples;
-  for (const auto& s : perception::windows_by_subject(perception::generate_labelled_database(spec), perception::StressFeatureSet::Paper)) {
-    examples.insert(examples.end(), s.examples.begin(), s.examples.end());
-  }
+  spec.classifier = {};    // logistic regression on the paper's HR and IBI
   std::printf("[learning] stress model trained on the simulated database (24 subjects; --stress-model to load one)\n");
-  return perception::StressClassifier::train(examples, {});
+  return perception::service::train_simulated_stress_classifier(spec);
 }
 
 int run(const DeliberateOptions& o) {
