@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "cli/parse_command_line.h"
 #include "cli/perception_module.h"
 
 int main(int argc, char** argv) {
@@ -24,15 +25,5 @@ int main(int argc, char** argv) {
     app.add_subcommand(c.name, c.help)->allow_extras();
   }
   app.get_subcommand("bench")->add_subcommand("service", alplan::cli::kBenchServiceHelp)->allow_extras();
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return alplan::cli::kExitInputError;
-  }
-  return exit_code;
+  return alplan::cli::parse_command_line(app, argc, argv, exit_code);
 }

@@ -5,6 +5,7 @@
 #include <opencv2/core/utils/logger.hpp>
 
 #include "cli/commands.h"
+#include "cli/parse_command_line.h"
 
 extern "C" __attribute__((visibility("default"))) int alplan_perception_main(int argc, char** argv) {
   // OpenCV's own warnings ("can't open/read file") would repeat the
@@ -20,15 +21,5 @@ extern "C" __attribute__((visibility("default"))) int alplan_perception_main(int
   CLI::App* bench = app.add_subcommand("bench", "Benchmarks");
   bench->require_subcommand(1);
   alplan::cli::add_bench_service_command(bench, exit_code);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return alplan::cli::kExitInputError;
-  }
-  return exit_code;
+  return alplan::cli::parse_command_line(app, argc, argv, exit_code);
 }
