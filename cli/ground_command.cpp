@@ -26,7 +26,7 @@ int run(const GroundOptions& options) {
   if (!files) return kExitInputError;
   std::shared_ptr<const GroundTask> task;
   try {
-    task = ground(*files->domain, *files->problem, {{options.domain, options.problem}, std::nullopt});
+    task = ground(*files->domain, *files->problem, {{options.domain, options.problem, {}}, std::nullopt});
   } catch (const GroundingError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kExitInputError;

@@ -135,7 +135,7 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
   const auto files = load_task_files(options.domain, options.problem, std::cerr, {!options.quiet});
   if (!files) return kExitInputError;
   phase = "grounding";
-  GroundingOptions grounding_options{{options.domain, options.problem}, std::nullopt};
+  GroundingOptions grounding_options{{options.domain, options.problem, {}}, std::nullopt};
   if (std::isfinite(options.time_limit)) {
     grounding_options.deadline = began + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                              std::chrono::duration<double>(options.time_limit));

@@ -49,7 +49,7 @@ int run(const ValidateOptions& options) {
     return kExitInputError;
   }
   auto lifted = std::make_shared<const NormalizedTask>(
-      normalize(*files->domain, *files->problem, {options.domain, options.problem}));
+      normalize(*files->domain, *files->problem, {options.domain, options.problem, {}}));
   PlanValidator validator(lifted, {options.epsilon, options.val_total_time});
   const ValidationResult result = validator.validate(plan.plan);
   if (options.json) {

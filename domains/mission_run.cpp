@@ -15,6 +15,8 @@ LoadedHome load_home(const std::string& dir, const std::string& problem_file) {
   return {std::move(files), std::move(ontology), std::move(domain)};
 }
 
+std::vector<std::string> exogenous_predicates() { return {"available"}; }
+
 MissionRun run_mission(const MissionInput& input, const ScenarioOptions& options) {
   MissionRun run;
   // The first plan is the best the planner can prove within its time: the
@@ -39,6 +41,7 @@ MissionRun run_mission(const MissionInput& input, const ScenarioOptions& options
   mission.domain = input.domain;
   mission.problem = input.problem;
   mission.motivation = input.motivation;
+  mission.exogenous_predicates = exogenous_predicates();
   mission.goal_generator = input.seniors.size() == 1 ? emotion_goal_generator(input.seniors.front())
                                                      : emotion_goal_generator(input.seniors);
   const repair::Monitor monitor(options.monitor);

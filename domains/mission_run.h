@@ -34,6 +34,11 @@ struct LoadedHome {
   pddl::Domain domain;  // files.domain with the ontology's types
 };
 
+// What a home's IoT reports change without the robot: an object becoming
+// unavailable (taken, broken). Seniors' places and emotions change too, but
+// the domain's actions already change those predicates.
+std::vector<std::string> exogenous_predicates();
+
 // Throws domains::InputError (or repair::OntologyError) naming the file.
 LoadedHome load_home(const std::string& dir, const std::string& problem_file);
 

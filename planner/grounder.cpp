@@ -117,15 +117,10 @@ std::vector<std::uint32_t> derived_strata(const NormalizedTask& task) {
 
 namespace {
 
-std::shared_ptr<GroundTask> build(std::shared_ptr<const NormalizedTask> lifted, const GroundingOptions& options) {
+std::shared_ptr<GroundTask> build(std::shared_ptr<const NormalizedTask> lifted, const ReachableSet& reachable,
+                                  const GroundingOptions& options) {
   auto task = std::make_shared<GroundTask>();
   task->lifted = lifted;
-
-  Clock::time_point start = Clock::now();
-  ReachabilityOptions reachability;
-  reachability.deadline = options.deadline;
-  const ReachableSet reachable = compute_reachable(*lifted, reachability);
-  task->times.reachability = seconds_since(start);
 
   // The fact table holds the reachable fluent atoms, in discovery order.
   for (std::uint32_t a = 0; a < reachable.atoms.size(); ++a) {
@@ -135,7 +130,7 @@ std::shared_ptr<GroundTask> build(std::shared_ptr<const NormalizedTask> lifted, 
   const StaticFacts statics = StaticFacts::of(*lifted);
   Instantiator instantiate(*lifted, statics, task->facts, task->numeric, {true, false});
 
-  start = Clock::now();
+  Clock::time_point start = Clock::now();
   instantiate_actions(*lifted, reachable, instantiate, *task, Deadline(options.deadline));
   instantiate_state(*lifted, instantiate, *task);
   task->times.instantiate = seconds_since(start);
@@ -147,11 +142,27 @@ std::shared_ptr<GroundTask> build(std::shared_ptr<const NormalizedTask> lifted, 
   return task;
 }
 
+std::shared_ptr<GroundTask> build(std::shared_ptr<const NormalizedTask> lifted, const GroundingOptions& options) {
+  const Clock::time_point start = Clock::now();
+  ReachabilityOptions reachability;
+  reachability.deadline = options.deadline;
+  const ReachableSet reachable = compute_reachable(*lifted, reachability);
+  const double reachability_time = seconds_since(start);
+  std::shared_ptr<GroundTask> task = build(std::move(lifted), reachable, options);
+  task->times.reachability = reachability_time;
+  return task;
+}
+
 }  // namespace
 
 std::shared_ptr<const GroundTask> ground(std::shared_ptr<const NormalizedTask> lifted,
                                          const GroundingOptions& options) {
   return build(std::move(lifted), options);
+}
+
+std::shared_ptr<GroundTask> ground_reachable(std::shared_ptr<const NormalizedTask> lifted,
+                                             const ReachableSet& reachable, const GroundingOptions& options) {
+  return build(std::move(lifted), reachable, options);
 }
 
 std::shared_ptr<const GroundTask> ground(const pddl::Domain& domain, const pddl::Problem& problem,

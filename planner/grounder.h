@@ -13,6 +13,7 @@
 #include "planner/deadline.h"
 #include "planner/ground_task.h"
 #include "planner/normalize.h"
+#include "planner/reachability.h"
 
 namespace alplan {
 
@@ -35,6 +36,10 @@ std::shared_ptr<const GroundTask> ground(const pddl::Domain& domain, const pddl:
                                          const GroundingOptions& options = {});
 std::shared_ptr<const GroundTask> ground(std::shared_ptr<const NormalizedTask> task,
                                          const GroundingOptions& options = {});
+// The last passes alone, on a reachable set computed already (the grounding
+// cache keeps its fixpoint open); the task's times.reachability stays 0.
+std::shared_ptr<GroundTask> ground_reachable(std::shared_ptr<const NormalizedTask> task,
+                                             const ReachableSet& reachable, const GroundingOptions& options = {});
 
 // Strata of the derived predicates (index: PredicateId; 0 for basic ones):
 // a predicate's stratum is above those it depends on negatively and not

@@ -133,7 +133,7 @@ ActionSchema convert_durative(const pddl::DurativeAction& a, FormulaConverter& c
   return schema;
 }
 
-void mark_fluents(NormalizedTask& task) {
+void mark_fluents(NormalizedTask& task, const std::vector<std::string>& exogenous) {
   for (const ActionSchema& schema : task.actions) {
     for (const PrimitiveEffect& e : schema.effects) {
       if (e.kind == PrimitiveEffect::Kind::Numeric) {
@@ -144,7 +144,10 @@ void mark_fluents(NormalizedTask& task) {
     }
   }
   for (const NormalizedTimedLiteral& til : task.timed_literals) task.predicates[til.atom.predicate].fluent = true;
-  for (PredicateInfo& p : task.predicates) p.fluent = p.fluent || p.derived;
+  for (PredicateInfo& p : task.predicates) {
+    const bool changed_outside = std::find(exogenous.begin(), exogenous.end(), p.name) != exogenous.end();
+    p.fluent = p.fluent || p.derived || changed_outside;
+  }
 }
 
 GroundAtom ground_atom(const pddl::Atom& a, const NameTables& names) {
@@ -208,7 +211,7 @@ NormalizedTask normalize(const pddl::Domain& domain, const pddl::Problem& proble
     task.derived_rules.push_back(std::move(rule));
   }
   add_problem_state(problem, task, names);
-  mark_fluents(task);
+  mark_fluents(task, options.exogenous_predicates);
 
   if (problem.goal) {
     VariableScope scope;

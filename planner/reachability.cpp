@@ -133,8 +133,11 @@ std::vector<Rule> make_rules(const NormalizedTask& task, const ReachabilityOptio
   return rules;
 }
 
+}  // namespace
+
 // The fixpoint: a work list of newly reached atoms, each joined with the
-// rules whose body mentions its predicate (semi-naive evaluation).
+// rules whose body mentions its predicate (semi-naive evaluation). Atoms
+// added later join with everything known, so the fixpoint can be carried on.
 class Fixpoint {
  public:
   Fixpoint(const NormalizedTask& task, std::vector<Rule> rules, Deadline deadline)
@@ -151,7 +154,7 @@ class Fixpoint {
     }
   }
 
-  ReachableSet run() {
+  void run() {
     for (const GroundAtom& a : task_.initial_facts) reach({a.predicate, a.args});
     for (const NormalizedTimedLiteral& til : task_.timed_literals) {
       if (til.positive) reach({til.atom.predicate, til.atom.args});
@@ -162,6 +165,20 @@ class Fixpoint {
         complete(rules_[r], binding, 0);
       }
     }
+    drain();
+  }
+
+  void add(const std::vector<GroundKey>& atoms, Deadline deadline) {
+    deadline_ = deadline;
+    for (const GroundKey& key : atoms) reach(key);
+    drain();
+  }
+
+  const ReachableSet& result() const { return result_; }
+  ReachableSet take() { return std::move(result_); }
+
+ private:
+  void drain() {
     while (!queue_.empty()) {
       deadline_.check("reachability");
       const std::uint32_t atom = queue_.front();
@@ -176,10 +193,8 @@ class Fixpoint {
         join(r, binding, done, 1);
       }
     }
-    return std::move(result_);
   }
 
- private:
   struct Watch {
     std::uint32_t rule, atom;
   };
@@ -320,10 +335,26 @@ class Fixpoint {
   Deadline deadline_;
 };
 
-}  // namespace
-
 ReachableSet compute_reachable(const NormalizedTask& task, const ReachabilityOptions& options) {
-  return Fixpoint(task, make_rules(task, options), Deadline(options.deadline)).run();
+  Fixpoint fixpoint(task, make_rules(task, options), Deadline(options.deadline));
+  fixpoint.run();
+  return fixpoint.take();
+}
+
+IncrementalReachability::IncrementalReachability(std::shared_ptr<const NormalizedTask> task,
+                                                 const ReachabilityOptions& options)
+    : task_(std::move(task)),
+      fixpoint_(std::make_unique<Fixpoint>(*task_, make_rules(*task_, options), Deadline(options.deadline))) {
+  fixpoint_->run();
+}
+
+IncrementalReachability::~IncrementalReachability() = default;
+
+const ReachableSet& IncrementalReachability::reachable() const { return fixpoint_->result(); }
+
+void IncrementalReachability::add(const std::vector<GroundKey>& atoms,
+                                  std::optional<std::chrono::steady_clock::time_point> deadline) {
+  fixpoint_->add(atoms, Deadline(deadline));
 }
 
 }  // namespace alplan

@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -44,5 +45,29 @@ struct ReachableSet {
 
 // Throws GroundingTimeout when options.deadline passes.
 ReachableSet compute_reachable(const NormalizedTask& task, const ReachabilityOptions& options = {});
+
+class Fixpoint;
+
+// The same fixpoint kept open: atoms added later (a fact the world made true
+// that no action reaches) are joined with everything known, and what they
+// make reachable is appended -- earlier atoms, actions and axioms keep their
+// places. Relaxed reachability is monotone, so the result equals a fixpoint
+// computed from the start with those atoms in the initial state.
+class IncrementalReachability {
+ public:
+  IncrementalReachability(std::shared_ptr<const NormalizedTask> task, const ReachabilityOptions& options = {});
+  ~IncrementalReachability();
+  IncrementalReachability(const IncrementalReachability&) = delete;
+  IncrementalReachability& operator=(const IncrementalReachability&) = delete;
+
+  const ReachableSet& reachable() const;
+  // Throws GroundingTimeout when the deadline passes.
+  void add(const std::vector<GroundKey>& atoms,
+           std::optional<std::chrono::steady_clock::time_point> deadline = std::nullopt);
+
+ private:
+  std::shared_ptr<const NormalizedTask> task_;
+  std::unique_ptr<Fixpoint> fixpoint_;
+};
 
 }  // namespace alplan

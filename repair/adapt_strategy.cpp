@@ -63,7 +63,7 @@ class AdaptStrategy : public RepairStrategy {
     result.problem = reformulate(*request.domain, known, seen.observed, request.in_progress, request.now);
     std::shared_ptr<const GroundTask> task;
     try {
-      task = ground(*request.domain, result.problem);
+      task = ground_for_repair(request, *request.domain, result.problem, &result.reused_grounding);
     } catch (const std::exception& error) {
       result.how = std::string("cannot ground the reformulated problem: ") + error.what();
       return result;

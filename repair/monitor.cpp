@@ -1,6 +1,7 @@
 #include "repair/monitor.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -82,11 +83,12 @@ nlohmann::json ExecutionReport::json() const {
                             {"repaired", r.repaired},
                             {"seconds", r.seconds},
                             {"planner_calls", r.planner_calls},
+                            {"reused_grounding", r.reused_grounding},
                             {"plan_distance", r.plan_distance},
                             {"plan", r.plan_text},
                             {"explanation", r.explanation.json()}});
   }
-  return {{"initial_plan", initial_plan_text}, {"repairs", repairs_json}, {"goal_reached", goal_reached},
+  return {{"initial_plan", initial_plan_text}, {"preparation_seconds", preparation_seconds}, {"repairs", repairs_json}, {"goal_reached", goal_reached},
           {"end_time", end_time}, {"outcome", outcome}, {"events", events}};
 }
 
@@ -102,6 +104,7 @@ class Execution {
     report_.initial_plan_text = plan_text(plan);
     goal_ = problem_.goal ? pddl::write_condition(*problem_.goal) : "(and)";
     adopt(with_all_conditions(plan));
+    if (options_.reuse_grounding) prepare_grounding();
   }
 
   ExecutionReport run() {
@@ -158,6 +161,22 @@ class Execution {
     progress_ = Progress(plan_.steps.size());
   }
 
+  // Grounds the problem now, while nothing has failed, so that a repair
+  // finds the grounding ready. A problem grounding rejects is left to the
+  // repairs to report.
+  void prepare_grounding() {
+    const auto began = std::chrono::steady_clock::now();
+    GroundingOptions grounding;
+    grounding.names.exogenous_predicates = mission_.exogenous_predicates;
+    grounding_ = std::make_unique<GroundingCache>(grounding);
+    try {
+      grounding_->ground(*mission_.domain, problem_);
+    } catch (const std::exception&) {
+    }
+    report_.preparation_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+  }
+
   RepairRequest request(const Violation& failure, const WorldState& observed, double t) const {
     RepairRequest r;
     r.domain = mission_.domain;
@@ -170,6 +189,7 @@ class Execution {
     r.robot_location = location_of(observed, mission_.robot);
     r.recognizer = recognizer_;
     r.ontology = ontology_;
+    r.grounding = grounding_.get();
     return r;
   }
 
@@ -185,6 +205,7 @@ class Execution {
     record.repaired = result.repaired;
     record.seconds = result.seconds;
     record.planner_calls = result.planner_calls;
+    record.reused_grounding = result.reused_grounding;
     record.integrated = result.integrated;
     record.explanation.why = why;
     record.explanation.what = failure.kind == Violation::Kind::Unsupported ? failure.condition
@@ -323,6 +344,7 @@ class Execution {
   Progress progress_{0};
   std::vector<CommittedEnd> committed_;
   ExecutionReport report_;
+  std::unique_ptr<GroundingCache> grounding_;
 };
 
 }  // namespace

@@ -33,6 +33,10 @@ struct MonitorOptions {
   double proactive_gain = 1.0;
   double proactive_budget = 0.25;  // seconds of anytime search per look
   PlannerOptions planner;  // for the proactive plans
+  // Ground the mission's problem once, when execution starts, and let the
+  // repairs reuse that grounding while the observed world stays within it
+  // (planner/grounding_cache.h); off, every repair grounds from scratch.
+  bool reuse_grounding = true;
 };
 
 // What the deliberation is about: the domain (with the ontology's types),
@@ -42,6 +46,10 @@ struct Mission {
   pddl::Problem problem;
   std::string motivation;   // "senior1 is terrified"
   std::string robot = "robot1";
+  // Predicates the world changes outside the robot's actions (an object
+  // becoming unavailable): ground as fluents, so that such a change needs
+  // no new grounding (normalize.h).
+  std::vector<std::string> exogenous_predicates;
   // Goal generation, re-invoked on every failure (the paper's step 3b): the
   // goal the observed state calls for and the reason, or nothing to keep
   // the current goal. Optional.
@@ -55,6 +63,7 @@ struct RepairRecord {
   bool repaired = false;
   double seconds = 0.0;
   int planner_calls = 0;
+  bool reused_grounding = false;
   std::string plan_text;  // the new plan, IPC format
   std::size_t plan_distance = 0;  // actions removed plus added (Fox et al. 2006)
   std::vector<RecognizedObject> integrated;
@@ -63,6 +72,8 @@ struct RepairRecord {
 
 struct ExecutionReport {
   std::string initial_plan_text;
+  // Grounding the mission's problem when execution starts (reuse_grounding).
+  double preparation_seconds = 0.0;
   std::vector<RepairRecord> repairs;
   bool goal_reached = false;
   double end_time = 0.0;

@@ -66,8 +66,9 @@ class PatchStrategy : public RepairStrategy {
     const pddl::Problem reformulated =
         reformulate(*request.domain, problem, seen.observed, request.in_progress, request.now);
     std::shared_ptr<const GroundTask> task;
+    bool reused = false;
     try {
-      task = ground(*request.domain, reformulated);
+      task = ground_for_repair(request, *request.domain, reformulated, &reused);
     } catch (const std::exception&) {
       task = nullptr;
     }
@@ -84,6 +85,7 @@ class PatchStrategy : public RepairStrategy {
           result.how = "patched the plan: " + candidate + " (" + *object_type(problem, candidate) +
                        ") takes the place of " + failed + " (" + *object_type(problem, failed) +
                        ") in the remaining steps; no search was needed";
+          result.reused_grounding = reused;
           result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
           return result;
         }

@@ -9,10 +9,12 @@
 
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "pddl_parser/ast.h"
+#include "planner/grounding_cache.h"
 #include "planner/planner.h"
 #include "repair/executing_plan.h"
 #include "repair/world.h"
@@ -30,11 +32,19 @@ struct PlanningOutcome {
   PlannerResult::Status status = PlannerResult::Status::LimitReached;
   std::string message;
   double seconds = 0.0;  // grounding and search
+  bool reused_grounding = false;
 };
 
-// Grounds the problem and plans from `now` with the in-process planner.
+// Grounds the problem (through `cache` when given) and plans from `now`
+// with the in-process planner, without the actions of `excluded` schemas.
 PlanningOutcome plan_in_process(const pddl::Domain& domain, const pddl::Problem& problem, double now,
-                                const PlannerOptions& options);
+                                const PlannerOptions& options, GroundingCache* cache = nullptr,
+                                const std::set<std::string>& excluded = {});
+
+// The task without the ground actions of the named schemas: a view, so that
+// one grounding serves a strategy that forbids some actions (suggest).
+std::shared_ptr<const GroundTask> without_schemas(std::shared_ptr<const GroundTask> task,
+                                                  const std::set<std::string>& excluded);
 
 // The object a name denotes in the problem, with its declared type.
 std::optional<std::string> object_type(const pddl::Problem& problem, const std::string& object);

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "planner/grounder.h"
 #include "repair/reformulation.h"
 
 namespace alplan::repair {
@@ -87,11 +88,8 @@ class SuggestStrategy : public RepairStrategy {
   explicit SuggestStrategy(StrategyOptions options) : options_(std::move(options)) {}
   std::string name() const override { return "suggest"; }
   RepairResult repair(const RepairRequest& request) override {
-    pddl::Domain domain = *request.domain;
-    std::erase_if(domain.durative_actions,
-                  [&](const pddl::DurativeAction& a) { return options_.handling_actions.count(a.name) != 0; });
-    std::erase_if(domain.actions, [&](const pddl::Action& a) { return options_.handling_actions.count(a.name) != 0; });
-    RepairResult result = replan_from(request, domain, *request.problem, options_.planner);
+    RepairResult result =
+        replan_from(request, *request.domain, *request.problem, options_.planner, options_.handling_actions);
     if (result.repaired) {
       result.how = "no object is handed over; instead " + describe_remedy(*result.plan, request.now);
     } else {
@@ -109,12 +107,14 @@ class SuggestStrategy : public RepairStrategy {
 }  // namespace
 
 RepairResult replan_from(const RepairRequest& request, const pddl::Domain& domain, const pddl::Problem& problem,
-                         const PlannerOptions& options) {
+                         const PlannerOptions& options, const std::set<std::string>& excluded) {
   const auto began = std::chrono::steady_clock::now();
   RepairResult result;
   result.problem = reformulate(domain, problem, request.observed, request.in_progress, request.now);
-  PlanningOutcome outcome = plan_in_process(domain, result.problem, request.now, options);
+  PlanningOutcome outcome =
+      plan_in_process(domain, result.problem, request.now, options, request.grounding, excluded);
   result.planner_calls = 1;
+  result.reused_grounding = outcome.reused_grounding;
   result.repaired = outcome.plan.has_value();
   result.plan = std::move(outcome.plan);
   if (!result.repaired) result.how = "the planner found no plan from the observed state: " + outcome.message;
@@ -125,6 +125,14 @@ RepairResult replan_from(const RepairRequest& request, const pddl::Domain& domai
   result.problem.timed_literals = problem.timed_literals;
   result.seconds = since(began);
   return result;
+}
+
+std::shared_ptr<const GroundTask> ground_for_repair(const RepairRequest& request, const pddl::Domain& domain,
+                                                    const pddl::Problem& problem, bool* reused) {
+  std::shared_ptr<const GroundTask> task =
+      request.grounding ? request.grounding->ground(domain, problem) : ground(domain, problem);
+  if (reused) *reused = request.grounding && request.grounding->last_reused();
+  return task;
 }
 
 std::vector<RecognizedObject> integrate_recognized(RepairRequest& request, pddl::Problem& problem) {

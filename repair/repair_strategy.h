@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "pddl_parser/ast.h"
+#include "planner/grounding_cache.h"
 #include "planner/planner.h"
 #include "planner/violation.h"
 #include "repair/executing_plan.h"
@@ -47,6 +48,9 @@ struct RepairRequest {
   std::string robot_location;              // where the camera looks
   ObjectRecognizer* recognizer = nullptr;  // may be absent
   const TypeOntology* ontology = nullptr;  // may be absent
+  // The execution's grounding, reused when the reformulated problem fits it
+  // (grounding_cache.h); may be absent, and then every repair grounds anew.
+  GroundingCache* grounding = nullptr;
 };
 
 struct RepairResult {
@@ -57,6 +61,7 @@ struct RepairResult {
   std::string how;                       // the third part of the explanation
   int planner_calls = 0;
   double seconds = 0.0;
+  bool reused_grounding = false;  // no grounding of its own was needed
 };
 
 class RepairStrategy {
@@ -71,8 +76,13 @@ std::unique_ptr<RepairStrategy> make_strategy(const std::string& name, const Str
 std::vector<std::string> strategy_names();
 
 // Shared by the strategies: reformulate from the observed state and plan.
+// `excluded`: schemas whose actions the new plan may not use.
 RepairResult replan_from(const RepairRequest& request, const pddl::Domain& domain, const pddl::Problem& problem,
-                         const PlannerOptions& options);
+                         const PlannerOptions& options, const std::set<std::string>& excluded = {});
+// Grounds a reformulated problem, through the request's cache when it has
+// one; `reused` tells whether the cache's reference served.
+std::shared_ptr<const GroundTask> ground_for_repair(const RepairRequest& request, const pddl::Domain& domain,
+                                                    const pddl::Problem& problem, bool* reused = nullptr);
 // Adds the objects perception recognises at the robot's location, of types
 // the domain knows, to the problem, and what perception saw of them -- (be o
 // location) and (available o) -- to the request's observed state (the

@@ -14,6 +14,7 @@
 #include "benchmarks/harness/svg_chart.h"
 #include "benchmarks/harness/table.h"
 #include "domains/emotion_goals.h"
+#include "domains/mission_run.h"
 #include "domains/paper_scenarios.h"
 #include "domains/pddl_files.h"
 #include "pddl_parser/writer.h"
@@ -34,6 +35,8 @@ struct RunRecord {
   std::size_t repairs = 0, stability = 0;
   int planner_calls = 0;
   std::vector<double> latencies_ms;
+  std::vector<bool> reused_grounding;  // per repair
+  double preparation_ms = 0.0;         // the monitor grounding the home at the start
   // Until the senior is comforted, beyond the original plan's end; none
   // for a run that never comforts the senior (its end is the failure's).
   std::optional<double> delay;
@@ -55,6 +58,7 @@ double percentile(std::vector<double> values, double p) {
 repair::Mission mission_for(const pddl::Domain& domain, const pddl::Problem& problem,
                             const domains::GeneratedHome& home) {
   repair::Mission mission;
+  mission.exogenous_predicates = domains::exogenous_predicates();
   mission.domain = &domain;
   mission.problem = problem;
   std::vector<std::string> seniors;
@@ -68,11 +72,13 @@ repair::Mission mission_for(const pddl::Domain& domain, const pddl::Problem& pro
 
 RunRecord execute(const std::string& home_name, int run, const repair::Mission& mission, const pddl::Problem& problem,
                   const repair::ExecutingPlan& plan, const std::vector<repair::ExogenousEvent>& failures,
-                  repair::RepairStrategy& strategy, const repair::TypeOntology& ontology) {
+                  repair::RepairStrategy& strategy, const repair::TypeOntology& ontology, bool reuse_grounding) {
   std::vector<repair::ExogenousEvent> events = repair::timed_literal_events(problem);
   events.insert(events.end(), failures.begin(), failures.end());
   repair::WorldSimulator world(repair::initial_world(problem), events);
-  const repair::Monitor monitor(repair::MonitorOptions{});
+  repair::MonitorOptions monitor_options;
+  monitor_options.reuse_grounding = reuse_grounding;
+  const repair::Monitor monitor(monitor_options);
   const repair::ExecutionReport report = monitor.run(mission, plan, world, strategy, &world, &ontology);
   RunRecord r;
   r.home = home_name;
@@ -82,11 +88,13 @@ RunRecord execute(const std::string& home_name, int run, const repair::Mission& 
   r.repairs = report.repairs.size();
   for (const repair::RepairRecord& rep : report.repairs) {
     r.latencies_ms.push_back(rep.seconds * 1000.0);
+    r.reused_grounding.push_back(rep.reused_grounding);
     r.stability += rep.plan_distance;
     r.planner_calls += rep.planner_calls;
   }
   double planned_end = 0.0;
   for (const repair::ScheduledAction& s : plan.steps) planned_end = std::max(planned_end, s.end());
+  r.preparation_ms = report.preparation_seconds * 1000.0;
   r.makespan = report.end_time;
   if (report.goal_reached) r.delay = report.end_time - planned_end;
   const auto cost = world.observe().values.find({"total-cost"});
@@ -102,8 +110,8 @@ RunRecord execute(const std::string& home_name, int run, const repair::Mission& 
 
 struct Summary {
   std::string strategy;
-  std::size_t runs = 0, reached = 0, repairs = 0;
-  std::vector<double> latencies, delays, makespans, costs;
+  std::size_t runs = 0, reached = 0, repairs = 0, reused_grounding = 0;
+  std::vector<double> latencies, delays, makespans, costs, preparations;
   double stability = 0.0, planner_calls = 0.0;
 };
 
@@ -117,6 +125,8 @@ std::vector<Summary> summarise(const std::vector<RunRecord>& records, const std:
       ++s.runs;
       s.repairs += r.repairs;
       s.latencies.insert(s.latencies.end(), r.latencies_ms.begin(), r.latencies_ms.end());
+      s.reused_grounding += static_cast<std::size_t>(std::count(r.reused_grounding.begin(), r.reused_grounding.end(), true));
+      if (r.preparation_ms > 0.0) s.preparations.push_back(r.preparation_ms);
       s.stability += static_cast<double>(r.stability);
       s.planner_calls += r.planner_calls;
       if (!r.reached) continue;
@@ -149,13 +159,15 @@ void write_outputs(const RepairBenchOptions& o, const std::vector<RunRecord>& re
               latencies, std::to_string(r.stability), std::to_string(r.planner_calls), r.delay ? fixed(*r.delay, 3) : "",
               fixed(r.makespan, 3), fixed(r.cost, 1), r.failures, r.outcome});
     runs_json.push_back({{"home", r.home}, {"run", r.run}, {"strategy", r.strategy}, {"comforted", r.reached},
-                         {"repairs", r.repairs}, {"latency_ms", r.latencies_ms}, {"stability", r.stability},
+                         {"repairs", r.repairs}, {"latency_ms", r.latencies_ms},
+                         {"reused_grounding", r.reused_grounding}, {"preparation_ms", r.preparation_ms},
+                         {"stability", r.stability},
                          {"planner_calls", r.planner_calls}, {"delay", r.delay ? nlohmann::json(*r.delay) : nlohmann::json()},
                          {"makespan", r.makespan},
                          {"cost", r.cost}, {"failures", r.failures}, {"outcome", r.outcome}});
   }
   Table table({"strategy", "comforted", "repairs", "latency median ms", "latency p95 ms", "stability/run",
-               "delay", "makespan", "cost", "planner calls/run"});
+               "delay", "makespan", "cost", "planner calls/run", "grounding reused"});
   nlohmann::json summary_json = nlohmann::json::array();
   std::map<std::string, std::vector<Bar>> plots;
   for (const Summary& s : summary) {
@@ -164,12 +176,15 @@ void write_outputs(const RepairBenchOptions& o, const std::vector<RunRecord>& re
     const double median = percentile(s.latencies, 0.5), p95 = percentile(s.latencies, 0.95);
     table.add({s.strategy, std::to_string(s.reached) + "/" + std::to_string(s.runs), std::to_string(s.repairs),
                fixed(median, 3), fixed(p95, 3), fixed(s.stability / runs_count, 2), fixed(mean(s.delays), 1),
-               fixed(mean(s.makespans), 1), fixed(mean(s.costs), 1), fixed(s.planner_calls / runs_count, 2)});
+               fixed(mean(s.makespans), 1), fixed(mean(s.costs), 1), fixed(s.planner_calls / runs_count, 2),
+               std::to_string(s.reused_grounding) + "/" + std::to_string(s.repairs)});
     summary_json.push_back({{"strategy", s.strategy}, {"runs", s.runs}, {"comforted", s.reached},
                             {"success_rate", success}, {"repairs", s.repairs}, {"latency_median_ms", median},
                             {"latency_p95_ms", p95}, {"stability_per_run", s.stability / runs_count},
                             {"delay_mean", mean(s.delays)}, {"makespan_mean", mean(s.makespans)},
-                            {"cost_mean", mean(s.costs)}, {"planner_calls_per_run", s.planner_calls / runs_count}});
+                            {"cost_mean", mean(s.costs)}, {"planner_calls_per_run", s.planner_calls / runs_count},
+                            {"repairs_reusing_grounding", s.reused_grounding},
+                            {"preparation_median_ms", s.preparations.empty() ? nlohmann::json() : nlohmann::json(percentile(s.preparations, 0.5))}});
     plots["success-rate"].push_back({s.strategy, success});
     plots["latency-median-ms"].push_back({s.strategy, median});
     plots["latency-p95-ms"].push_back({s.strategy, p95});
@@ -250,7 +265,8 @@ int run_repair_bench(const RepairBenchOptions& o, std::ostream& out, std::ostrea
         }
       }
       for (auto& strategy : strategies) {
-        records.push_back(execute(name, run, mission, *files.problem, *planned.plan, failures, *strategy, ontology));
+        records.push_back(execute(name, run, mission, *files.problem, *planned.plan, failures, *strategy, ontology,
+                                  o.reuse_grounding));
         const RunRecord& r = records.back();
         progress << "[" << name << " run " << run << "] " << r.strategy << ": " << (r.reached ? "comforted" : "not comforted")
                  << ", " << r.repairs << " repairs\n";

@@ -33,6 +33,10 @@ struct RepairBenchOptions {
   std::string alplan;     // the executable, for the external runs
   double epsilon = 0.001;
   double planning_time = 10.0;
+  // The monitor grounds each home once when execution starts and repairs
+  // reuse that grounding when they can (repair/monitor.h); off, every
+  // repair grounds its problem from scratch, as the external planner must.
+  bool reuse_grounding = true;
 };
 
 // Returns the exit code: 0, or 2 for bad options or unwritable output.

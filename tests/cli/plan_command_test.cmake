@@ -25,7 +25,8 @@ expect_run(2 "search" ${ALPLAN} plan --search dfs ${data}/mixed-domain.pddl ${da
 # Limits bound the whole run, whichever phase reaches them: memory running
 # out while loading or grounding is exit 11 with a message, never an abort,
 # and so is a time limit shorter than grounding (driver-log 2014 instance 10
-# grounds in about 1.8 s).
+# grounds in 0.3 s to 1.8 s, as fast or slow as the machine is; 0.05 s is
+# within reading the files and reachability everywhere).
 set(assisted ${CMAKE_CURRENT_LIST_DIR}/../../domains/assisted_living)
 set(driverlog ${ipc}/ipc-2014/driver-log-temporal-satisficing)
 expect_run(11 "memory limit reached while" ${ALPLAN} plan ${assisted}/domain.pddl ${assisted}/paper-scenario-1.pddl
@@ -35,7 +36,7 @@ expect_run(11 "memory limit reached while" ${ALPLAN} plan ${driverlog}/domain.pd
 expect_run(11 "\"status\": \"limit_reached\"" ${ALPLAN} plan --json ${driverlog}/domain.pddl
   ${driverlog}/instances/instance-10.pddl --memory-limit 300)
 expect_run(11 "the time limit was reached while grounding" ${ALPLAN} plan ${driverlog}/domain.pddl
-  ${driverlog}/instances/instance-10.pddl --time-limit 0.5)
+  ${driverlog}/instances/instance-10.pddl --time-limit 0.05)
 
 # --json: cost is the sum of action costs (the suggestion's 500), the metric
 # (total-time + total-cost) has its own key, times are the printed plan's.
