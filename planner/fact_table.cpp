@@ -11,16 +11,19 @@ std::size_t GroundKeyHash::operator()(const GroundKey& key) const noexcept {
 std::uint32_t GroundKeyTable::intern(const GroundKey& key) {
   // Look up first: most keys the reachability fixpoint interns are known
   // already, and emplace would build (and throw away) a node for each.
-  if (const auto it = ids_.find(key); it != ids_.end()) return it->second;
-  const auto id = static_cast<std::uint32_t>(keys_.size());
-  ids_.emplace(key, id);
-  keys_.push_back(key);
+  if (const auto it = data_->ids.find(key); it != data_->ids.end()) return it->second;
+  // As in SharedVector: only a table's owner interns, so a count of one
+  // cannot grow meanwhile.
+  if (data_.use_count() > 1) data_ = std::make_shared<Data>(*data_);
+  const auto id = static_cast<std::uint32_t>(data_->keys.size());
+  data_->ids.emplace(key, id);
+  data_->keys.push_back(key);
   return id;
 }
 
 std::optional<std::uint32_t> GroundKeyTable::find(const GroundKey& key) const {
-  auto it = ids_.find(key);
-  if (it == ids_.end()) return std::nullopt;
+  auto it = data_->ids.find(key);
+  if (it == data_->ids.end()) return std::nullopt;
   return it->second;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -25,16 +26,22 @@ struct GroundKeyHash {
   std::size_t operator()(const GroundKey& key) const noexcept;
 };
 
+// Copies share their keys until one of them interns a new key (the tasks
+// a grounding cache derives share their reference's fact table).
 class GroundKeyTable {
  public:
+  GroundKeyTable() : data_(std::make_shared<Data>()) {}
   std::uint32_t intern(const GroundKey& key);
   std::optional<std::uint32_t> find(const GroundKey& key) const;
-  const GroundKey& key(std::uint32_t id) const { return keys_[id]; }
-  std::uint32_t size() const { return static_cast<std::uint32_t>(keys_.size()); }
+  const GroundKey& key(std::uint32_t id) const { return data_->keys[id]; }
+  std::uint32_t size() const { return static_cast<std::uint32_t>(data_->keys.size()); }
 
  private:
-  std::vector<GroundKey> keys_;
-  std::unordered_map<GroundKey, std::uint32_t, GroundKeyHash> ids_;
+  struct Data {
+    std::vector<GroundKey> keys;
+    std::unordered_map<GroundKey, std::uint32_t, GroundKeyHash> ids;
+  };
+  std::shared_ptr<Data> data_;
 };
 
 // "(pred a b)" for a fact, "(f a b)" for a numeric variable.

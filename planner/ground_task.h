@@ -16,6 +16,7 @@
 
 #include "planner/fact_table.h"
 #include "planner/ids.h"
+#include "planner/shared_vector.h"
 #include "planner/normalized_task.h"
 
 namespace alplan {
@@ -132,7 +133,7 @@ struct GroundTask {
   GroundKeyTable numeric;  // head: FunctionId
   std::vector<FactId> initial_facts;
   std::vector<double> initial_values;  // per numeric variable; NaN when undefined
-  std::vector<GroundAction> actions;
+  SharedVector<GroundAction> actions;  // shared by the tasks a GroundingCache derives
   std::vector<GroundAxiom> axioms;  // sorted by stratum
   std::uint32_t strata = 0;
   std::vector<GroundTimedLiteral> timed_literals;  // sorted by time

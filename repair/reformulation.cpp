@@ -31,7 +31,18 @@ std::optional<std::string> object_type(const pddl::Problem& problem, const std::
 
 pddl::Problem reformulate(const pddl::Domain& domain, const pddl::Problem& base, const WorldState& observed,
                           const std::vector<ActionInProgress>& in_progress, double now, double shift) {
-  pddl::Problem problem = base;
+  // The frame alone: the base's initial state and timed literals are
+  // replaced, so copying them (hundreds of atoms) would be wasted.
+  pddl::Problem problem;
+  problem.name = base.name;
+  problem.domain_name = base.domain_name;
+  problem.domain_name_location = base.domain_name_location;
+  problem.requirements = base.requirements;
+  problem.objects = base.objects;
+  problem.goal = base.goal;
+  problem.constraints = base.constraints;
+  problem.metric = base.metric;
+  problem.location = base.location;
   std::set<std::string> names;
   for (const pddl::TypedName& o : base.objects) names.insert(o.name);
   for (const pddl::TypedName& c : domain.constants) names.insert(c.name);
@@ -47,11 +58,9 @@ pddl::Problem reformulate(const pddl::Domain& domain, const pddl::Problem& base,
     }
     return true;
   };
-  problem.init.clear();
   for (const AtomKey& a : observed.atoms) {
     if (known(a, predicates)) problem.init.push_back(atom_of(a));
   }
-  problem.numeric_init.clear();
   for (const auto& [key, value] : observed.values) {
     if (!known(key, functions)) continue;
     pddl::NumericFact f;
@@ -59,7 +68,6 @@ pddl::Problem reformulate(const pddl::Domain& domain, const pddl::Problem& base,
     f.value = value;
     problem.numeric_init.push_back(f);
   }
-  problem.timed_literals.clear();
   for (const pddl::TimedInitialLiteral& til : base.timed_literals) {
     if (til.time <= now) continue;  // already happened; the world shows it
     pddl::TimedInitialLiteral shifted = til;
@@ -87,7 +95,7 @@ std::shared_ptr<const GroundTask> without_schemas(std::shared_ptr<const GroundTa
   const auto forbidden = [&](const GroundAction& a) { return excluded.count(task->lifted->actions[a.schema].name) != 0; };
   if (std::none_of(task->actions.begin(), task->actions.end(), forbidden)) return task;
   auto view = std::make_shared<GroundTask>(*task);
-  std::erase_if(view->actions, forbidden);
+  std::erase_if(view->actions.mutate(), forbidden);
   // A goal fact the remaining actions cannot reach (relaxed: deletes and
   // numbers ignored) is lost for good: say so, as grounding without those
   // schemas would have, rather than leave it to the search.
