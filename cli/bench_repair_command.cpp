@@ -94,6 +94,8 @@ void add_bench_repair_command(CLI::App* bench, int& exit_code) {
   r->add_option("--out", o->bench.out_dir, "Folder for runs.csv, runs.json, summary.md, summary.json, plots/");
   r->add_flag("!--no-grounding-reuse", o->bench.reuse_grounding,
               "Ground every repair's problem from scratch instead of reusing the grounding made when execution starts");
+  r->add_option("--adapt-expansions", o->bench.adapt_expansions,
+                "adapt: expansions each anytime weight may spend looking for a closer plan (0: until proven)");
   r->add_flag("--external", o->bench.external, "Also replan through `alplan plan` in a child process (the paper's way)");
   r->add_option("--rooms", o->bench.home.rooms, "Rooms per home");
   r->add_option("--seniors", o->bench.home.seniors, "Seniors per home");

@@ -5,6 +5,7 @@
 // objects) both run through here.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,7 @@ struct ScenarioOptions {
   std::string strategy = "substitute";
   double epsilon = 0.002;
   double planning_time = 10.0;  // per planner call, seconds
+  std::uint64_t adapt_expansions = 0;  // repair::StrategyOptions
   repair::MonitorOptions monitor;
 };
 

@@ -301,7 +301,7 @@ PlannerResult Planner::plan_from(const PlanningStart& start, const std::function
   if (options_.search == "gbfs") pipeline = {{{{"gbfs", 0.0}}, 0}};
   if (options_.search == "wastar") pipeline = {{{{"wastar", options_.weight}}, 0}};
   if (options_.anytime) {
-    for (double w : {5.0, 3.0, 2.0, 1.5, 1.0}) pipeline.push_back({{{"wastar", w}}, 0});
+    for (double w : {5.0, 3.0, 2.0, 1.5, 1.0}) pipeline.push_back({{{"wastar", w}}, options_.anytime_expansions});
   }
   double best_value = std::numeric_limits<double>::infinity();
   bool exhausted_all = true;
@@ -328,7 +328,9 @@ PlannerResult Planner::plan_from(const PlanningStart& start, const std::function
     const PhaseOutcome outcome =
         run_phase(pipeline[phase], index, search_start, heuristic, bfs, options_);
     add(result.statistics, outcome.statistics);
-    if (outcome.budget_spent) continue;  // EHC gave up; the fallback takes over
+    // EHC gave up and the fallback takes over, or an anytime weight gave up
+    // and the next one tries.
+    if (outcome.budget_spent) continue;
     if (outcome.status == SearchStatus::InProgress) {
       exhausted_all = false;
       break;  // a limit was reached

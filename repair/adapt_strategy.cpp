@@ -30,7 +30,7 @@ std::shared_ptr<const GroundTask> penalised(const GroundTask& task, const std::m
   auto view = std::make_shared<GroundTask>(task);
   GroundExpression amount;
   amount.value = penalty;
-  for (GroundAction& a : view->actions) {
+  for (GroundAction& a : view->actions.mutate()) {
     if (keep.count(view->action_name(a))) continue;
     (a.durative ? a.end : a.start).numeric.push_back({cost, pddl::AssignOperator::Increase, amount});
   }
@@ -76,6 +76,7 @@ class AdaptStrategy : public RepairStrategy {
     PlannerOptions planner = options_.planner;
     planner.anytime = true;
     planner.time_limit = std::min(planner.time_limit, options_.adapt_budget);
+    planner.anytime_expansions = options_.adapt_expansions;
     const std::shared_ptr<const GroundTask> view = cost ? penalised(*task, keep, *cost, options_.adapt_penalty) : task;
     PlanningStart start = initial_start(*view);
     start.now = request.now;

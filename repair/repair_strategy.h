@@ -35,6 +35,9 @@ struct StrategyOptions {
   // `adapt`: the cost of an action the old plan lacks, and the search budget.
   double adapt_penalty = 100.0;
   double adapt_budget = 0.25;  // seconds
+  // Expansions each anytime weight may spend looking for a closer plan
+  // (PlannerOptions::anytime_expansions); 0: until proven.
+  std::uint64_t adapt_expansions = 0;
 };
 
 struct RepairRequest {

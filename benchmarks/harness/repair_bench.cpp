@@ -225,6 +225,7 @@ int run_repair_bench(const RepairBenchOptions& o, std::ostream& out, std::ostrea
   repair::StrategyOptions strategy_options;
   strategy_options.planner.epsilon = o.epsilon;
   strategy_options.planner.time_limit = o.planning_time;
+  strategy_options.adapt_expansions = o.adapt_expansions;
   std::vector<std::unique_ptr<repair::RepairStrategy>> strategies;
   std::vector<std::string> order;
   for (const std::string& name : o.strategies) {
@@ -281,6 +282,7 @@ int run_repair_bench(const RepairBenchOptions& o, std::ostream& out, std::ostrea
       domains::ScenarioOptions so;
       so.assisted_living_dir = o.assisted_living_dir;
       so.strategy = name;
+      so.adapt_expansions = o.adapt_expansions;
       const domains::ScenarioRun run = domains::run_paper_scenario(scenario, so);
       for (const repair::RepairRecord& r : run.report.repairs) latencies.push_back(r.seconds * 1000.0);
     }

@@ -37,6 +37,7 @@ struct RepairBenchOptions {
   // reuse that grounding when they can (repair/monitor.h); off, every
   // repair grounds its problem from scratch, as the external planner must.
   bool reuse_grounding = true;
+  std::uint64_t adapt_expansions = 0;  // repair::StrategyOptions
 };
 
 // Returns the exit code: 0, or 2 for bad options or unwritable output.

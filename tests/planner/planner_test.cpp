@@ -234,6 +234,21 @@ TEST_CASE("anytime search returns ever better plans under a monotone metric") {
   CHECK(result.best()->validation.value == Approx(6.0));
 }
 
+TEST_CASE("anytime search under an expansion cap per weight keeps its plans and expands less") {
+  auto task = ground_text(kMixed, kMixedProblem);
+  PlannerOptions options;
+  options.anytime = true;
+  options.time_limit = 10.0;
+  const PlannerResult full = Planner(task, options).plan();
+  options.anytime_expansions = 1;
+  const PlannerResult capped = Planner(task, options).plan();
+  REQUIRE(capped.status == Status::Solved);
+  REQUIRE(capped.best());
+  CHECK(capped.best()->validation.valid);
+  CHECK(capped.best()->validation.value >= full.best()->validation.value);
+  CHECK(capped.statistics.expanded < full.statistics.expanded);
+}
+
 TEST_CASE("two planners run at once in two threads and agree with a sequential run") {
   auto match = ground_text(kMatch, kMatchProblem);
   auto mixed = ground_text(kMixed, kMixedProblem);
