@@ -283,6 +283,7 @@ int run_repair_bench(const RepairBenchOptions& o, std::ostream& out, std::ostrea
       so.assisted_living_dir = o.assisted_living_dir;
       so.strategy = name;
       so.adapt_expansions = o.adapt_expansions;
+      so.monitor.reuse_grounding = o.reuse_grounding;
       const domains::ScenarioRun run = domains::run_paper_scenario(scenario, so);
       for (const repair::RepairRecord& r : run.report.repairs) latencies.push_back(r.seconds * 1000.0);
     }
