@@ -151,9 +151,17 @@ int Deliberator::on_stress(const std::string& senior, const perception::StressSt
   domains::ScenarioOptions options;
   options.assisted_living_dir = o.dir;
   options.strategy = o.strategy;
-  const domains::MissionRun run = domains::run_mission(input, options);
-  print_mission(run);
-  return run.report.goal_reached ? kExitOk : kExitInvalid;
+  try {
+    const domains::MissionRun run = domains::run_mission(input, options);
+    print_mission(run);
+    return run.report.goal_reached ? kExitOk : kExitInvalid;
+  } catch (const domains::NoInitialPlan& e) {
+    // Deliberation ends here, explained: the goal perception chose has no
+    // plan in this home, so the robot does nothing rather than fail.
+    std::cout << "\n[plan] no plan: " << e.what() << "\n[outcome] the robot cannot comfort "
+              << input.seniors.front() << " in this home: " << input.motivation << "\n";
+    return kExitInvalid;
+  }
 }
 
 }  // namespace alplan::cli

@@ -26,7 +26,7 @@ MissionRun run_mission(const MissionInput& input, const ScenarioOptions& options
   initial.anytime = true;
   initial.time_limit = options.planning_time;
   const repair::PlanningOutcome planned = repair::plan_in_process(*input.domain, input.problem, 0.0, initial);
-  if (!planned.plan) throw std::runtime_error(input.problem.name + ": no initial plan: " + planned.message);
+  if (!planned.plan) throw NoInitialPlan(input.problem.name + ": no initial plan: " + planned.message);
   run.initial_plan = repair::plan_text(*planned.plan);
   run.initial_planning_seconds = planned.seconds;
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -63,7 +64,14 @@ struct MissionRun {
   std::vector<std::string> applied_events;
 };
 
-// Throws std::runtime_error when the problem has no initial plan.
+// The home offers no plan for the goal at all (for example no object that
+// cheers a sad senior): an outcome of deliberation, not an input error.
+class NoInitialPlan : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Throws NoInitialPlan when the problem has no initial plan.
 MissionRun run_mission(const MissionInput& input, const ScenarioOptions& options);
 
 }  // namespace alplan::domains

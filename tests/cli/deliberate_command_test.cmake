@@ -22,6 +22,9 @@ expect_run(0 "not stressed" ${ALPLAN} deliberate --calm --seed 1 --emotion sad)
 # Sad in Scenario 2's home, where the instruments are.
 expect_run(0 "Outcome: the goal (cheerful senior1) holds" ${ALPLAN} deliberate --emotion sad
   --problem paper-scenario-2.pddl)
+# Sad in Scenario 1's home, which has no instrument: an explained outcome
+# (exit 1), not an input error.
+expect_run(1 "the robot cannot comfort senior1 in this home" ${ALPLAN} deliberate --emotion sad)
 # Bad input: exit 2 with the reason.
 expect_run(2 "give the seniors' face" ${ALPLAN} deliberate)
 expect_run(2 "--emotion grumpy: not an emotion" ${ALPLAN} deliberate --emotion grumpy)
