@@ -20,7 +20,7 @@
 #include "perception/object_image_generator.h"
 #include "perception/ppg_simulator.h"
 #include "perception/pretrained_emotion_recognizer.h"
-#include "perception/service/simulated_stress_model.h"
+#include "perception/simulated_stress_model.h"
 #include "perception/stress_classifier.h"
 #include "perception/stress_features.h"
 #include "perception/tfjs_graph_model.h"
@@ -111,9 +111,9 @@ void BM_StressFeaturesFiveMinutes(benchmark::State& state) {
 BENCHMARK(BM_StressFeaturesFiveMinutes)->Unit(benchmark::kMillisecond);
 
 StressClassifier trained_stress_classifier(StressModelKind kind) {
-  service::SimulatedModelSpec spec;
+  SimulatedModelSpec spec;
   spec.classifier = {kind, StressFeatureSet::Paper, 5};
-  return service::train_simulated_stress_classifier(spec);
+  return train_simulated_stress_classifier(spec);
 }
 
 void BM_StressVerdictPerWindow(benchmark::State& state, StressModelKind kind) {

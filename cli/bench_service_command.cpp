@@ -18,7 +18,7 @@
 
 #include "cli/commands.h"
 #include "perception/service/signal_service.h"
-#include "perception/service/simulated_stress_model.h"
+#include "perception/simulated_stress_model.h"
 #include "perception/service/wristband_fleet.h"
 
 namespace alplan::cli {
@@ -138,7 +138,7 @@ int run_bench_service(const BenchServiceOptions& o) {
   }
   try {
     std::filesystem::create_directories(o.work_dir);
-    const perception::StressClassifier model = service::train_simulated_stress_classifier({});
+    const perception::StressClassifier model = perception::train_simulated_stress_classifier({});
     std::cout << "| wristbands | offered readings/s | held readings/s | made | stored | lost | client p50 ms | "
                  "client p99 ms | server p50 ms | server p99 ms | retries | zero loss |\n"
               << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";

@@ -16,7 +16,7 @@
 #include "cli/perceive_common.h"
 #include "perception/deliberation.h"
 #include "perception/ppg_simulator.h"
-#include "perception/service/simulated_stress_model.h"
+#include "perception/simulated_stress_model.h"
 #include "perception/stress_features.h"
 
 namespace alplan::cli {
@@ -55,13 +55,13 @@ perception::PpgRecording simulated_senior(const DeliberateOptions& o) {
 
 perception::StressClassifier stress_model(const DeliberateOptions& o) {
   if (!o.stress_model.empty()) return perception::StressClassifier::load(o.stress_model);
-  perception::service::SimulatedModelSpec spec;
+  perception::SimulatedModelSpec spec;
   spec.subjects = 24;
   spec.recording_s = 150;
   spec.seed = o.seed + 1;  // not the senior's own recordings
   spec.classifier = {};    // logistic regression on the paper's HR and IBI
   std::printf("[learning] stress model trained on the simulated database (24 subjects; --stress-model to load one)\n");
-  return perception::service::train_simulated_stress_classifier(spec);
+  return perception::train_simulated_stress_classifier(spec);
 }
 
 int run(const DeliberateOptions& o) {

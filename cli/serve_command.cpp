@@ -27,7 +27,7 @@
 #include "cli/deliberation_run.h"
 #include "cli/perceive_common.h"
 #include "perception/service/signal_service.h"
-#include "perception/service/simulated_stress_model.h"
+#include "perception/simulated_stress_model.h"
 
 namespace alplan::cli {
 namespace {
@@ -85,7 +85,7 @@ std::optional<perception::StressClassifier> load_classifier(const ServeOptions& 
   if (o.no_stress) return std::nullopt;
   if (!o.model.empty()) return perception::StressClassifier::load(o.model);
   std::cerr << "serve: no --model given; training the stress classifier on simulated recordings\n";
-  return service::train_simulated_stress_classifier({});
+  return perception::train_simulated_stress_classifier({});
 }
 
 void print_event(const service::StressEvent& e) {

@@ -12,7 +12,7 @@
 #include <boost/asio/write.hpp>
 #include <boost/beast/core/tcp_stream.hpp>
 
-#include "perception/service/simulated_stress_model.h"
+#include "perception/simulated_stress_model.h"
 
 namespace alplan::test {
 
@@ -42,7 +42,7 @@ service::DeviceRegistry test_registry(std::size_t devices) {
 }
 
 const perception::StressClassifier& test_classifier() {
-  static const perception::StressClassifier classifier = service::train_simulated_stress_classifier({});
+  static const perception::StressClassifier classifier = perception::train_simulated_stress_classifier({});
   return classifier;
 }
 

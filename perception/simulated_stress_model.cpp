@@ -1,11 +1,11 @@
-#include "perception/service/simulated_stress_model.h"
+#include "perception/simulated_stress_model.h"
 
 #include <vector>
 
 #include "perception/ppg_simulator.h"
 #include "perception/stress_features.h"
 
-namespace alplan::perception::service {
+namespace alplan::perception {
 
 StressClassifier train_simulated_stress_classifier(const SimulatedModelSpec& spec) {
   DatabaseSpec database;
@@ -24,4 +24,4 @@ StressClassifier train_simulated_stress_classifier(const SimulatedModelSpec& spe
   return StressClassifier::train(examples, spec.classifier);
 }
 
-}  // namespace alplan::perception::service
+}  // namespace alplan::perception

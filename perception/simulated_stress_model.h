@@ -1,7 +1,7 @@
 // A stress classifier trained on the PPG simulator's labelled database
 // (perception/ppg_simulator.h), through the wristband core's own windows:
-// what the service uses when no trained model file is given, and what the
-// tests and the load benchmark use. Deterministic in the spec; a few
+// the default model of `alplan serve` and `alplan deliberate` when no
+// trained model file is given, and what the tests and benchmarks use. Deterministic in the spec; a few
 // subjects train in well under a second.
 #pragma once
 
@@ -10,7 +10,7 @@
 
 #include "perception/stress_classifier.h"
 
-namespace alplan::perception::service {
+namespace alplan::perception {
 
 struct SimulatedModelSpec {
   std::size_t subjects = 6;
@@ -25,4 +25,4 @@ struct SimulatedModelSpec {
 // of a class to train on.
 StressClassifier train_simulated_stress_classifier(const SimulatedModelSpec& spec);
 
-}  // namespace alplan::perception::service
+}  // namespace alplan::perception
