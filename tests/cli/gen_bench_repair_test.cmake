@@ -32,6 +32,20 @@ endforeach()
 if(failed EQUAL 0)
   message(FATAL_ERROR "expected a failed run (suggest) in ${WORK}/repair/runs.csv")
 endif()
+# The repairs reuse the grounding made at the start; without it, none does.
+expect_run(0 "grounding reused" ${ALPLAN} bench repair --homes 2 --runs-per-home 1 --seed 3 --strategies replan
+  --out ${WORK}/repair-reuse)
+expect_run(0 "grounding reused" ${ALPLAN} bench repair --homes 2 --runs-per-home 1 --seed 3 --strategies replan
+  --no-grounding-reuse --out ${WORK}/repair-no-reuse)
+foreach(pair "repair-reuse;2" "repair-no-reuse;0")
+  list(GET pair 0 dir)
+  list(GET pair 1 reused)
+  file(READ ${WORK}/${dir}/summary.json summary)
+  string(FIND "${summary}" "\"repairs_reusing_grounding\": ${reused}," at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "${dir}: expected ${reused} repairs reusing the grounding in ${summary}")
+  endif()
+endforeach()
 expect_run(2 "unknown repair strategy 'fast'" ${ALPLAN} bench repair --homes 1 --strategies fast --out ${WORK}/x)
 # Failures of every kind the world simulator draws, emotion changes included.
 expect_run(0 "latency median ms" ${ALPLAN} bench repair --homes 1 --runs-per-home 2 --seed 2 --strategies replan

@@ -116,6 +116,10 @@ TEST_CASE("an action that takes longer is committed to and planned around") {
   // The robot reaches corridor2 at 100.002; the next move starts after it.
   CHECK(r.plan_text.rfind("100.", 0) == 0);
   CHECK(run.report.goal_reached);
+  // Nothing new in the world: the repair maps onto the grounding made when
+  // execution started.
+  CHECK(r.reused_grounding);
+  CHECK(run.report.preparation_seconds > 0.0);
 }
 
 TEST_CASE("a senior who moves is followed: the look-ahead sees the give would fail") {
@@ -127,6 +131,22 @@ TEST_CASE("a senior who moves is followed: the look-ahead sees the give would fa
   CHECK(r.foreseen);
   CHECK(r.failure.condition == "(be senior1 bedroom1)");
   CHECK(r.failure.time < 210.0);
+  CHECK(r.plan_text.find("(give robot1 senior1 guitar_id01 sunroom1)") != std::string::npos);
+  CHECK(run.report.goal_reached);
+  // (be senior1 sunroom1) was never reachable: the grounding was extended,
+  // not made again.
+  CHECK(r.reused_grounding);
+}
+
+TEST_CASE("without grounding reuse every repair grounds afresh and the senior is still followed") {
+  PaperScenario s = scenario(2);
+  s.events = repair::senior_moves(200.0, "senior1", "bedroom1", "sunroom1");
+  ScenarioOptions o = options("replan");
+  o.monitor.reuse_grounding = false;
+  const ScenarioRun run = run_paper_scenario(s, o);
+  const repair::RepairRecord& r = only_repair(run);
+  CHECK_FALSE(r.reused_grounding);
+  CHECK(run.report.preparation_seconds == 0.0);
   CHECK(r.plan_text.find("(give robot1 senior1 guitar_id01 sunroom1)") != std::string::npos);
   CHECK(run.report.goal_reached);
 }
