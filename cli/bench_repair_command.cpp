@@ -96,6 +96,9 @@ void add_bench_repair_command(CLI::App* bench, int& exit_code) {
               "Ground every repair's problem from scratch instead of reusing the grounding made when execution starts");
   r->add_option("--adapt-expansions", o->bench.adapt_expansions,
                 "adapt: expansions each anytime weight may spend looking for a closer plan (0: until proven)");
+  r->add_option("--adapt-min-weight", o->bench.adapt_min_weight,
+                "adapt: the lowest weight of its anytime search (5, 3, 2, 1.5, 1 down to this)")
+      ->check(CLI::PositiveNumber);
   r->add_flag("--external", o->bench.external, "Also replan through `alplan plan` in a child process (the paper's way)");
   r->add_option("--rooms", o->bench.home.rooms, "Rooms per home");
   r->add_option("--seniors", o->bench.home.seniors, "Seniors per home");

@@ -26,6 +26,7 @@ struct ScenarioOptions {
   double epsilon = 0.002;
   double planning_time = 10.0;  // per planner call, seconds
   std::uint64_t adapt_expansions = 0;  // repair::StrategyOptions
+  double adapt_min_weight = 3.0;       // repair::StrategyOptions
   repair::MonitorOptions monitor;
 };
 

@@ -301,7 +301,9 @@ PlannerResult Planner::plan_from(const PlanningStart& start, const std::function
   if (options_.search == "gbfs") pipeline = {{{{"gbfs", 0.0}}, 0}};
   if (options_.search == "wastar") pipeline = {{{{"wastar", options_.weight}}, 0}};
   if (options_.anytime) {
-    for (double w : {5.0, 3.0, 2.0, 1.5, 1.0}) pipeline.push_back({{{"wastar", w}}, options_.anytime_expansions});
+    for (double w : {5.0, 3.0, 2.0, 1.5, 1.0}) {
+      if (w >= options_.anytime_min_weight) pipeline.push_back({{{"wastar", w}}, options_.anytime_expansions});
+    }
   }
   double best_value = std::numeric_limits<double>::infinity();
   bool exhausted_all = true;

@@ -36,10 +36,13 @@ struct PlannerOptions {
   double time_limit = std::numeric_limits<double>::infinity();
   std::size_t node_limit = std::numeric_limits<std::size_t>::max();
   bool anytime = false;            // keep improving after the first plan
-  // Anytime mode tries weights 5, 3, 2, 1.5 and 1 in turn, each bounded by
-  // the best plan so far; with this set, each gives up after so many
-  // expansions (0: until it finds a better plan or proves there is none).
-  // Proving is what costs: most of the time the first plan is not beaten.
+  // Anytime mode runs weighted A* with weights 5, 3, 2, 1.5 and 1 in turn,
+  // each bounded by the best plan so far, down to this weight (the lower
+  // the weight, the longer it takes to find nothing better).
+  double anytime_min_weight = 1.0;
+  // With this set, each weight gives up after so many expansions (0: until
+  // it finds a better plan or proves there is none). Proving is what costs:
+  // most of the time the first plan is not beaten.
   std::uint64_t anytime_expansions = 0;
   double epsilon = 0.001;          // separation of dependent happenings
   // Planning takes time the world does not stop for: with this set, no step

@@ -76,6 +76,7 @@ class AdaptStrategy : public RepairStrategy {
     PlannerOptions planner = options_.planner;
     planner.anytime = true;
     planner.time_limit = std::min(planner.time_limit, options_.adapt_budget);
+    planner.anytime_min_weight = options_.adapt_min_weight;
     planner.anytime_expansions = options_.adapt_expansions;
     const std::shared_ptr<const GroundTask> view = cost ? penalised(*task, keep, *cost, options_.adapt_penalty) : task;
     PlanningStart start = initial_start(*view);

@@ -226,6 +226,7 @@ int run_repair_bench(const RepairBenchOptions& o, std::ostream& out, std::ostrea
   strategy_options.planner.epsilon = o.epsilon;
   strategy_options.planner.time_limit = o.planning_time;
   strategy_options.adapt_expansions = o.adapt_expansions;
+  strategy_options.adapt_min_weight = o.adapt_min_weight;
   std::vector<std::unique_ptr<repair::RepairStrategy>> strategies;
   std::vector<std::string> order;
   for (const std::string& name : o.strategies) {
@@ -283,6 +284,7 @@ int run_repair_bench(const RepairBenchOptions& o, std::ostream& out, std::ostrea
       so.assisted_living_dir = o.assisted_living_dir;
       so.strategy = name;
       so.adapt_expansions = o.adapt_expansions;
+      so.adapt_min_weight = o.adapt_min_weight;
       so.monitor.reuse_grounding = o.reuse_grounding;
       const domains::ScenarioRun run = domains::run_paper_scenario(scenario, so);
       for (const repair::RepairRecord& r : run.report.repairs) latencies.push_back(r.seconds * 1000.0);

@@ -38,6 +38,7 @@ struct RepairBenchOptions {
   // repair grounds its problem from scratch, as the external planner must.
   bool reuse_grounding = true;
   std::uint64_t adapt_expansions = 0;  // repair::StrategyOptions
+  double adapt_min_weight = 3.0;       // repair::StrategyOptions
 };
 
 // Returns the exit code: 0, or 2 for bad options or unwritable output.

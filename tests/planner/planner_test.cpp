@@ -247,6 +247,13 @@ TEST_CASE("anytime search under an expansion cap per weight keeps its plans and 
   CHECK(capped.best()->validation.valid);
   CHECK(capped.best()->validation.value >= full.best()->validation.value);
   CHECK(capped.statistics.expanded < full.statistics.expanded);
+  // Stopping at weight 5 runs one weight of five.
+  options.anytime_expansions = 0;
+  options.anytime_min_weight = 5.0;
+  const PlannerResult heavy = Planner(task, options).plan();
+  REQUIRE(heavy.best());
+  CHECK(heavy.best()->validation.value >= full.best()->validation.value);
+  CHECK(heavy.statistics.expanded <= full.statistics.expanded);
 }
 
 TEST_CASE("two planners run at once in two threads and agree with a sequential run") {
