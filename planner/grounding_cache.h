@@ -34,6 +34,7 @@
 #include "pddl_parser/ast.h"
 #include "planner/grounder.h"
 #include "planner/instantiate.h"
+#include "planner/planner.h"
 #include "planner/reachability.h"
 
 namespace alplan {
@@ -56,6 +57,9 @@ class GroundingCache {
   bool last_reused() const { return last_reused_; }
   const std::string& last_miss() const { return last_miss_; }
   const Statistics& statistics() const { return statistics_; }
+  // For planners on the tasks this cache gives: they share their ground
+  // actions, so they can share the planner's per-task structures too.
+  const std::shared_ptr<PlannerWorkspace>& planner_workspace() const { return workspace_; }
 
  private:
   struct Reference;
@@ -70,6 +74,7 @@ class GroundingCache {
   Statistics statistics_;
   bool last_reused_ = false;
   std::string last_miss_;
+  std::shared_ptr<PlannerWorkspace> workspace_ = std::make_shared<PlannerWorkspace>();
 };
 
 }  // namespace alplan

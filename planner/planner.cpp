@@ -237,8 +237,14 @@ Plan to_plan(const GroundTask& task, const Solution& solution, std::vector<Actio
   return plan;
 }
 
-Planner::Planner(std::shared_ptr<const GroundTask> task, PlannerOptions options)
-    : task_(std::move(task)), options_(std::move(options)) {}
+PlannerWorkspace prepare_workspace(std::shared_ptr<const GroundTask> task) {
+  auto index = std::make_shared<const TaskIndex>(std::move(task));
+  return {index, TemporalRpg::graph_for(*index)};
+}
+
+Planner::Planner(std::shared_ptr<const GroundTask> task, PlannerOptions options,
+                 std::shared_ptr<PlannerWorkspace> workspace)
+    : task_(std::move(task)), options_(std::move(options)), workspace_(std::move(workspace)) {}
 
 PlannerResult Planner::plan(const std::function<void(const FoundPlan&)>& on_plan) {
   return plan_from(initial_start(*task_), on_plan);
@@ -252,7 +258,10 @@ PlannerResult Planner::plan_from(const PlanningStart& start, const std::function
     deadline = began + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options_.time_limit));
   }
   PlannerResult result;
-  const TaskIndex index(task_);
+  const std::shared_ptr<const TaskIndex> shared_index =
+      workspace_ && workspace_->index ? std::make_shared<const TaskIndex>(task_, *workspace_->index)
+                                      : std::make_shared<const TaskIndex>(task_);
+  const TaskIndex& index = *shared_index;
   if (index.unsupported()) {
     result.status = PlannerResult::Status::Unsupported;
     result.message = *index.unsupported();
@@ -282,7 +291,8 @@ PlannerResult Planner::plan_from(const PlanningStart& start, const std::function
   for (const RunningAction& r : start.running) search_start.state.start(r);
   derive(*task_, search_start.state);
 
-  TemporalRpg heuristic(index, {options_.heuristic == "trpg"});
+  TemporalRpg heuristic(index, {options_.heuristic == "trpg"}, workspace_ ? workspace_->graph : nullptr);
+  if (workspace_) *workspace_ = {shared_index, heuristic.graph()};
   const bool from_initial = is_initial(*task_, start);
   // Plans from an observed state are checked by validate_from; the plan
   // validator (which grounds the task again for itself) only from the start.

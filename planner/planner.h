@@ -20,6 +20,8 @@
 #include "planner/ground_task.h"
 #include "planner/plan.h"
 #include "planner/search_space.h"
+#include "planner/task_index.h"
+#include "planner/temporal_rpg.h"
 #include "planner/validator.h"
 
 namespace alplan {
@@ -94,9 +96,24 @@ struct PlanningStart {
 
 PlanningStart initial_start(const GroundTask& task);
 
+// What a planner builds for its task before it searches (the task index,
+// the relaxed planning graph), kept by a caller who plans again and again on
+// tasks that share their ground actions (a GroundingCache's derived tasks),
+// so that the next planner reuses what still fits. One per execution: a
+// planner writes what it built back into it.
+struct PlannerWorkspace {
+  std::shared_ptr<const TaskIndex> index;
+  std::shared_ptr<const TemporalRpg::Graph> graph;
+};
+
+// Builds the workspace for a task ahead of planning (a monitor does it when
+// execution starts, so that a repair finds it ready).
+PlannerWorkspace prepare_workspace(std::shared_ptr<const GroundTask> task);
+
 class Planner {
  public:
-  Planner(std::shared_ptr<const GroundTask> task, PlannerOptions options);
+  Planner(std::shared_ptr<const GroundTask> task, PlannerOptions options,
+          std::shared_ptr<PlannerWorkspace> workspace = nullptr);
 
   // Calls `on_plan` for every improving plan, as soon as it is found.
   PlannerResult plan(const std::function<void(const FoundPlan&)>& on_plan = {});
@@ -105,6 +122,7 @@ class Planner {
  private:
   std::shared_ptr<const GroundTask> task_;
   PlannerOptions options_;
+  std::shared_ptr<PlannerWorkspace> workspace_;
 };
 
 // The plan of a solution: one step per instantaneous action and per

@@ -28,6 +28,8 @@ class SharedVector {
   const_iterator begin() const { return data_->cbegin(); }
   const_iterator end() const { return data_->cend(); }
   const std::vector<T>& vector() const { return *data_; }
+  // Whether the two hold the very same data (not just equal data).
+  bool shares_with(const SharedVector& other) const { return data_ == other.data_; }
 
   // Only the owner of a task under construction writes, so a count of one
   // cannot grow meanwhile; a stale higher count only costs a needless copy.

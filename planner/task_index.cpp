@@ -133,61 +133,84 @@ class DerivedSupport {
 
 }  // namespace
 
-TaskIndex::TaskIndex(std::shared_ptr<const GroundTask> task) : task_(std::move(task)) {
-  const GroundTask& t = *task_;
-  by_fact_.resize(t.facts.size());
-  duration_dependent_.assign(t.actions.size(), false);
-  instant_.resize(t.actions.size());
-  start_.resize(t.actions.size());
-  end_.resize(t.actions.size());
+std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const GroundTask& t) {
+  auto tables = std::make_shared<ActionTables>();
+  ActionTables& x = *tables;
+  x.by_fact.resize(t.facts.size());
+  x.duration_dependent.assign(t.actions.size(), false);
+  x.instant.resize(t.actions.size());
+  x.start.resize(t.actions.size());
+  x.end.resize(t.actions.size());
   std::vector<std::size_t> load(t.facts.size(), 0);
   for (ActionId a = 0; a < t.actions.size(); ++a) {
     const GroundAction& action = t.actions[a];
     if (action.durative) {
-      condition_reads(action.at_start, start_[a]);
-      condition_reads(action.over_all, start_[a]);
-      for (const GroundDurationConstraint& d : action.duration) variables(d.value, start_[a].reads_values);
-      effect_footprint(action.start, start_[a]);
-      condition_reads(action.at_end, end_[a]);
-      condition_reads(action.over_all, end_[a]);
-      effect_footprint(action.end, end_[a]);
-      finish(start_[a]);
-      finish(end_[a]);
-      duration_dependent_[a] = effects_mention_duration(action.start) || effects_mention_duration(action.end) ||
+      condition_reads(action.at_start, x.start[a]);
+      condition_reads(action.over_all, x.start[a]);
+      for (const GroundDurationConstraint& d : action.duration) variables(d.value, x.start[a].reads_values);
+      effect_footprint(action.start, x.start[a]);
+      condition_reads(action.at_end, x.end[a]);
+      condition_reads(action.over_all, x.end[a]);
+      effect_footprint(action.end, x.end[a]);
+      finish(x.start[a]);
+      finish(x.end[a]);
+      x.duration_dependent[a] = effects_mention_duration(action.start) || effects_mention_duration(action.end) ||
                                conditions_mention_duration(action.at_start) ||
                                conditions_mention_duration(action.over_all) ||
                                conditions_mention_duration(action.at_end);
       for (const ConditionalEffect& c : action.end.conditional) {
-        if (c.condition_moment == Moment::Start && !unsupported_) {
-          unsupported_ = "the action " + t.action_name(action) +
+        if (c.condition_moment == Moment::Start && !x.unsupported) {
+          x.unsupported = "the action " + t.action_name(action) +
                          " has an at-end conditional effect whose condition is evaluated at start";
         }
       }
     } else {
-      condition_reads(action.at_start, instant_[a]);
-      effect_footprint(action.start, instant_[a]);
-      finish(instant_[a]);
+      condition_reads(action.at_start, x.instant[a]);
+      effect_footprint(action.start, x.instant[a]);
+      finish(x.instant[a]);
     }
     // Index under the least-loaded positive precondition, to spread the lists.
     const std::vector<FactId>& pre = action.at_start.positive;
     if (pre.empty()) {
-      unindexed_.push_back(a);
+      x.unindexed.push_back(a);
     } else {
       const FactId f = *std::min_element(pre.begin(), pre.end(),
-                                         [&](FactId x, FactId y) { return load[x] < load[y]; });
+                                         [&](FactId p, FactId q) { return load[p] < load[q]; });
       ++load[f];
-      by_fact_[f].push_back(a);
+      x.by_fact[f].push_back(a);
     }
   }
   if (!t.axioms.empty()) {
     DerivedSupport derived(t);
-    for (std::vector<Footprint>* list : {&instant_, &start_, &end_}) {
+    for (std::vector<Footprint>* list : {&x.instant, &x.start, &x.end}) {
       for (Footprint& fp : *list) {
         derived.expand(fp);
         finish(fp);
       }
     }
   }
+  return tables;
+}
+
+TaskIndex::TaskIndex(std::shared_ptr<const GroundTask> task) : task_(std::move(task)) {
+  actions_ = index_actions(*task_);
+  index_rest();
+}
+
+TaskIndex::TaskIndex(std::shared_ptr<const GroundTask> task, const TaskIndex& like) : task_(std::move(task)) {
+  const GroundTask& t = *task_;
+  const GroundTask& other = like.task();
+  const bool same_actions = t.actions.shares_with(other.actions) && t.facts.size() == other.facts.size() &&
+                            t.numeric.size() == other.numeric.size() && t.axioms.size() == other.axioms.size();
+  actions_ = same_actions ? like.actions_ : index_actions(t);
+  index_rest();
+}
+
+// What depends on more than the actions: the timed literals, and the
+// constructs of the lifted task the planner refuses.
+void TaskIndex::index_rest() {
+  const GroundTask& t = *task_;
+  unsupported_ = actions_->unsupported;
   til_.resize(t.timed_literals.size());
   for (std::size_t i = 0; i < t.timed_literals.size(); ++i) til_[i].writes.push_back(t.timed_literals[i].fact);
   if (!t.lifted->unsupported.empty()) unsupported_ = t.lifted->unsupported.front();
@@ -198,12 +221,12 @@ TaskIndex::TaskIndex(std::shared_ptr<const GroundTask> task) : task_(std::move(t
 
 const Footprint& TaskIndex::footprint(Snap snap) const {
   switch (snap.kind) {
-    case SnapKind::Instant: return instant_[snap.index];
-    case SnapKind::Start: return start_[snap.index];
-    case SnapKind::End: return end_[snap.index];
+    case SnapKind::Instant: return actions_->instant[snap.index];
+    case SnapKind::Start: return actions_->start[snap.index];
+    case SnapKind::End: return actions_->end[snap.index];
     case SnapKind::TimedLiteral: return til_[snap.index];
   }
-  return instant_[snap.index];
+  return actions_->instant[snap.index];
 }
 
 }  // namespace alplan

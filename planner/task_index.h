@@ -18,6 +18,11 @@ namespace alplan {
 class TaskIndex {
  public:
   explicit TaskIndex(std::shared_ptr<const GroundTask> task);
+  // The same index for a task that shares its ground actions, fact table
+  // size and axioms with `like`'s (a GroundingCache's derived task): the
+  // action tables are shared, only the timed literals' footprints are new.
+  // Any other task is indexed from scratch.
+  TaskIndex(std::shared_ptr<const GroundTask> task, const TaskIndex& like);
 
   const GroundTask& task() const { return *task_; }
   const std::shared_ptr<const GroundTask>& task_pointer() const { return task_; }
@@ -25,19 +30,27 @@ class TaskIndex {
   const Footprint& footprint(Snap snap) const;
   // Actions whose at-start (instantaneous: whole) precondition contains the
   // fact; every action is listed under exactly one fact, or in unindexed().
-  const std::vector<ActionId>& indexed_by(FactId fact) const { return by_fact_[fact]; }
-  const std::vector<ActionId>& unindexed() const { return unindexed_; }
+  const std::vector<ActionId>& indexed_by(FactId fact) const { return actions_->by_fact[fact]; }
+  const std::vector<ActionId>& unindexed() const { return actions_->unindexed; }
   // Effects or conditions read ?duration: the duration must be fixed at start.
-  bool duration_dependent(ActionId action) const { return duration_dependent_[action]; }
+  bool duration_dependent(ActionId action) const { return actions_->duration_dependent[action]; }
   // The first construct of the task the planner refuses, with its position.
   const std::optional<std::string>& unsupported() const { return unsupported_; }
 
  private:
+  struct ActionTables {
+    std::vector<Footprint> instant, start, end;
+    std::vector<std::vector<ActionId>> by_fact;
+    std::vector<ActionId> unindexed;
+    std::vector<bool> duration_dependent;
+    std::optional<std::string> unsupported;
+  };
+  static std::shared_ptr<const ActionTables> index_actions(const GroundTask& task);
+  void index_rest();
+
   std::shared_ptr<const GroundTask> task_;
-  std::vector<Footprint> instant_, start_, end_, til_;
-  std::vector<std::vector<ActionId>> by_fact_;
-  std::vector<ActionId> unindexed_;
-  std::vector<bool> duration_dependent_;
+  std::shared_ptr<const ActionTables> actions_;
+  std::vector<Footprint> til_;
   std::optional<std::string> unsupported_;
 };
 

@@ -98,8 +98,19 @@ class TemporalRpg::Exploration {
   std::vector<FactId> parked_facts_;
 };
 
-TemporalRpg::TemporalRpg(const TaskIndex& index, TemporalRpgOptions options) : index_(index), options_(options) {
-  build();
+TemporalRpg::TemporalRpg(const TaskIndex& index, TemporalRpgOptions options, std::shared_ptr<const Graph> like)
+    : index_(index),
+      options_(options),
+      graph_(like && fits(*like, index.task()) ? std::move(like) : build(index)),
+      actions_(graph_->actions),
+      comparisons_(graph_->comparisons),
+      start_watchers_(graph_->start_watchers),
+      end_watchers_(graph_->end_watchers),
+      axiom_watchers_(graph_->axiom_watchers),
+      numeric_watchers_(graph_->numeric_watchers),
+      comparison_variables_(graph_->comparison_variables),
+      goal_facts_(graph_->goal_facts),
+      goal_numeric_(graph_->goal_numeric) {
   const GroundTask& task = index_.task();
   const std::size_t facts = task.facts.size(), actions = task.actions.size();
   exploration_ = std::make_unique<Exploration>(*this);
@@ -126,20 +137,28 @@ TemporalRpg::TemporalRpg(const TaskIndex& index, TemporalRpgOptions options) : i
 
 TemporalRpg::~TemporalRpg() = default;
 
-std::uint32_t TemporalRpg::add_comparisons(const std::vector<GroundComparison>& comparisons) {
-  const auto first = static_cast<std::uint32_t>(comparisons_.size());
-  for (const GroundComparison& c : comparisons) comparisons_.push_back(&c);
-  return first;
+bool TemporalRpg::fits(const Graph& graph, const GroundTask& task) {
+  const GroundTask& built = *graph.task;
+  return task.actions.shares_with(built.actions) && task.facts.size() == built.facts.size() &&
+         task.numeric.size() == built.numeric.size() && task.axioms.size() == built.axioms.size() &&
+         task.goal.positive == built.goal.positive && task.goal.numeric.empty() && built.goal.numeric.empty();
 }
 
-void TemporalRpg::build() {
-  const GroundTask& task = index_.task();
+std::shared_ptr<const TemporalRpg::Graph> TemporalRpg::build(const TaskIndex& index) {
+  const GroundTask& task = index.task();
+  auto graph = std::make_shared<Graph>();
+  graph->task = index.task_pointer();
+  auto add_comparisons = [&](const std::vector<GroundComparison>& comparisons) {
+    const auto first = static_cast<std::uint32_t>(graph->comparisons.size());
+    for (const GroundComparison& c : comparisons) graph->comparisons.push_back(&c);
+    return first;
+  };
   const std::size_t facts = task.facts.size();
-  start_watchers_.resize(facts);
-  end_watchers_.resize(facts);
-  axiom_watchers_.resize(facts);
-  numeric_watchers_.resize(task.numeric.size());
-  actions_.resize(task.actions.size());
+  graph->start_watchers.resize(facts);
+  graph->end_watchers.resize(facts);
+  graph->axiom_watchers.resize(facts);
+  graph->numeric_watchers.resize(task.numeric.size());
+  graph->actions.resize(task.actions.size());
   auto numeric_list = [&](const ConditionSet& c, std::vector<std::uint32_t>& out) {
     const std::uint32_t first = add_comparisons(c.numeric);
     for (std::uint32_t i = 0; i < c.numeric.size(); ++i) out.push_back(first + i);
@@ -154,7 +173,7 @@ void TemporalRpg::build() {
   };
   for (ActionId a = 0; a < task.actions.size(); ++a) {
     const GroundAction& g = task.actions[a];
-    RelaxedAction& r = actions_[a];
+    RelaxedAction& r = graph->actions[a];
     r.durative = g.durative;
     adds(g.start, r.start_add, r.start_numeric_effects);
     if (g.durative) adds(g.end, r.end_add, r.end_numeric_effects);
@@ -174,31 +193,32 @@ void TemporalRpg::build() {
     r.start_pre.erase(std::unique(r.start_pre.begin(), r.start_pre.end()), r.start_pre.end());
     std::sort(r.end_pre.begin(), r.end_pre.end());
     r.end_pre.erase(std::unique(r.end_pre.begin(), r.end_pre.end()), r.end_pre.end());
-    for (FactId f : r.start_pre) start_watchers_[f].push_back(a);
-    for (FactId f : r.end_pre) end_watchers_[f].push_back(a);
+    for (FactId f : r.start_pre) graph->start_watchers[f].push_back(a);
+    for (FactId f : r.end_pre) graph->end_watchers[f].push_back(a);
   }
   for (std::uint32_t x = 0; x < task.axioms.size(); ++x) {
-    for (FactId f : task.axioms[x].body.positive) axiom_watchers_[f].push_back(x);
+    for (FactId f : task.axioms[x].body.positive) graph->axiom_watchers[f].push_back(x);
   }
-  goal_facts_ = task.goal.positive;  // sorted by flatten()
-  numeric_list(task.goal, goal_numeric_);
-  comparison_variables_.resize(comparisons_.size());
-  for (std::uint32_t c = 0; c < comparisons_.size(); ++c) {
-    std::vector<const GroundExpression*> stack{&comparisons_[c]->left, &comparisons_[c]->right};
+  graph->goal_facts = task.goal.positive;  // sorted by flatten()
+  numeric_list(task.goal, graph->goal_numeric);
+  graph->comparison_variables.resize(graph->comparisons.size());
+  for (std::uint32_t c = 0; c < graph->comparisons.size(); ++c) {
+    std::vector<const GroundExpression*> stack{&graph->comparisons[c]->left, &graph->comparisons[c]->right};
     while (!stack.empty()) {
       const GroundExpression* e = stack.back();
       stack.pop_back();
-      if (e->kind == GroundExpression::Kind::Variable) comparison_variables_[c].push_back(e->variable);
+      if (e->kind == GroundExpression::Kind::Variable) graph->comparison_variables[c].push_back(e->variable);
       for (const GroundExpression& o : e->operands) stack.push_back(&o);
     }
   }
-  for (ActionId a = 0; a < actions_.size(); ++a) {
-    for (const auto* list : {&actions_[a].start_numeric, &actions_[a].end_numeric}) {
+  for (ActionId a = 0; a < graph->actions.size(); ++a) {
+    for (const auto* list : {&graph->actions[a].start_numeric, &graph->actions[a].end_numeric}) {
       for (std::uint32_t c : *list) {
-        for (NumericVarId v : comparison_variables_[c]) numeric_watchers_[v].push_back(a);
+        for (NumericVarId v : graph->comparison_variables[c]) graph->numeric_watchers[v].push_back(a);
       }
     }
   }
+  return graph;
 }
 
 void TemporalRpg::Exploration::reach(FactId f, double time, Achiever achiever, double cost) {

@@ -32,7 +32,15 @@ struct TemporalRpgOptions {
 
 class TemporalRpg {
  public:
-  explicit TemporalRpg(const TaskIndex& index, TemporalRpgOptions options = {});
+  // The relaxed actions, their watchers and the goal: what the heuristic
+  // computes once per set of ground actions and goal, before any state.
+  struct Graph;
+
+  // With `like` built for a task that shares this index's ground actions,
+  // fact table and goal (a GroundingCache's derived task), its graph is
+  // shared instead of built again; otherwise it is ignored.
+  explicit TemporalRpg(const TaskIndex& index, TemporalRpgOptions options = {},
+                       std::shared_ptr<const Graph> like = nullptr);
   ~TemporalRpg();
   TemporalRpg(const TemporalRpg&) = delete;
   TemporalRpg& operator=(const TemporalRpg&) = delete;
@@ -40,6 +48,8 @@ class TemporalRpg {
   // `plan` is the partial plan that leads to `state`, for the times at which
   // its facts became true and its running actions started.
   HeuristicValue evaluate(const SearchState& state, const PartialPlan& plan);
+  const std::shared_ptr<const Graph>& graph() const { return graph_; }
+  static std::shared_ptr<const Graph> graph_for(const TaskIndex& index) { return build(index); }
 
  private:
   struct RelaxedAction {
@@ -66,20 +76,35 @@ class TemporalRpg {
   class Exploration;
   friend class Exploration;
 
-  void build();
-  std::uint32_t add_comparisons(const std::vector<GroundComparison>& comparisons);
+  static std::shared_ptr<const Graph> build(const TaskIndex& index);
+  static bool fits(const Graph& graph, const GroundTask& task);
 
   const TaskIndex& index_;
   TemporalRpgOptions options_;
-  std::vector<RelaxedAction> actions_;
-  std::vector<const GroundComparison*> comparisons_;
-  std::vector<std::vector<ActionId>> start_watchers_, end_watchers_;  // by fact
-  std::vector<std::vector<std::uint32_t>> axiom_watchers_;            // by fact
-  std::vector<std::vector<ActionId>> numeric_watchers_;                // by variable
-  std::vector<std::vector<NumericVarId>> comparison_variables_;
-  std::vector<FactId> goal_facts_;  // sorted
-  std::vector<std::uint32_t> goal_numeric_;
+  std::shared_ptr<const Graph> graph_;
+  // The graph's parts, by the names the exploration reads them.
+  const std::vector<RelaxedAction>& actions_;
+  const std::vector<const GroundComparison*>& comparisons_;
+  const std::vector<std::vector<ActionId>>& start_watchers_;
+  const std::vector<std::vector<ActionId>>& end_watchers_;
+  const std::vector<std::vector<std::uint32_t>>& axiom_watchers_;
+  const std::vector<std::vector<ActionId>>& numeric_watchers_;
+  const std::vector<std::vector<NumericVarId>>& comparison_variables_;
+  const std::vector<FactId>& goal_facts_;
+  const std::vector<std::uint32_t>& goal_numeric_;
   std::unique_ptr<Exploration> exploration_;  // working memory, reused
+};
+
+struct TemporalRpg::Graph {
+  std::shared_ptr<const GroundTask> task;  // keeps the actions and goal the pointers below point into
+  std::vector<RelaxedAction> actions;
+  std::vector<const GroundComparison*> comparisons;
+  std::vector<std::vector<ActionId>> start_watchers, end_watchers;  // by fact
+  std::vector<std::vector<std::uint32_t>> axiom_watchers;            // by fact
+  std::vector<std::vector<ActionId>> numeric_watchers;                // by variable
+  std::vector<std::vector<NumericVarId>> comparison_variables;
+  std::vector<FactId> goal_facts;  // sorted
+  std::vector<std::uint32_t> goal_numeric;
 };
 
 }  // namespace alplan

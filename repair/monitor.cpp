@@ -162,7 +162,7 @@ class Execution {
   }
 
   // Grounds the problem now, while nothing has failed, so that a repair
-  // finds the grounding ready. A problem grounding rejects is left to the
+  // finds the grounding (and the planner's structures for it) ready. A problem grounding rejects is left to the
   // repairs to report.
   void prepare_grounding() {
     const auto began = std::chrono::steady_clock::now();
@@ -170,7 +170,7 @@ class Execution {
     grounding.names.exogenous_predicates = mission_.exogenous_predicates;
     grounding_ = std::make_unique<GroundingCache>(grounding);
     try {
-      grounding_->ground(*mission_.domain, problem_);
+      *grounding_->planner_workspace() = prepare_workspace(grounding_->ground(*mission_.domain, problem_));
     } catch (const std::exception&) {
     }
     report_.preparation_seconds =

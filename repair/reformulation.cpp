@@ -144,7 +144,7 @@ PlanningOutcome plan_in_process(const pddl::Domain& domain, const pddl::Problem&
   }
   PlanningStart start = initial_start(*task);
   start.now = now;
-  PlannerResult result = Planner(task, options).plan_from(start);
+  PlannerResult result = Planner(task, options, cache ? cache->planner_workspace() : nullptr).plan_from(start);
   outcome.status = result.status;
   outcome.message = result.message;
   if (const FoundPlan* best = result.best()) outcome.plan = bind_plan(task, best->plan, options.epsilon);

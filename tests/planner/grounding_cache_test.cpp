@@ -151,3 +151,26 @@ TEST_CASE("a new fact that an action already ground would delete makes the cache
   REQUIRE(result.best());
   CHECK(result.best()->text.find("(sweep t1 a)") != std::string::npos);
 }
+
+TEST_CASE("planners on the tasks of one cache share their index and relaxed planning graph, and plan the same") {
+  const auto first = test::load_task_text(kDomain, problem("(at t1 a) (at p1 b) " + kRoads));
+  const auto moved = test::load_task_text(kDomain, problem("(at t1 b) (at p1 b) " + kRoads));
+  const auto towed = test::load_task_text(kDomain, problem("(at t1 island) (at p1 b) " + kRoads));
+  GroundingCache cache;
+  *cache.planner_workspace() = prepare_workspace(cache.ground(*first.domain, *first.problem));
+  const std::shared_ptr<const TemporalRpg::Graph> prepared = cache.planner_workspace()->graph;
+  for (const auto* loaded : {&moved, &towed}) {
+    const auto task = cache.ground(*loaded->domain, *loaded->problem);
+    REQUIRE(cache.last_reused());
+    const PlannerResult shared = Planner(task, PlannerOptions{}, cache.planner_workspace()).plan();
+    const PlannerResult alone = Planner(task, PlannerOptions{}).plan();
+    REQUIRE(shared.best());
+    REQUIRE(alone.best());
+    CHECK(shared.best()->text == alone.best()->text);
+    CHECK(&cache.planner_workspace()->index->task() == task.get());
+    if (loaded == &moved) CHECK(cache.planner_workspace()->graph == prepared);
+  }
+  // The moved truck's task shares the prepared graph; the towed one's has
+  // new actions, so its planner built a graph of its own.
+  CHECK(cache.planner_workspace()->graph != prepared);
+}
