@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "domains/home_generator.h"
+#include "domains/mission_run.h"
 #include "domains/pddl_files.h"
 #include "pddl_parser/writer.h"
 #include "planner/grounder.h"
@@ -100,7 +101,7 @@ void replan(benchmark::State& state, const Fixture& f, double now) {
 void replan_reusing_grounding(benchmark::State& state, const Fixture& f, double now) {
   const std::unique_ptr<repair::RepairStrategy> strategy = repair::make_strategy("replan", {});
   GroundingOptions options;
-  options.names.exogenous_predicates = {"available"};
+  options.names.exogenous_predicates = domains::exogenous_predicates();
   GroundingCache cache(options);
   cache.ground(f.domain, f.problem);
   repair::RepairRequest request = f.request(now);

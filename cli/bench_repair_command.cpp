@@ -94,9 +94,9 @@ void add_bench_repair_command(CLI::App* bench, int& exit_code) {
   r->add_option("--out", o->bench.out_dir, "Folder for runs.csv, runs.json, summary.md, summary.json, plots/");
   r->add_flag("!--no-grounding-reuse", o->bench.reuse_grounding,
               "Ground every repair's problem from scratch instead of reusing the grounding made when execution starts");
-  r->add_option("--adapt-expansions", o->bench.adapt_expansions,
+  r->add_option("--adapt-expansions", o->bench.strategy_options.adapt_expansions,
                 "adapt: expansions each anytime weight may spend looking for a closer plan (0: until proven)");
-  r->add_option("--adapt-min-weight", o->bench.adapt_min_weight,
+  r->add_option("--adapt-min-weight", o->bench.strategy_options.adapt_min_weight,
                 "adapt: the lowest weight of its anytime search (5, 3, 2, 1.5, 1 down to this)")
       ->check(CLI::PositiveNumber);
   r->add_flag("--external", o->bench.external, "Also replan through `alplan plan` in a child process (the paper's way)");

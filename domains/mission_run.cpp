@@ -30,11 +30,9 @@ MissionRun run_mission(const MissionInput& input, const ScenarioOptions& options
   run.initial_plan = repair::plan_text(*planned.plan);
   run.initial_planning_seconds = planned.seconds;
 
-  repair::StrategyOptions strategy_options;
+  repair::StrategyOptions strategy_options = options.strategy_options;
   strategy_options.planner.epsilon = options.epsilon;
   strategy_options.planner.time_limit = options.planning_time;
-  strategy_options.adapt_expansions = options.adapt_expansions;
-  strategy_options.adapt_min_weight = options.adapt_min_weight;
   std::unique_ptr<repair::RepairStrategy> strategy = repair::make_strategy(options.strategy, strategy_options);
   std::vector<repair::ExogenousEvent> events = repair::timed_literal_events(input.problem);
   events.insert(events.end(), input.events.begin(), input.events.end());

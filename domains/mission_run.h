@@ -5,7 +5,6 @@
 // objects) both run through here.
 #pragma once
 
-#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -13,6 +12,7 @@
 #include "domains/pddl_files.h"
 #include "repair/monitor.h"
 #include "repair/object_recognizer.h"
+#include "repair/repair_strategy.h"
 #include "repair/type_ontology.h"
 #include "repair/world_simulator.h"
 
@@ -25,8 +25,9 @@ struct ScenarioOptions {
   std::string strategy = "substitute";
   double epsilon = 0.002;
   double planning_time = 10.0;  // per planner call, seconds
-  std::uint64_t adapt_expansions = 0;  // repair::StrategyOptions
-  double adapt_min_weight = 3.0;       // repair::StrategyOptions
+  // The strategy's own knobs (adapt's search); its planner's epsilon and
+  // time come from the two fields above.
+  repair::StrategyOptions strategy_options;
   repair::MonitorOptions monitor;
 };
 

@@ -18,6 +18,11 @@ std::string GroundTask::action_name(const GroundAction& action) const {
   return s + ")";
 }
 
+bool same_ground_actions(const GroundTask& a, const GroundTask& b) {
+  return a.actions.shares_with(b.actions) && a.facts.size() == b.facts.size() &&
+         a.numeric.size() == b.numeric.size() && a.axioms.size() == b.axioms.size();
+}
+
 bool GroundTask::is_derived(FactId fact) const { return lifted->predicates[facts.key(fact).head].derived; }
 
 }  // namespace alplan

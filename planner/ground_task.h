@@ -147,4 +147,10 @@ struct GroundTask {
   bool is_derived(FactId fact) const;
 };
 
+// Whether two tasks hold the very same ground actions (not equal copies)
+// over tables of the same sizes and the same axioms' count: a grounding
+// cache's derived tasks and their reference. Structures built from one
+// task's actions then serve the other.
+bool same_ground_actions(const GroundTask& a, const GroundTask& b);
+
 }  // namespace alplan

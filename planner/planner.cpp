@@ -350,6 +350,11 @@ PlannerResult Planner::plan_from(const PlanningStart& start, const std::function
     if (outcome.status == SearchStatus::Exhausted) {
       if (outcome.root_dead_end) {
         proof = "the goal is unreachable even in the relaxation (temporal relaxed planning graph)";
+        const PartialPlan root(index, options_.epsilon, search_start.release, search_start.state.running());
+        heuristic.evaluate(search_start.state, root);
+        std::string facts;
+        for (FactId f : heuristic.unreached_goals()) facts += (facts.empty() ? "" : " ") + task_->fact_name(f);
+        if (!facts.empty()) proof += ": it never reaches " + facts;
         break;
       }
       // EHC is incomplete. A best-first search without a bound is complete

@@ -198,11 +198,7 @@ TaskIndex::TaskIndex(std::shared_ptr<const GroundTask> task) : task_(std::move(t
 }
 
 TaskIndex::TaskIndex(std::shared_ptr<const GroundTask> task, const TaskIndex& like) : task_(std::move(task)) {
-  const GroundTask& t = *task_;
-  const GroundTask& other = like.task();
-  const bool same_actions = t.actions.shares_with(other.actions) && t.facts.size() == other.facts.size() &&
-                            t.numeric.size() == other.numeric.size() && t.axioms.size() == other.axioms.size();
-  actions_ = same_actions ? like.actions_ : index_actions(t);
+  actions_ = same_ground_actions(*task_, like.task()) ? like.actions_ : index_actions(*task_);
   index_rest();
 }
 

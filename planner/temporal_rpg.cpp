@@ -139,9 +139,8 @@ TemporalRpg::~TemporalRpg() = default;
 
 bool TemporalRpg::fits(const Graph& graph, const GroundTask& task) {
   const GroundTask& built = *graph.task;
-  return task.actions.shares_with(built.actions) && task.facts.size() == built.facts.size() &&
-         task.numeric.size() == built.numeric.size() && task.axioms.size() == built.axioms.size() &&
-         task.goal.positive == built.goal.positive && task.goal.numeric.empty() && built.goal.numeric.empty();
+  return same_ground_actions(task, built) && task.goal.positive == built.goal.positive && task.goal.numeric.empty() &&
+         built.goal.numeric.empty();
 }
 
 std::shared_ptr<const TemporalRpg::Graph> TemporalRpg::build(const TaskIndex& index) {
@@ -335,6 +334,16 @@ void TemporalRpg::Exploration::apply_numeric(const std::vector<const NumericAssi
 
 HeuristicValue TemporalRpg::evaluate(const SearchState& state, const PartialPlan& plan) {
   return exploration_->run(state, plan);
+}
+
+std::vector<FactId> TemporalRpg::unreached_goals() const {
+  const Exploration& x = *exploration_;
+  std::vector<FactId> unreached;
+  for (FactId f : goal_facts_) {
+    const bool reached = x.fact_time_.stamps[f] == x.generation_ && x.fact_time_.values[f] < kInfinity;
+    if (!reached) unreached.push_back(f);
+  }
+  return unreached;
 }
 
 double TemporalRpg::Exploration::duration_of(ActionId a) {

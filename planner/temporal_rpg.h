@@ -48,6 +48,8 @@ class TemporalRpg {
   // `plan` is the partial plan that leads to `state`, for the times at which
   // its facts became true and its running actions started.
   HeuristicValue evaluate(const SearchState& state, const PartialPlan& plan);
+  // The goal facts the last evaluation never reached (a dead end's reason).
+  std::vector<FactId> unreached_goals() const;
   const std::shared_ptr<const Graph>& graph() const { return graph_; }
   static std::shared_ptr<const Graph> graph_for(const TaskIndex& index) { return build(index); }
 

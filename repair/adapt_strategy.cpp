@@ -8,7 +8,6 @@
 #include <chrono>
 #include <set>
 
-#include "planner/grounder.h"
 #include "repair/reformulation.h"
 #include "repair/repair_strategy.h"
 
@@ -63,7 +62,7 @@ class AdaptStrategy : public RepairStrategy {
     result.problem = reformulate(*request.domain, known, seen.observed, request.in_progress, request.now);
     std::shared_ptr<const GroundTask> task;
     try {
-      task = ground_for_repair(request, *request.domain, result.problem, &result.reused_grounding);
+      task = ground_problem(*request.domain, result.problem, request.grounding, &result.reused_grounding);
     } catch (const std::exception& error) {
       result.how = std::string("cannot ground the reformulated problem: ") + error.what();
       return result;

@@ -8,7 +8,6 @@
 #include <set>
 #include <sstream>
 
-#include "planner/grounder.h"
 #include "planner/happening_executor.h"
 #include "repair/reformulation.h"
 #include "repair/repair_strategy.h"
@@ -68,7 +67,7 @@ class PatchStrategy : public RepairStrategy {
     std::shared_ptr<const GroundTask> task;
     bool reused = false;
     try {
-      task = ground_for_repair(request, *request.domain, reformulated, &reused);
+      task = ground_problem(*request.domain, reformulated, request.grounding, &reused);
     } catch (const std::exception&) {
       task = nullptr;
     }

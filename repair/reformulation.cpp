@@ -90,40 +90,19 @@ pddl::Problem reformulate(const pddl::Domain& domain, const pddl::Problem& base,
   return problem;
 }
 
+std::shared_ptr<const GroundTask> ground_problem(const pddl::Domain& domain, const pddl::Problem& problem,
+                                                 GroundingCache* cache, bool* reused) {
+  std::shared_ptr<const GroundTask> task = cache ? cache->ground(domain, problem) : ground(domain, problem);
+  if (reused) *reused = cache && cache->last_reused();
+  return task;
+}
+
 std::shared_ptr<const GroundTask> without_schemas(std::shared_ptr<const GroundTask> task,
                                                   const std::set<std::string>& excluded) {
   const auto forbidden = [&](const GroundAction& a) { return excluded.count(task->lifted->actions[a.schema].name) != 0; };
   if (std::none_of(task->actions.begin(), task->actions.end(), forbidden)) return task;
   auto view = std::make_shared<GroundTask>(*task);
   std::erase_if(view->actions.mutate(), forbidden);
-  // A goal fact the remaining actions cannot reach (relaxed: deletes and
-  // numbers ignored) is lost for good: say so, as grounding without those
-  // schemas would have, rather than leave it to the search.
-  if (!view->axioms.empty()) return view;  // derived conditions are beyond this check
-  std::vector<bool> reached(view->facts.size(), false);
-  for (FactId f : view->initial_facts) reached[f] = true;
-  for (const GroundTimedLiteral& til : view->timed_literals) reached[til.fact] = reached[til.fact] || til.positive;
-  const auto holds = [&](const ConditionSet& c) {
-    return std::all_of(c.positive.begin(), c.positive.end(), [&](FactId f) { return reached[f]; });
-  };
-  std::vector<bool> applied(view->actions.size(), false);
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (std::size_t a = 0; a < view->actions.size(); ++a) {
-      const GroundAction& action = view->actions[a];
-      if (applied[a] || !holds(action.at_start) || !holds(action.over_all) || !holds(action.at_end)) continue;
-      applied[a] = changed = true;
-      for (const HappeningEffects* e : {&action.start, &action.end}) {
-        for (FactId f : e->add) reached[f] = true;
-        for (const ConditionalEffect& c : e->conditional) {
-          for (FactId f : c.add) reached[f] = true;
-        }
-      }
-    }
-  }
-  for (FactId f : view->goal.positive) {
-    if (!reached[f] && !view->goal.never) view->goal.never = view->fact_name(f);
-  }
   return view;
 }
 
@@ -134,9 +113,7 @@ PlanningOutcome plan_in_process(const pddl::Domain& domain, const pddl::Problem&
   PlanningOutcome outcome;
   std::shared_ptr<const GroundTask> task;
   try {
-    task = cache ? cache->ground(domain, problem) : ground(domain, problem);
-    outcome.reused_grounding = cache && cache->last_reused();
-    task = without_schemas(std::move(task), excluded);
+    task = without_schemas(ground_problem(domain, problem, cache, &outcome.reused_grounding), excluded);
   } catch (const std::exception& error) {
     outcome.status = PlannerResult::Status::Unsupported;
     outcome.message = std::string("cannot ground the reformulated problem: ") + error.what();

@@ -35,6 +35,11 @@ struct PlanningOutcome {
   bool reused_grounding = false;
 };
 
+// Grounds a problem, through `cache` when given; `reused` tells whether the
+// cache's reference served.
+std::shared_ptr<const GroundTask> ground_problem(const pddl::Domain& domain, const pddl::Problem& problem,
+                                                 GroundingCache* cache, bool* reused = nullptr);
+
 // Grounds the problem (through `cache` when given) and plans from `now`
 // with the in-process planner, without the actions of `excluded` schemas.
 PlanningOutcome plan_in_process(const pddl::Domain& domain, const pddl::Problem& problem, double now,

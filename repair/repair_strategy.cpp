@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "planner/grounder.h"
 #include "repair/reformulation.h"
 
 namespace alplan::repair {
@@ -125,14 +124,6 @@ RepairResult replan_from(const RepairRequest& request, const pddl::Domain& domai
   result.problem.timed_literals = problem.timed_literals;
   result.seconds = since(began);
   return result;
-}
-
-std::shared_ptr<const GroundTask> ground_for_repair(const RepairRequest& request, const pddl::Domain& domain,
-                                                    const pddl::Problem& problem, bool* reused) {
-  std::shared_ptr<const GroundTask> task =
-      request.grounding ? request.grounding->ground(domain, problem) : ground(domain, problem);
-  if (reused) *reused = request.grounding && request.grounding->last_reused();
-  return task;
 }
 
 std::vector<RecognizedObject> integrate_recognized(RepairRequest& request, pddl::Problem& problem) {

@@ -86,10 +86,6 @@ std::vector<std::string> strategy_names();
 // `excluded`: schemas whose actions the new plan may not use.
 RepairResult replan_from(const RepairRequest& request, const pddl::Domain& domain, const pddl::Problem& problem,
                          const PlannerOptions& options, const std::set<std::string>& excluded = {});
-// Grounds a reformulated problem, through the request's cache when it has
-// one; `reused` tells whether the cache's reference served.
-std::shared_ptr<const GroundTask> ground_for_repair(const RepairRequest& request, const pddl::Domain& domain,
-                                                    const pddl::Problem& problem, bool* reused = nullptr);
 // Adds the objects perception recognises at the robot's location, of types
 // the domain knows, to the problem, and what perception saw of them -- (be o
 // location) and (available o) -- to the request's observed state (the

@@ -222,11 +222,9 @@ int run_repair_bench(const RepairBenchOptions& o, std::ostream& out, std::ostrea
                                                         o.assisted_living_dir + "/paper-scenario-1.pddl");
   const repair::TypeOntology ontology = repair::TypeOntology::from_file(o.assisted_living_dir + "/types.ttl");
   const pddl::Domain domain = repair::augment_domain(*paper.domain, ontology);
-  repair::StrategyOptions strategy_options;
+  repair::StrategyOptions strategy_options = o.strategy_options;
   strategy_options.planner.epsilon = o.epsilon;
   strategy_options.planner.time_limit = o.planning_time;
-  strategy_options.adapt_expansions = o.adapt_expansions;
-  strategy_options.adapt_min_weight = o.adapt_min_weight;
   std::vector<std::unique_ptr<repair::RepairStrategy>> strategies;
   std::vector<std::string> order;
   for (const std::string& name : o.strategies) {
@@ -283,8 +281,7 @@ int run_repair_bench(const RepairBenchOptions& o, std::ostream& out, std::ostrea
       domains::ScenarioOptions so;
       so.assisted_living_dir = o.assisted_living_dir;
       so.strategy = name;
-      so.adapt_expansions = o.adapt_expansions;
-      so.adapt_min_weight = o.adapt_min_weight;
+      so.strategy_options = o.strategy_options;
       so.monitor.reuse_grounding = o.reuse_grounding;
       const domains::ScenarioRun run = domains::run_paper_scenario(scenario, so);
       for (const repair::RepairRecord& r : run.report.repairs) latencies.push_back(r.seconds * 1000.0);

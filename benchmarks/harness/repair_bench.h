@@ -14,6 +14,7 @@
 
 #include "domains/home_generator.h"
 #include "repair/random_events.h"
+#include "repair/repair_strategy.h"
 
 namespace alplan::bench {
 
@@ -37,8 +38,9 @@ struct RepairBenchOptions {
   // reuse that grounding when they can (repair/monitor.h); off, every
   // repair grounds its problem from scratch, as the external planner must.
   bool reuse_grounding = true;
-  std::uint64_t adapt_expansions = 0;  // repair::StrategyOptions
-  double adapt_min_weight = 3.0;       // repair::StrategyOptions
+  // The strategies' own knobs (adapt's search); their planner's epsilon
+  // and time come from the fields above.
+  repair::StrategyOptions strategy_options;
 };
 
 // Returns the exit code: 0, or 2 for bad options or unwritable output.

@@ -205,6 +205,20 @@ TEST_CASE("a goal whose only achiever can never start is proven unsolvable") {
   CHECK(result.message.find("no plan exists") == 0);
 }
 
+TEST_CASE("a goal the relaxation cannot reach before a deadline is named in the proof") {
+  auto task = ground_text(R"(
+(define (domain shop) (:requirements :durative-actions :timed-initial-literals)
+  (:predicates (open) (done))
+  (:durative-action work :parameters () :duration (= ?duration 5)
+    :condition (over all (open)) :effect (at end (done))))
+)", R"((define (problem p) (:domain shop) (:init (open) (at 1 (not (open)))) (:goal (done))))");
+  const PlannerResult result = solve(task);
+  CHECK(result.status == Status::Unsolvable);
+  CHECK(result.message ==
+        "no plan exists: the goal is unreachable even in the relaxation (temporal relaxed planning graph): it never "
+        "reaches (done)");
+}
+
 TEST_CASE("continuous effects are rejected with the construct and its position") {
   auto task = ground_text(R"(
 (define (domain tank) (:requirements :durative-actions :fluents :continuous-effects)
