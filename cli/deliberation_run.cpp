@@ -44,7 +44,7 @@ void print_mission(const domains::MissionRun& run) {
       std::cout << "\n[perception] the camera saw " << seen.name << " (" << seen.type << ") at " << seen.location << "\n";
     }
     if (!r.repaired) {
-      std::cout << "\nFailed repair (" << r.strategy << "):\n" << r.explanation.text();
+      std::cout << (r.deferred ? "\nNo repair yet (" : "\nFailed repair (") << r.strategy << "):\n" << r.explanation.text();
       continue;
     }
     std::cout << "\nRepaired plan (" << r.strategy << "):\n" << paper_format(r.plan_text) << "\n" << r.explanation.text();

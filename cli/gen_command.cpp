@@ -55,6 +55,8 @@ void add_gen_command(CLI::App& app, int& exit_code) {
   home->add_option("--objects", options->home.objects, "Portable objects");
   home->add_option("--stressed", options->home.stressed, "Seniors to comfort (the goals)");
   home->add_option("--seed", options->home.seed, "Random seed (same seed, same home)");
+  home->add_option("--iot-share", options->home.iot_share,
+                   "Share of the portable objects with an IoT tag (they report place and availability)");
   home->add_option("--out", options->out, "Write the problem here instead of stdout");
   home->callback([options, &exit_code] { exit_code = run(*options); });
 }

@@ -1,4 +1,4 @@
-// alplan scenario paper-1|paper-2|paper-3 [--strategy S] [--json]
+// alplan scenario paper-1|paper-2|paper-3 [--strategy S] [--observe full|iot|camera] [--json]
 // Runs one of the paper's scenarios end to end and prints the plans in the
 // paper's format (a1 : 0.000 : (move ...)), the failure, the repair and its
 // explanation. Exit 0 when the senior is comforted, 1 when the run ends with
@@ -7,6 +7,7 @@
 
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <memory>
 #include <sstream>
 
@@ -30,6 +31,7 @@ struct ScenarioCommandOptions {
   bool no_lookahead = false;
   bool proactive = false;
   bool json = false;
+  std::string observe = "iot";
 };
 
 int run(const ScenarioCommandOptions& o) {
@@ -42,7 +44,13 @@ int run(const ScenarioCommandOptions& o) {
     std::cerr << "error: unknown scenario '" << o.name << "' (known: paper-1, paper-2, paper-3)\n";
     return kExitInputError;
   }
+  const std::optional<repair::ObservationModel> model = repair::observation_model(o.observe);
+  if (!model) {
+    std::cerr << "error: --observe takes full, iot or camera; got '" << o.observe << "'\n";
+    return kExitInputError;
+  }
   domains::ScenarioOptions options;
+  options.monitor.observation.model = *model;
   options.assisted_living_dir = o.dir;
   options.strategy = o.strategy;
   options.epsilon = o.epsilon;
@@ -79,7 +87,7 @@ int run(const ScenarioCommandOptions& o) {
     for (const std::string& e : report.events) std::cout << "  " << e << "\n";
     for (const repair::RepairRecord& r : report.repairs) {
       if (!r.repaired) {
-        std::cout << "\nFailed repair (" << r.strategy << "):\n" << r.explanation.text();
+        std::cout << (r.deferred ? "\nNo repair yet (" : "\nFailed repair (") << r.strategy << "):\n" << r.explanation.text();
         continue;
       }
       std::cout << "\nRepaired plan (" << r.strategy << (r.strategy == "proactive" ? "" : ", the paper's " + scenario->repaired_figure) << "):\n"
@@ -104,6 +112,9 @@ void add_scenario_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--no-lookahead", options->no_lookahead, "Check conditions only when they are due");
   cmd->add_flag("--proactive", options->proactive, "Plan again whenever perception sees new objects; switch if better");
   cmd->add_flag("--json", options->json, "Print the run as JSON");
+  cmd->add_option("--observe", options->observe,
+                  "What the monitor sees: iot (IoT tags, wristbands, the robot's camera; the paper's), full (the "
+                  "true state), camera (the robot's camera only)");
   cmd->callback([options, &exit_code] { exit_code = run(*options); });
 }
 

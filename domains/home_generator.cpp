@@ -73,7 +73,8 @@ std::string problem_text(const GeneratedHome& home, const Layout& l, const HomeO
   for (int r = 0; r < o.robots; ++r) out += "    (be " + numbered("robot", r + 1) + " " + l.robot_rooms[static_cast<std::size_t>(r)] + ")\n";
   for (int s = 0; s < o.seniors; ++s) out += "    (be " + numbered("senior", s + 1) + " " + l.senior_rooms[static_cast<std::size_t>(s)] + ")\n";
   for (const GeneratedHome::Object& obj : home.objects) {
-    out += "    (be " + obj.name + " " + obj.room + ")" + (obj.available ? " (available " + obj.name + ")" : "") + "\n";
+    out += "    (be " + obj.name + " " + obj.room + ")" + (obj.available ? " (available " + obj.name + ")" : "") +
+           (obj.iot ? " (iot_tagged " + obj.name + ")" : "") + "\n";
   }
   for (std::size_t s = 0; s < home.stressed.size(); ++s) {
     const StressedSenior& senior = home.stressed[s];
@@ -100,6 +101,7 @@ GeneratedHome generate_home(const HomeOptions& o) {
   if (o.rooms < 4) throw std::invalid_argument("a home needs at least 4 rooms (kitchen, dining room, music room, library)");
   if (o.seniors < 1 || o.robots < 1) throw std::invalid_argument("a home needs a senior and a robot");
   if (o.stressed < 1 || o.stressed > o.seniors) throw std::invalid_argument("--stressed must be 1..seniors");
+  if (!(o.iot_share >= 0.0 && o.iot_share <= 1.0)) throw std::invalid_argument("--iot-share must be within 0..1");
   if (o.objects < 0 || o.rooms > 500 || o.seniors > 500 || o.objects > 2000 || o.robots > 50) {
     throw std::invalid_argument("the home is too large (rooms <= 500, seniors <= 500, objects <= 2000, robots <= 50)");
   }
@@ -152,6 +154,8 @@ GeneratedHome generate_home(const HomeOptions& o) {
     }
     home.objects.push_back({k.stem + two_digits(++per_kind[k.type]), k.type, room, uniform(0, 9) < 8});
   }
+  std::mt19937_64 tags(o.seed ^ 0x10700000ULL);
+  for (GeneratedHome::Object& obj : home.objects) obj.iot = std::uniform_real_distribution<double>(0.0, 1.0)(tags) < o.iot_share;
   home.problem = problem_text(home, l, o);
   return home;
 }

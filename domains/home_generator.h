@@ -19,6 +19,11 @@ struct HomeOptions {
   int robots = 1;
   int objects = 16;  // portable objects: vessels, instruments, reading, puzzles, screens
   int stressed = 1;  // seniors with a goal (the rest are calm)
+  // The share of portable objects with an IoT tag, (iot_tagged o): they
+  // report their place and availability; the rest are seen by the robot's
+  // camera only (repair/observation.h). Drawn from its own stream, so the
+  // layout and objects of a seed do not depend on it.
+  double iot_share = 0.5;
   std::uint64_t seed = 1;
 };
 
@@ -37,6 +42,7 @@ struct GeneratedHome {
   struct Object {
     std::string name, type, room;
     bool available = true;
+    bool iot = false;
   };
   std::vector<Object> objects;
 };

@@ -16,16 +16,16 @@ std::vector<PaperScenario> paper_scenarios() {
   all[0].name = "paper-1";
   all[0].problem_file = "paper-scenario-1.pddl";
   all[0].motivation = "senior1 is stressed and terrified, so the robot brings water";
-  for (int g = 1; g <= 8; ++g) all[0].events.push_back(becomes_unavailable(140.007, "glass_id0" + std::to_string(g)));
-  all[0].events.push_back(object_appears(140.007, {"mug_id01", "mug", "kitchen1", 1.0}));
+  for (int g = 1; g <= 8; ++g) all[0].events.push_back(becomes_unavailable(125.0, "glass_id0" + std::to_string(g)));
+  all[0].events.push_back(object_appears(0.0, {"mug_id01", "mug", "kitchen1", 1.0}));
   all[0].initial_figure = "Fig. 6";
   all[0].repaired_figure = "Fig. 7";
 
   all[1].name = "paper-2";
   all[1].problem_file = "paper-scenario-2.pddl";
   all[1].motivation = "senior1 is stressed and sad, so the robot brings music";
-  all[1].events = {becomes_unavailable(120.005, "violin_id01"), becomes_unavailable(120.005, "guitar_id01"),
-                   object_appears(120.005, {"clarinet_id01", "clarinet", "music_room1", 1.0})};
+  all[1].events = {becomes_unavailable(100.0, "violin_id01"), becomes_unavailable(100.0, "guitar_id01"),
+                   object_appears(0.0, {"clarinet_id01", "clarinet", "music_room1", 1.0})};
   all[1].initial_figure = "Fig. 8";
   all[1].repaired_figure = "Fig. 9";
 

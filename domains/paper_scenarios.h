@@ -2,11 +2,17 @@
 // plan (Figs. 6, 8, 10), the exogenous events, the failure the monitor
 // detects and the repaired plan (Figs. 7, 9, 11), with explanations.
 //
-// Scripted events (the paper says what happens, not exactly when):
-// 1. every drinking vessel becomes unavailable as the robot reaches the
-//    kitchen (140.007) and a mug appears there;
-// 2. the music instruments become unavailable as the robot reaches the music
-//    room (120.005) and a clarinet appears there;
+// Scripted events (the paper says what happens, not exactly when), met as
+// the paper's robot meets them under the default observation model (iot):
+// 1. a mug stands in the kitchen from the start; every glass becomes
+//    unavailable at 125, while the robot walks from the dining room to the
+//    kitchen. The glasses' IoT tags report it at once and the look-ahead
+//    foresees the failure, but nothing known can replace them, so the
+//    robot carries on; at 140.008 it is in the kitchen, its camera sees
+//    the mug, the carry's condition is due and fails, and substitution
+//    repairs with the mug (Fig. 7);
+// 2. likewise a clarinet in the music room, the instruments unavailable at
+//    100 while the robot walks there, met at 120.006 (Fig. 9);
 // 3. the book and the magazine become unavailable as execution begins, and
 //    nothing new appears: the monitor's look-ahead sees at once that the
 //    book will not be there, and the repair falls back on a suggestion.

@@ -92,6 +92,13 @@ class AdaptStrategy : public RepairStrategy {
     } else {
       result.how = "the planner found no plan from the observed state: " + planned.message;
     }
+    if (!cost) {
+      // Without action costs there is nothing to penalise change with: say
+      // so, and name what was done instead.
+      result.fallback = "replan";
+      result.how = "adapt needs a total-cost function to penalise changes to the old plan and the domain has "
+                   "none, so it fell back to replan (anytime search): " + result.how;
+    }
     result.problem.init = known.init;
     result.problem.numeric_init = known.numeric_init;
     result.problem.timed_literals = known.timed_literals;

@@ -38,6 +38,14 @@ struct CommittedEnd {
   std::shared_ptr<const GroundTask> task;
   ActionId action = 0;
   double end = 0.0;
+  double duration = 0.0;
+};
+
+// A foreseen failure no repair could mend yet, and what the monitor had
+// seen when it tried (Belief's changes counted).
+struct DeferredFailure {
+  std::string action, condition;
+  std::size_t news = 0;
 };
 
 // The next time to look: the next happening after t, or t + step.
@@ -79,7 +87,10 @@ nlohmann::json ExecutionReport::json() const {
                             {"action", r.failure.action},
                             {"condition", r.failure.condition},
                             {"foreseen", r.foreseen},
+                            {"deferred", r.deferred},
                             {"strategy", r.strategy},
+                            {"fallback", r.fallback},
+                            {"perception_seconds", r.perception_seconds},
                             {"repaired", r.repaired},
                             {"seconds", r.seconds},
                             {"planner_calls", r.planner_calls},
@@ -89,7 +100,8 @@ nlohmann::json ExecutionReport::json() const {
                             {"explanation", r.explanation.json()}});
   }
   return {{"initial_plan", initial_plan_text}, {"preparation_seconds", preparation_seconds}, {"repairs", repairs_json}, {"goal_reached", goal_reached},
-          {"end_time", end_time}, {"outcome", outcome}, {"events", events}};
+          {"end_time", end_time}, {"outcome", outcome}, {"events", events},
+          {"observation", to_string(observation)}, {"sightings", sightings}};
 }
 
 namespace {
@@ -100,8 +112,10 @@ class Execution {
   Execution(const MonitorOptions& options, const Mission& mission, ExecutingPlan plan, World& world,
             RepairStrategy& strategy, ObjectRecognizer* recognizer, const TypeOntology* ontology)
       : options_(options), mission_(mission), world_(world), strategy_(strategy), recognizer_(recognizer),
-        ontology_(ontology), problem_(mission.problem), motivation_(mission.motivation) {
+        ontology_(ontology), problem_(mission.problem), motivation_(mission.motivation),
+        belief_(mission.problem, options.observation) {
     report_.initial_plan_text = plan_text(plan);
+    report_.observation = options.observation.model;
     goal_ = problem_.goal ? pddl::write_condition(*problem_.goal) : "(and)";
     adopt(with_all_conditions(plan));
     if (options_.reuse_grounding) prepare_grounding();
@@ -111,7 +125,8 @@ class Execution {
     double t = plan_.steps.empty() ? 0.0 : std::min(0.0, plan_.steps.front().start);
     for (int guard = 0; guard < 1000000; ++guard) {
       world_.advance(t);
-      const WorldState observed = world_.observe();
+      if (belief_.observe(world_.observe())) ++news_;
+      const WorldState observed = belief_.state();
       const ExplicitState state = mapping_->to_explicit(observed);
       std::optional<Violation> failure = timeline_->check_due(t, state);
       bool foreseen = false;
@@ -123,9 +138,11 @@ class Execution {
         failure = timeline_->check_goal(t, state);
         if (!failure) return done(true, "the goal " + goal_ + " holds at " + time_text(t), t);
       }
+      if (failure && foreseen && waiting_for_news(*failure)) failure.reset();
       if (failure) {
-        if (!repair(*failure, foreseen, observed, t)) return report_;
-        continue;  // look again at the same time, with the new plan
+        const Attempt attempt = repair(*failure, foreseen, observed, t);
+        if (attempt == Attempt::Ended) return report_;
+        if (attempt == Attempt::Repaired) continue;  // look again at the same time, with the new plan
       }
       if (options_.proactive && look_for_alternative(observed, t)) continue;
       dispatch(t);
@@ -142,6 +159,7 @@ class Execution {
   }
 
   ExecutionReport done(bool reached, const std::string& outcome, double t) {
+    report_.sightings = belief_.sightings().size();
     report_.goal_reached = reached;
     report_.end_time = t;
     report_.outcome = outcome;
@@ -152,9 +170,10 @@ class Execution {
   void adopt(ExecutingPlan plan) {
     for (std::size_t s = 0; s < plan_.steps.size(); ++s) {
       if (progress_.started[s] && !progress_.ended[s]) {
-        committed_.push_back({plan_.task, plan_.steps[s].action, plan_.steps[s].end()});
+        committed_.push_back({plan_.task, plan_.steps[s].action, plan_.steps[s].end(), plan_.steps[s].duration});
       }
     }
+    deferred_.reset();
     plan_ = std::move(plan);
     timeline_ = std::make_unique<Timeline>(plan_);
     mapping_ = std::make_unique<StateMapping>(*plan_.task);
@@ -187,6 +206,7 @@ class Execution {
     r.in_progress = world_.in_progress();
     r.now = t;
     r.robot_location = location_of(observed, mission_.robot);
+    r.sightings = belief_.sightings();
     r.recognizer = recognizer_;
     r.ontology = ontology_;
     r.grounding = grounding_.get();
@@ -202,6 +222,8 @@ class Execution {
     record.failure = failure;
     record.foreseen = foreseen;
     record.strategy = strategy;
+    record.fallback = result.fallback;
+    record.perception_seconds = result.perception_seconds;
     record.repaired = result.repaired;
     record.seconds = result.seconds;
     record.planner_calls = result.planner_calls;
@@ -219,13 +241,25 @@ class Execution {
     return record;
   }
 
-  // False when the run ends here (no repair, or too many).
-  bool repair(const Violation& failure, bool foreseen, const WorldState& observed, double t) {
+  enum class Attempt : unsigned char { Repaired, Deferred, Ended };
+
+  // A foreseen failure tried before, with nothing new seen since.
+  bool waiting_for_news(const Violation& failure) const {
+    return deferred_ && deferred_->action == failure.action && deferred_->condition == failure.condition &&
+           deferred_->news == news_;
+  }
+
+  std::size_t final_repairs() const {
+    return static_cast<std::size_t>(std::count_if(report_.repairs.begin(), report_.repairs.end(),
+                                                  [](const RepairRecord& r) { return !r.deferred; }));
+  }
+
+  Attempt repair(const Violation& failure, bool foreseen, const WorldState& observed, double t) {
     report_.events.push_back(time_text(t) + ": failure: " + describe_failure(failure, foreseen));
-    if (static_cast<int>(report_.repairs.size()) >= options_.max_repairs) {
-      done(false, "gave up after " + std::to_string(report_.repairs.size()) + " repairs: " +
+    if (static_cast<int>(final_repairs()) >= options_.max_repairs) {
+      done(false, "gave up after " + std::to_string(final_repairs()) + " repairs: " +
                       describe_failure(failure, foreseen), t);
-      return false;
+      return Attempt::Ended;
     }
     // Why the plan that failed was made, before goal generation moves on.
     const std::string why = why_the_plan();
@@ -236,15 +270,27 @@ class Execution {
       std::string& how = report_.repairs.back().explanation.how;
       how = *new_goal + "; " + how;
     }
+    if (!result.repaired && foreseen && options_.defer_foreseen) {
+      // Not due yet: carry on and look again when something new is seen.
+      RepairRecord& record = report_.repairs.back();
+      record.deferred = true;
+      record.explanation.how += "; the failure is not due yet, so the robot carries on and the monitor will try "
+                                "again when it sees something new";
+      deferred_ = DeferredFailure{failure.action, failure.condition, news_};
+      report_.events.push_back(time_text(t) + ": " + strategy_.name() + " cannot repair yet: " + result.how +
+                               "; carrying on");
+      return Attempt::Deferred;
+    }
     if (!result.repaired) {
       report_.events.push_back(time_text(t) + ": " + strategy_.name() + " could not repair: " + result.how);
       done(false, "no repair: " + result.how, t);
-      return false;
+      return Attempt::Ended;
     }
     report_.events.push_back(time_text(t) + ": repaired by " + strategy_.name() + ": " + result.how);
+    for (const RecognizedObject& o : result.integrated) belief_.know(o.name);
     problem_ = std::move(result.problem);
     adopt(with_all_conditions(*result.plan));
-    return true;
+    return Attempt::Repaired;
   }
 
   // Is the goal still the right one? An emotion may have changed. Returns
@@ -292,6 +338,7 @@ class Execution {
                  ": " + describe_remedy(*result.plan, t);
     report_.repairs.push_back(record_of(none, false, result, "proactive", t, why_the_plan()));
     report_.events.push_back(time_text(t) + ": proactive: " + result.how);
+    for (const RecognizedObject& o : result.integrated) belief_.know(o.name);
     problem_ = std::move(result.problem);
     adopt(with_all_conditions(*result.plan));
     return true;
@@ -304,14 +351,16 @@ class Execution {
         ++c;
         continue;
       }
-      world_.end_action(*c->task, c->action, t);
+      if (world_.end_action(*c->task, c->action, t)) belief_.act(*c->task, c->action, false, c->duration);
       c = committed_.erase(c);
     }
     for (std::size_t s = 0; s < plan_.steps.size(); ++s) {
       const ScheduledAction& a = plan_.steps[s];
       const bool durative = plan_.task->actions[a.action].durative;
       if (durative && progress_.started[s] && !progress_.ended[s] && std::abs(a.end() - t) <= tolerance()) {
-        if (!world_.end_action(*plan_.task, a.action, t)) {
+        if (world_.end_action(*plan_.task, a.action, t)) {
+          belief_.act(*plan_.task, a.action, false, a.duration);
+        } else {
           report_.events.push_back(time_text(t) + ": " + a.name + " has not finished as planned");
         }
         progress_.ended[s] = true;
@@ -321,6 +370,7 @@ class Execution {
       const ScheduledAction& a = plan_.steps[s];
       if (progress_.started[s] || std::abs(a.start - t) > tolerance()) continue;
       world_.start_action(*plan_.task, a.action, t, a.duration);
+      belief_.act(*plan_.task, a.action, true, a.duration);
       progress_.started[s] = true;
       if (!plan_.task->actions[a.action].durative) progress_.ended[s] = true;
       report_.events.push_back(time_text(t) + ": start " + a.name);
@@ -345,6 +395,9 @@ class Execution {
   std::vector<CommittedEnd> committed_;
   ExecutionReport report_;
   std::unique_ptr<GroundingCache> grounding_;
+  Belief belief_;
+  std::size_t news_ = 0;  // observations that showed something new
+  std::optional<DeferredFailure> deferred_;
 };
 
 }  // namespace

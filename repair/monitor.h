@@ -17,6 +17,7 @@
 #include "pddl_parser/ast.h"
 #include "repair/executing_plan.h"
 #include "repair/explanation.h"
+#include "repair/observation.h"
 #include "repair/repair_strategy.h"
 #include "repair/world.h"
 #include "planner/planner.h"
@@ -37,6 +38,14 @@ struct MonitorOptions {
   // repairs reuse that grounding while the observed world stays within it
   // (planner/grounding_cache.h); off, every repair grounds from scratch.
   bool reuse_grounding = true;
+  // What the monitor can see of the world (observation.h): it checks the
+  // plan against its belief, not against the world's true state.
+  ObservationOptions observation;
+  // A failure foreseen by looking ahead that no repair can mend yet is not
+  // final while its condition is not due: the robot carries on, and the
+  // monitor tries again whenever it sees something new (the robot reaching
+  // the room where a substitute stands) and once more when it falls due.
+  bool defer_foreseen = true;
 };
 
 // What the deliberation is about: the domain (with the ontology's types),
@@ -59,7 +68,10 @@ struct Mission {
 struct RepairRecord {
   Violation failure;
   bool foreseen = false;  // found by looking ahead
+  // Not mended yet, but not due either: execution went on (defer_foreseen).
+  bool deferred = false;
   std::string strategy;
+  std::string fallback;  // what the strategy did instead, when it could not do its own (RepairResult)
   bool repaired = false;
   double seconds = 0.0;
   int planner_calls = 0;
@@ -67,6 +79,7 @@ struct RepairRecord {
   std::string plan_text;  // the new plan, IPC format
   std::size_t plan_distance = 0;  // actions removed plus added (Fox et al. 2006)
   std::vector<RecognizedObject> integrated;
+  double perception_seconds = 0.0;  // of `seconds`
   Explanation explanation;
 };
 
@@ -78,6 +91,8 @@ struct ExecutionReport {
   bool goal_reached = false;
   double end_time = 0.0;
   std::string outcome;  // one sentence
+  ObservationModel observation = ObservationModel::Iot;
+  std::size_t sightings = 0;  // things the camera saw that the problem did not name
   std::vector<std::string> events;  // what happened, in order, for people
 
   nlohmann::json json() const;

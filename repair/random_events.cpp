@@ -10,9 +10,11 @@ namespace alplan::repair {
 namespace {
 
 constexpr std::pair<RandomEventKind, const char*> kNames[] = {
-    {RandomEventKind::Unavailable, "unavailable"}, {RandomEventKind::NewObject, "appears"},
-    {RandomEventKind::SeniorMoves, "moves"},       {RandomEventKind::EmotionChanges, "emotion"},
-    {RandomEventKind::Overrun, "overrun"},
+    {RandomEventKind::Unavailable, "unavailable"},   {RandomEventKind::NewObject, "appears"},
+    {RandomEventKind::SeniorMoves, "moves"},         {RandomEventKind::EmotionChanges, "emotion"},
+    {RandomEventKind::Overrun, "overrun"},           {RandomEventKind::FailsOnArrival, "arrival"},
+    {RandomEventKind::FailsIotReported, "iot"},      {RandomEventKind::SiblingPresent, "sibling"},
+    {RandomEventKind::TwoFailures, "two"},
 };
 
 // The index-th word of "(carry robot1 glass_id05 kitchen1)": 0 the schema.
@@ -54,6 +56,12 @@ std::vector<RandomEventKind> all_random_event_kinds() {
   return all;
 }
 
+std::vector<RandomEventKind> study_event_kinds() {
+  using K = RandomEventKind;
+  return {K::FailsOnArrival, K::FailsIotReported, K::SiblingPresent, K::SeniorMoves,
+          K::EmotionChanges, K::Overrun,          K::TwoFailures};
+}
+
 // The steps of the plan each kind of event can hit.
 struct RandomEventGenerator::PlanSteps {
   std::vector<const ScheduledAction*> carries, handovers, moves;
@@ -73,6 +81,12 @@ std::size_t RandomEventGenerator::index(std::size_t size) {
 
 std::vector<ExogenousEvent> RandomEventGenerator::draw(const ExecutingPlan& plan, const pddl::Problem& problem,
                                                        const TypeOntology* ontology, int serial) {
+  std::optional<RandomFailure> failure = draw_failure(plan, problem, ontology, serial);
+  return failure ? failure->events : std::vector<ExogenousEvent>{};
+}
+
+std::optional<RandomFailure> RandomEventGenerator::draw_failure(const ExecutingPlan& plan, const pddl::Problem& problem,
+                                                                const TypeOntology* ontology, int serial) {
   PlanSteps steps;
   for (const ScheduledAction& s : plan.steps) {
     const std::string schema = word(s.name, 0);
@@ -81,18 +95,135 @@ std::vector<ExogenousEvent> RandomEventGenerator::draw(const ExecutingPlan& plan
     if (schema == options_.move_schema) steps.moves.push_back(&s);
     steps.end = std::max(steps.end, s.end());
   }
-  if (options_.kinds.empty()) return {};
-  const int last = static_cast<int>(options_.kinds.size()) - 1;
-  const RandomEventKind kind = options_.kinds[static_cast<std::size_t>(std::uniform_int_distribution<int>(0, last)(random_))];
-  std::vector<ExogenousEvent> events;
-  switch (kind) {
-    case RandomEventKind::Unavailable: events = unavailable(steps, problem, ontology, serial); break;
-    case RandomEventKind::NewObject: events = new_object(steps, ontology, serial); break;
-    case RandomEventKind::SeniorMoves: events = senior_moves(steps, problem); break;
-    case RandomEventKind::EmotionChanges: events = emotion_changes(steps, problem); break;
-    case RandomEventKind::Overrun: break;
+  const std::vector<RandomEventKind> kinds = possible(steps, problem, ontology, options_.kinds);
+  if (kinds.empty()) return std::nullopt;
+  RandomFailure failure;
+  failure.kind = kinds[index(kinds.size())];
+  failure.events = events_of(failure.kind, steps, problem, ontology, serial);
+  return failure;
+}
+
+std::vector<RandomEventKind> RandomEventGenerator::possible(const PlanSteps& steps, const pddl::Problem& problem,
+                                                            const TypeOntology* ontology,
+                                                            const std::vector<RandomEventKind>& kinds) const {
+  using K = RandomEventKind;
+  std::vector<K> out;
+  for (K kind : kinds) {
+    bool occasion = false;
+    switch (kind) {
+      case K::Unavailable: occasion = !steps.carries.empty(); break;
+      case K::NewObject: occasion = ontology && !ontology->augmented().empty() &&
+                                    (!steps.carries.empty() || !steps.handovers.empty()); break;
+      case K::SeniorMoves:
+      case K::EmotionChanges: occasion = !steps.handovers.empty(); break;
+      case K::Overrun: occasion = !steps.moves.empty(); break;
+      case K::FailsOnArrival: occasion = !carries(steps, problem, false).empty(); break;
+      case K::FailsIotReported: occasion = !carries(steps, problem, true).empty(); break;
+      case K::SiblingPresent: {
+        for (const ScheduledAction* c : carries(steps, problem, false)) {
+          occasion = occasion || (ontology && !siblings(problem, *ontology, word(c->name, 2)).empty());
+        }
+        break;
+      }
+      case K::TwoFailures: {
+        std::vector<K> others;
+        for (K k : kinds) {
+          if (k != K::TwoFailures) others.push_back(k);
+        }
+        occasion = possible(steps, problem, ontology, others).size() >= 2;
+        break;
+      }
+    }
+    if (occasion) out.push_back(kind);
   }
-  return events.empty() ? overrun(steps) : events;
+  return out;
+}
+
+std::vector<ExogenousEvent> RandomEventGenerator::events_of(RandomEventKind kind, const PlanSteps& steps,
+                                                            const pddl::Problem& problem, const TypeOntology* ontology,
+                                                            int serial) {
+  using K = RandomEventKind;
+  switch (kind) {
+    case K::Unavailable: return unavailable(steps, problem, ontology, serial);
+    case K::NewObject: return new_object(steps, ontology, serial);
+    case K::SeniorMoves: return senior_moves(steps, problem);
+    case K::EmotionChanges: return emotion_changes(steps, problem);
+    case K::Overrun: return overrun(steps);
+    case K::FailsOnArrival: return fails(steps, problem, false);
+    case K::FailsIotReported: return fails(steps, problem, true);
+    case K::SiblingPresent: return sibling_present(steps, problem, *ontology, serial);
+    case K::TwoFailures: return two_failures(steps, problem, ontology, serial);
+  }
+  return {};
+}
+
+// The carries of objects with (iot true) or without (false) an IoT tag.
+std::vector<const ScheduledAction*> RandomEventGenerator::carries(const PlanSteps& steps, const pddl::Problem& problem,
+                                                                  std::optional<bool> iot) const {
+  std::vector<const ScheduledAction*> out;
+  for (const ScheduledAction* c : steps.carries) {
+    if (!iot || holds(problem, options_.iot_predicate, word(c->name, 2)) == *iot) out.push_back(c);
+  }
+  return out;
+}
+
+std::vector<std::string> RandomEventGenerator::siblings(const pddl::Problem& problem, const TypeOntology& ontology,
+                                                        const std::string& object) const {
+  const std::string type = object_type(problem, object).value_or("");
+  std::vector<std::string> out;
+  for (const std::string& a : ontology.augmented()) {
+    if (ontology.parent(a) == ontology.parent(type)) out.push_back(a);
+  }
+  return out;
+}
+
+// A carried object, tagged or not, becomes unavailable before the carry.
+std::vector<ExogenousEvent> RandomEventGenerator::fails(const PlanSteps& steps, const pddl::Problem& problem, bool iot) {
+  const std::vector<const ScheduledAction*> candidates = carries(steps, problem, iot);
+  if (candidates.empty()) return {};
+  const ScheduledAction& carry = *candidates[index(candidates.size())];
+  return {becomes_unavailable(uniform(0.0, std::max(0.0, carry.start - 0.001)), word(carry.name, 2))};
+}
+
+// An untagged carried object fails; an object of a sibling type stands
+// from the start in the pickup room or in a room the robot enters on its
+// way there (the moves before the carry).
+std::vector<ExogenousEvent> RandomEventGenerator::sibling_present(const PlanSteps& steps, const pddl::Problem& problem,
+                                                                  const TypeOntology& ontology, int serial) {
+  std::vector<const ScheduledAction*> candidates;
+  for (const ScheduledAction* c : carries(steps, problem, false)) {
+    if (!siblings(problem, ontology, word(c->name, 2)).empty()) candidates.push_back(c);
+  }
+  if (candidates.empty()) return {};
+  const ScheduledAction& carry = *candidates[index(candidates.size())];
+  const std::string object = word(carry.name, 2);
+  std::vector<std::string> rooms{word(carry.name, 3)};
+  for (const ScheduledAction* m : steps.moves) {
+    const std::string to = word(m->name, 3);
+    if (m->end() <= carry.start && std::find(rooms.begin(), rooms.end(), to) == rooms.end()) rooms.push_back(to);
+  }
+  const std::vector<std::string> types = siblings(problem, ontology, object);
+  const std::string type = types[index(types.size())];
+  const std::string room = uniform(0.0, 1.0) < 0.5 ? rooms.front() : rooms[index(rooms.size())];
+  return {becomes_unavailable(uniform(0.0, std::max(0.0, carry.start - 0.001)), object),
+          object_appears(0.0, {type + "_new" + std::to_string(serial), type, room, 1.0})};
+}
+
+std::vector<ExogenousEvent> RandomEventGenerator::two_failures(const PlanSteps& steps, const pddl::Problem& problem,
+                                                               const TypeOntology* ontology, int serial) {
+  std::vector<RandomEventKind> others;
+  for (RandomEventKind k : options_.kinds) {
+    if (k != RandomEventKind::TwoFailures) others.push_back(k);
+  }
+  std::vector<RandomEventKind> kinds = possible(steps, problem, ontology, others);
+  if (kinds.size() < 2) return {};
+  const std::size_t first = index(kinds.size());
+  std::vector<ExogenousEvent> events = events_of(kinds[first], steps, problem, ontology, serial);
+  kinds.erase(kinds.begin() + static_cast<std::ptrdiff_t>(first));
+  for (ExogenousEvent& e : events_of(kinds[index(kinds.size())], steps, problem, ontology, serial + 100)) {
+    events.push_back(std::move(e));
+  }
+  return events;
 }
 
 // An object the plan will carry becomes unavailable before the carry; half
@@ -105,13 +236,9 @@ std::vector<ExogenousEvent> RandomEventGenerator::unavailable(const PlanSteps& s
   const double at = uniform(0.0, std::max(0.0, carry.start - 0.001));
   std::vector<ExogenousEvent> events{becomes_unavailable(at, object)};
   if (!ontology) return events;
-  const std::string type = object_type(problem, object).value_or("");
-  std::vector<std::string> siblings;
-  for (const std::string& a : ontology->augmented()) {
-    if (ontology->parent(a) == ontology->parent(type)) siblings.push_back(a);
-  }
-  if (!siblings.empty() && uniform(0.0, 1.0) < options_.sibling_appears) {
-    const std::string t = siblings[index(siblings.size())];
+  const std::vector<std::string> types = siblings(problem, *ontology, object);
+  if (!types.empty() && uniform(0.0, 1.0) < options_.sibling_appears) {
+    const std::string t = types[index(types.size())];
     events.push_back(object_appears(at, {t + "_new" + std::to_string(serial), t, room, 1.0}));
   }
   return events;
@@ -180,6 +307,7 @@ std::vector<ExogenousEvent> RandomEventGenerator::emotion_changes(const PlanStep
   return events;
 }
 
+// A move the plan makes takes longer than planned.
 std::vector<ExogenousEvent> RandomEventGenerator::overrun(const PlanSteps& steps) {
   if (steps.moves.empty()) return {};
   const ScheduledAction& move = *steps.moves[index(steps.moves.size())];

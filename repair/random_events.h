@@ -1,15 +1,25 @@
-// Random exogenous events for the world simulator (world_simulator.h): the
-// issue's five kinds — an object becomes unavailable, a new (non-IoT) object
-// appears at a location, a senior moves, an emotion changes, an action takes
-// longer than planned — drawn among those a given plan makes possible, so
-// that they matter to it. Seeded: the same options, plan and problem give
-// the same events, so strategies can be compared on the same failures.
+// Random exogenous events for the world simulator (world_simulator.h),
+// drawn among those a given plan makes possible, so that they matter to it.
+// Seeded: the same options, plan and problem give the same events, so every
+// strategy meets the same failures (bench repair's paired design).
 //
-// Each kind in `kinds` is equally likely; a kind the plan gives no occasion
-// for (no carry to spoil, no senior to move) becomes an overrun of one of
-// its moves. With the default kinds and the same seed the draws are those
-// `bench repair` made before this file existed, so recorded results stay
-// reproducible.
+// The failure kinds a repair study needs, told apart by how the robot
+// learns of them (repair/observation.h):
+// - arrival: an object without an IoT tag that the plan will carry becomes
+//   unavailable; the robot finds out when it reaches the room;
+// - iot: an IoT-tagged object the plan will carry becomes unavailable and
+//   its tag says so at once;
+// - sibling: as arrival, and an object of a sibling type (the ontology's
+//   augmented types: a mug for a glass) that the problem does not list
+//   stands in that room, or in a room the robot passes on its way there;
+// - moves: the senior to be served walks to another private room;
+// - emotion: that senior's emotion changes, so the goal changes;
+// - overrun: a move takes longer than planned;
+// - two: two failures of different kinds in one run;
+// and two older ones: unavailable (any carried object, a sibling beside it
+// half the time) and appears (a new object, no failure).
+// Each draw picks uniformly among the requested kinds that the plan gives
+// an occasion for, and says which it drew; with none, nothing is drawn.
 #pragma once
 
 #include <cstdint>
@@ -27,17 +37,23 @@
 
 namespace alplan::repair {
 
-enum class RandomEventKind : unsigned char { Unavailable, NewObject, SeniorMoves, EmotionChanges, Overrun };
+enum class RandomEventKind : unsigned char {
+  Unavailable, NewObject, SeniorMoves, EmotionChanges, Overrun, FailsOnArrival, FailsIotReported, SiblingPresent,
+  TwoFailures
+};
 
-// "unavailable", "appears", "moves", "emotion", "overrun".
+// "unavailable", "appears", "moves", "emotion", "overrun", "arrival", "iot",
+// "sibling", "two".
 std::string to_string(RandomEventKind kind);
 std::optional<RandomEventKind> random_event_kind(const std::string& name);
 std::vector<RandomEventKind> all_random_event_kinds();
+// The kinds of the repair study: arrival, iot, sibling, moves, emotion,
+// overrun, two.
+std::vector<RandomEventKind> study_event_kinds();
 
 struct RandomEventOptions {
   std::uint64_t seed = 1;
-  std::vector<RandomEventKind> kinds{RandomEventKind::Unavailable, RandomEventKind::SeniorMoves,
-                                     RandomEventKind::Overrun};
+  std::vector<RandomEventKind> kinds = study_event_kinds();
   // With Unavailable: the chance that an object of a sibling type (the
   // ontology's augmented types) appears where the lost one was.
   double sibling_appears = 0.5;
@@ -47,6 +63,7 @@ struct RandomEventOptions {
   std::string move_schema = "move";
   std::set<std::string> handover_schemas{"give", "suggest_entertainment2"};  // (robot senior item location)
   std::set<std::string> senior_room_types{"bedroom", "sunroom"};
+  std::string iot_predicate = "iot_tagged";
   // Emotions and the window predicate each needs open: a senior whose
   // emotion changes gets the new emotion's window if it was closed.
   std::vector<std::string> emotions{"terrified", "sad", "bored"};
@@ -54,13 +71,22 @@ struct RandomEventOptions {
       {"terrified", "hydration_time"}, {"sad", "comfort_time"}, {"bored", "comfort_time"}};
 };
 
+// One draw: its kind and the events that make it.
+struct RandomFailure {
+  RandomEventKind kind = RandomEventKind::Overrun;
+  std::vector<ExogenousEvent> events;
+};
+
 class RandomEventGenerator {
  public:
   explicit RandomEventGenerator(RandomEventOptions options);
 
-  // The events of one failure against `plan`, made for `problem` (its
-  // objects, types and initial state). `serial` numbers new objects
-  // (mug_new1, ...). Empty when the plan offers nothing to disturb.
+  // One failure against `plan`, made for `problem` (its objects, types,
+  // IoT tags and initial state). `serial` numbers new objects (mug_new1,
+  // ...). Nothing when the plan offers no occasion for any requested kind.
+  std::optional<RandomFailure> draw_failure(const ExecutingPlan& plan, const pddl::Problem& problem,
+                                            const TypeOntology* ontology, int serial);
+  // The events of draw_failure, or none.
   std::vector<ExogenousEvent> draw(const ExecutingPlan& plan, const pddl::Problem& problem,
                                    const TypeOntology* ontology, int serial);
 
@@ -68,6 +94,19 @@ class RandomEventGenerator {
   struct PlanSteps;
   double uniform(double lo, double hi);
   std::size_t index(std::size_t size);
+  std::vector<RandomEventKind> possible(const PlanSteps& steps, const pddl::Problem& problem,
+                                        const TypeOntology* ontology, const std::vector<RandomEventKind>& kinds) const;
+  std::vector<ExogenousEvent> events_of(RandomEventKind kind, const PlanSteps& steps, const pddl::Problem& problem,
+                                        const TypeOntology* ontology, int serial);
+  std::vector<const ScheduledAction*> carries(const PlanSteps& steps, const pddl::Problem& problem,
+                                              std::optional<bool> iot) const;
+  std::vector<ExogenousEvent> fails(const PlanSteps& steps, const pddl::Problem& problem, bool iot);
+  std::vector<ExogenousEvent> sibling_present(const PlanSteps& steps, const pddl::Problem& problem,
+                                              const TypeOntology& ontology, int serial);
+  std::vector<ExogenousEvent> two_failures(const PlanSteps& steps, const pddl::Problem& problem,
+                                           const TypeOntology* ontology, int serial);
+  std::vector<std::string> siblings(const pddl::Problem& problem, const TypeOntology& ontology,
+                                    const std::string& object) const;
   std::vector<ExogenousEvent> unavailable(const PlanSteps& steps, const pddl::Problem& problem,
                                           const TypeOntology* ontology, int serial);
   std::vector<ExogenousEvent> new_object(const PlanSteps& steps, const TypeOntology* ontology, int serial);

@@ -58,8 +58,14 @@ class SubstituteStrategy : public RepairStrategy {
   RepairResult repair(const RepairRequest& request) override {
     pddl::Problem problem = *request.problem;
     RepairRequest seen = request;
+    // Substitution's latency includes asking perception: it is what the
+    // strategy depends on, and replan does without it.
+    const auto began = std::chrono::steady_clock::now();
     const std::vector<RecognizedObject> integrated = integrate_recognized(seen, problem);
+    const double perception = since(began);
     RepairResult result = replan_from(seen, *request.domain, problem, options_.planner);
+    result.perception_seconds = perception;
+    result.seconds += perception;
     result.integrated = integrated;
     if (!result.repaired) return result;
     std::string how;
@@ -71,7 +77,11 @@ class SubstituteStrategy : public RepairStrategy {
         const std::vector<std::string> lineage = request.ontology->lineage(o.type);
         if (lineage.size() > 1) kind += ", a kind of " + lineage[1];
       }
-      how += "perception recognised " + o.name + " (" + kind + ") in " + o.location + (in_plan ? " and the new plan uses it; " : ", which the new plan does not need; ");
+      const std::string when = o.seen_at >= 0.0 && o.seen_at + 1e-9 < request.now
+                                   ? " (seen at " + seconds_text(o.seen_at) + ")"
+                                   : "";
+      how += "perception recognised " + o.name + " (" + kind + ") in " + o.location + when +
+             (in_plan ? " and the new plan uses it; " : ", which the new plan does not need; ");
     }
     if (integrated.empty()) how = "perception recognised no new object; ";
     result.how = how + describe_remedy(*result.plan, request.now);
@@ -131,7 +141,14 @@ std::vector<RecognizedObject> integrate_recognized(RepairRequest& request, pddl:
   if (!request.recognizer) return integrated;
   std::set<std::string> types{"object"};
   for (const pddl::TypeDeclaration& t : request.domain->types) types.insert(t.name);
-  for (const RecognizedObject& o : request.recognizer->recognize(request.observed, request.robot_location)) {
+  // What the camera sees now first (nearest), then what it saw on the way.
+  std::vector<RecognizedObject> candidates = request.recognizer->recognize(request.observed, request.robot_location);
+  for (const RecognizedObject& o : request.recognizer->recognize_sightings(request.sightings)) {
+    const bool again = std::any_of(candidates.begin(), candidates.end(),
+                                   [&](const RecognizedObject& c) { return c.name == o.name; });
+    if (!again) candidates.push_back(o);
+  }
+  for (const RecognizedObject& o : candidates) {
     if (object_type(problem, o.name) || !types.count(o.type)) continue;
     pddl::TypedName object;
     object.name = o.name;

@@ -54,6 +54,9 @@ struct RepairRequest {
   double now = 0.0;
   std::string robot_location;              // where the camera looks
   ObjectRecognizer* recognizer = nullptr;  // may be absent
+  // What the camera saw on the way that the problem does not name (the
+  // monitor's belief): a substitute may stand in a room passed earlier.
+  std::vector<Sighting> sightings;
   const TypeOntology* ontology = nullptr;  // may be absent
   // The execution's grounding, reused when the reformulated problem fits it
   // (grounding_cache.h); may be absent, and then every repair grounds anew.
@@ -69,6 +72,11 @@ struct RepairResult {
   int planner_calls = 0;
   double seconds = 0.0;
   bool reused_grounding = false;  // no grounding of its own was needed
+  // The strategy could not do what it is named for and did something else
+  // instead (adapt without action costs replans): that other's name.
+  std::string fallback;
+  // The part of `seconds` spent asking perception what the camera saw.
+  double perception_seconds = 0.0;
 };
 
 class RepairStrategy {
@@ -86,8 +94,9 @@ std::vector<std::string> strategy_names();
 // `excluded`: schemas whose actions the new plan may not use.
 RepairResult replan_from(const RepairRequest& request, const pddl::Domain& domain, const pddl::Problem& problem,
                          const PlannerOptions& options, const std::set<std::string>& excluded = {});
-// Adds the objects perception recognises at the robot's location, of types
-// the domain knows, to the problem, and what perception saw of them -- (be o
+// Adds the objects perception recognises at the robot's location and among
+// the things the camera saw on the way (the request's sightings, each where
+// it was seen), of types the domain knows, to the problem, and what perception saw of them -- (be o
 // location) and (available o) -- to the request's observed state (the
 // paper: "integrated into the planning problem along with its location and
 // availability"; IoT sensors know nothing of such objects); returns them.

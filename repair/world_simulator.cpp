@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "planner/happening_effects.h"
 
 namespace alplan::repair {
 namespace {
@@ -122,13 +121,7 @@ void WorldSimulator::advance(double t) {
 }
 
 void WorldSimulator::apply_snap(const GroundTask& task, ActionId action, bool start, double t, double duration) {
-  const StateMapping mapping(task);
-  ExplicitState state = mapping.to_explicit(world_);
-  EvaluationContext context;
-  context.duration = duration;
-  const GroundAction& a = task.actions[action];
-  apply_happening(task, start ? a.start : a.end, state, context);
-  mapping.write_back(state, world_);
+  apply_snap_effects(task, action, start, duration, world_);
   world_.time = std::max(world_.time, t);
 }
 
@@ -172,6 +165,20 @@ std::vector<RecognizedObject> WorldSimulator::recognize(const WorldState& observ
   std::vector<RecognizedObject> seen;
   for (const RecognizedObject& o : appeared_) {
     if (observed.holds({"be", o.name, location})) seen.push_back(o);
+  }
+  return seen;
+}
+
+std::vector<RecognizedObject> WorldSimulator::recognize_sightings(const std::vector<Sighting>& sightings) {
+  std::vector<RecognizedObject> seen;
+  for (const Sighting& s : sightings) {
+    for (const RecognizedObject& o : appeared_) {
+      if (o.name != s.object) continue;
+      RecognizedObject where = o;
+      where.location = s.location;  // where the camera saw it, not where it is now
+      where.seen_at = s.time;
+      seen.push_back(where);
+    }
   }
   return seen;
 }

@@ -55,6 +55,8 @@ class WorldSimulator : public World, public ObjectRecognizer {
   std::vector<ActionInProgress> in_progress() const override;
 
   std::vector<RecognizedObject> recognize(const WorldState& observed, const std::string& location) override;
+  // The simulator plays a perfect classifier: each thing's type as it made it.
+  std::vector<RecognizedObject> recognize_sightings(const std::vector<Sighting>& sightings) override;
 
   // Events applied so far, in order, for reports.
   const std::vector<ExogenousEvent>& applied() const { return applied_; }

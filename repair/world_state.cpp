@@ -1,6 +1,7 @@
 #include "repair/world_state.h"
 
 #include "planner/evaluation.h"
+#include "planner/happening_effects.h"
 
 namespace alplan::repair {
 
@@ -46,6 +47,16 @@ void StateMapping::write_back(const ExplicitState& state, WorldState& world) con
   for (NumericVarId v = 0; v < variable_keys_.size(); ++v) {
     if (!std::isnan(state.value(v))) world.values[variable_keys_[v]] = state.value(v);
   }
+}
+
+void apply_snap_effects(const GroundTask& task, ActionId action, bool start, double duration, WorldState& world) {
+  const StateMapping mapping(task);
+  ExplicitState state = mapping.to_explicit(world);
+  EvaluationContext context;
+  context.duration = duration;
+  const GroundAction& a = task.actions[action];
+  apply_happening(task, start ? a.start : a.end, state, context);
+  mapping.write_back(state, world);
 }
 
 }  // namespace alplan::repair

@@ -48,4 +48,8 @@ class StateMapping {
   std::vector<AtomKey> fact_keys_, variable_keys_;
 };
 
+// Applies a snap's effects (the start's or the end's) of one of the task's
+// actions to the world, as the task's semantics say.
+void apply_snap_effects(const GroundTask& task, ActionId action, bool start, double duration, WorldState& world);
+
 }  // namespace alplan::repair

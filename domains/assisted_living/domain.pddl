@@ -8,11 +8,18 @@
 ;   a terrified one, a music instrument for a sad one, something to solve or
 ;   read for a bored one, or, as a last resort, a suggestion to use a TV or a
 ;   desktop. Suggesting costs (total-cost), so the metric prefers giving.
+;   The paper suggests only to a bored senior; its Discussion names turning
+;   on the TV as a response beyond objects, so ours may also cheer a sad
+;   senior by suggesting music on a TV or desktop (cheer_suggested). Fear
+;   calls for water: no suggestion soothes a terrified senior.
 ; - Objects must be (available ...) when the robot takes them: IoT objects
 ;   report it, and the monitor sees it change.
 ; - A terrified senior must be soothed while (hydration_time ?s) holds, a sad
 ;   or bored one cheered or entertained while (comfort_time ?s) holds: the
 ;   problem ends these windows with timed initial literals.
+; - (iot_tagged ?o) marks an object with an IoT tag: it reports its place and
+;   availability wherever the robot is; the others are known only once the
+;   robot's camera sees them (repair/observation.h). No action reads it.
 (define (domain assisted_living)
   (:requirements :typing :durative-actions :fluents :timed-initial-literals :action-costs)
   (:types
@@ -41,6 +48,7 @@
     (cheerful ?senior - senior)
     (entertained ?senior - senior)
     (available ?object - (either drinking_vessel making_music entertainment))
+    (iot_tagged ?object - (either drinking_vessel making_music entertainment))
     (filled ?item - drinking_vessel)
     (holding ?robot - robot ?item - (either drinking_vessel making_music solving reading))
     (given ?item - (either drinking_vessel making_music solving reading) ?senior - senior)
@@ -119,4 +127,12 @@
     :duration (= ?duration (receiving_time))
     :condition (and (at start (suggested ?item ?senior)) (at start (bored ?senior)) (over all (comfort_time ?senior)))
     :effect (and (at end (not (bored ?senior))) (at end (entertained ?senior))))
+
+  ;; ours: the sad senior has received a suggestion to listen to music on a
+  ;; TV or desktop (the paper's Discussion: responses beyond objects)
+  (:durative-action cheer_suggested
+    :parameters (?senior - senior ?item - (either tv desktop))
+    :duration (= ?duration (receiving_time))
+    :condition (and (at start (suggested ?item ?senior)) (at start (sad ?senior)) (over all (comfort_time ?senior)))
+    :effect (and (at end (not (sad ?senior))) (at end (cheerful ?senior))))
 )

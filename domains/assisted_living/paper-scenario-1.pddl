@@ -20,6 +20,10 @@
     (be violin_id01 music_room1) (be guitar_id01 music_room1)
     (be book_id01 library1) (be magazine_id01 library1)
     (be pc_id01 library1) (be pc_id02 library1) (be tv_id01 library1)
+    ; IoT-tagged: every object of the paper's home (its Section 4); new objects are not
+    (iot_tagged glass_id01) (iot_tagged glass_id02) (iot_tagged glass_id03) (iot_tagged glass_id04) (iot_tagged glass_id05) (iot_tagged glass_id06) (iot_tagged glass_id07) (iot_tagged glass_id08)
+    (iot_tagged violin_id01) (iot_tagged guitar_id01) (iot_tagged book_id01) (iot_tagged magazine_id01)
+    (iot_tagged pc_id01) (iot_tagged pc_id02) (iot_tagged tv_id01)
     (available glass_id05) (available glass_id06) (available glass_id07) (available glass_id08)
     (terrified senior1)
     (hydration_time senior1) (at 600 (not (hydration_time senior1)))

@@ -15,3 +15,8 @@ expect_run(1 "\"why\": \"senior1 is stressed and terrified" ${ALPLAN} scenario p
 expect_run(2 "unknown scenario 'paper-4'" ${ALPLAN} scenario paper-4)
 expect_run(2 "unknown repair strategy 'pray'" ${ALPLAN} scenario paper-1 --strategy pray)
 expect_run(2 "cannot open" ${ALPLAN} scenario paper-1 --domains-dir ${WORK}/nowhere)
+# The observation models: the camera alone meets the failure on arrival,
+# and an unknown model is refused.
+expect_run(0 "a1  : 140.008 : (carry robot1 mug_id01 kitchen1)" ${ALPLAN} scenario paper-1 --observe camera)
+expect_run(1 "No repair yet (replan)" ${ALPLAN} scenario paper-1 --strategy replan --observe iot)
+expect_run(2 "--observe takes full, iot or camera" ${ALPLAN} scenario paper-1 --observe psychic)

@@ -2,6 +2,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include "domains/paper_scenarios.h"
 #include "tests/support/test_paths.h"
 
@@ -19,9 +21,13 @@ ScenarioOptions options(const std::string& strategy = "substitute") {
 
 PaperScenario scenario(int n) { return paper_scenarios().at(static_cast<std::size_t>(n - 1)); }
 
+// The one repair that was not deferred; attempts before it were deferred
+// (a foreseen failure nothing could mend yet, observation.h).
 const repair::RepairRecord& only_repair(const ScenarioRun& run) {
-  REQUIRE(run.report.repairs.size() == 1);
-  return run.report.repairs.front();
+  const auto& repairs = run.report.repairs;
+  REQUIRE(std::count_if(repairs.begin(), repairs.end(), [](const repair::RepairRecord& r) { return !r.deferred; }) == 1);
+  REQUIRE_FALSE(repairs.back().deferred);
+  return repairs.back();
 }
 
 }  // namespace
@@ -92,11 +98,17 @@ TEST_CASE("patch swaps the failed glass for the recognised mug without searching
 TEST_CASE("suggest has nothing to offer a terrified senior and says so") {
   const ScenarioRun run = run_paper_scenario(scenario(1), options("suggest"));
   CHECK_FALSE(run.report.goal_reached);
-  REQUIRE(run.report.repairs.size() == 1);
-  CHECK_FALSE(run.report.repairs[0].repaired);
+  // The IoT tags report the glasses at 125: foreseen, not mendable, deferred;
+  // met again, and final, when the carry falls due.
+  REQUIRE(run.report.repairs.size() == 2);
+  CHECK(run.report.repairs[0].deferred);
+  CHECK(run.report.repairs[0].foreseen);
+  CHECK(run.report.repairs[0].explanation.how.find("the failure is not due yet") != std::string::npos);
+  CHECK_FALSE(run.report.repairs[1].deferred);
+  CHECK_FALSE(run.report.repairs[1].repaired);
   CHECK(run.report.outcome.find("no repair") == 0);
   // A failed repair is explained in three parts too.
-  const repair::Explanation& e = run.report.repairs[0].explanation;
+  const repair::Explanation& e = run.report.repairs[1].explanation;
   CHECK(e.why.find("terrified") != std::string::npos);
   CHECK(e.why.find("(soothed senior1)") != std::string::npos);
   CHECK(e.what.find("at 140.008, (available glass_id05), which (carry robot1 glass_id05 kitchen1)") == 0);
@@ -183,7 +195,8 @@ TEST_CASE("when the emotion changes, goal generation gives a new goal and the pl
   CHECK(r.explanation.why.find("bored") != std::string::npos);
   CHECK(r.explanation.why.find("the plan's goal was (entertained senior1)") != std::string::npos);
   CHECK(r.explanation.how.find("goal generation: senior1 is sad, so the goal is now (cheerful senior1); ") == 0);
-  CHECK(r.plan_text.find("(cheer_received senior1 guitar_id01)") != std::string::npos);
+  // The guitar, or music suggested on the TV (cheer_suggested).
+  CHECK(r.plan_text.find("(cheer_") != std::string::npos);
   CHECK(run.report.goal_reached);
 }
 

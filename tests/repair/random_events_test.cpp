@@ -109,18 +109,25 @@ TEST_CASE("every kind of random event is drawn against the plan it is to disturb
   }
 }
 
-TEST_CASE("a kind the plan gives no occasion for becomes an overrun") {
+TEST_CASE("a kind the plan gives no occasion for is not drawn, the others are") {
   const Home h = home("");
   repair::ExecutingPlan moves_only = h.plan;
   std::erase_if(moves_only.steps, [](const repair::ScheduledAction& s) { return s.name.rfind("(move ", 0) != 0; });
-  const auto events = draw(h, {RandomEventKind::Unavailable}, 3, &moves_only);
-  REQUIRE(events.size() == 1);
-  CHECK(events[0].kind == ExogenousEvent::Kind::Delay);
+  CHECK(draw(h, {RandomEventKind::Unavailable}, 3, &moves_only).empty());
+  repair::RandomEventOptions options;
+  options.kinds = {RandomEventKind::Unavailable, RandomEventKind::Overrun};
+  repair::RandomEventGenerator generator(options);
+  const auto failure = generator.draw_failure(moves_only, h.problem, &h.ontology, 1);
+  REQUIRE(failure);
+  CHECK(failure->kind == RandomEventKind::Overrun);
+  REQUIRE(failure->events.size() == 1);
+  CHECK(failure->events[0].kind == ExogenousEvent::Kind::Delay);
 }
 
 TEST_CASE("kinds have names for the command line") {
   for (RandomEventKind k : repair::all_random_event_kinds()) CHECK(repair::random_event_kind(repair::to_string(k)) == k);
-  CHECK(repair::all_random_event_kinds().size() == 5);
+  CHECK(repair::all_random_event_kinds().size() == 9);
+  CHECK(repair::study_event_kinds().size() == 7);
   CHECK_FALSE(repair::random_event_kind("earthquake"));
 }
 

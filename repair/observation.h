@@ -1,0 +1,109 @@
+// What the monitor can know of the world. The paper's robot learns what its
+// sensors tell it (its Sections 5 and 6.3): IoT-tagged objects report their
+// availability and place, the seniors' wristbands and the home's cameras
+// report where the seniors are and how they feel, and everything else is
+// known only once the robot's own camera has seen it. An omniscient monitor
+// sees an object fail wherever the robot is, far from the room where a
+// substitute could be seen, and so hides what substitution is for.
+//
+// Three sensor models (ObservationModel):
+// - full: the whole true state, every observation (the old behaviour);
+// - iot (the default, the paper's): the robot's own state; IoT objects'
+//   place and availability; the seniors' places and facts; everything about
+//   a thing in the room the robot is in (or that it holds), and the absence
+//   of a thing from the room where the robot believed it was;
+// - camera: the robot's own state and what its camera sees in its room.
+// Facts about places (paths, distances) and numeric values are the home's
+// map and the robot's own accounting: known throughout.
+//
+// Belief keeps what was last seen of every fact and when (its age). A
+// condition on a fact out of view is checked against the belief, and again
+// when the fact comes into view; the robot's own effects are predicted into
+// it when it acts, and the care plan's timed literals when they fall due.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "pddl_parser/ast.h"
+#include "planner/ground_task.h"
+#include "repair/object_recognizer.h"
+#include "repair/world_state.h"
+
+namespace alplan::repair {
+
+enum class ObservationModel : unsigned char { Full, Iot, Camera };
+
+std::string to_string(ObservationModel model);  // "full", "iot", "camera"
+std::optional<ObservationModel> observation_model(const std::string& name);
+
+struct ObservationOptions {
+  ObservationModel model = ObservationModel::Iot;
+  // The domain's vocabulary, the assisted-living domain's by default.
+  std::string location_predicate = "be";             // (be thing place)
+  std::string availability_predicate = "available";  // (available object)
+  std::string holding_predicate = "holding";         // (holding robot object)
+  // (iot_tagged o) in the problem's :init marks an object that reports its
+  // place and availability itself.
+  std::string iot_predicate = "iot_tagged";
+  std::string robot_type = "robot";
+  std::string person_type = "senior";  // wear wristbands; the home's cameras see them
+};
+
+// The problem's objects as the sensors sort them.
+struct SensedObjects {
+  std::set<std::string> robots, persons, iot, known;
+};
+SensedObjects sensed_objects(const pddl::Problem& problem, const ObservationOptions& options);
+
+class Belief {
+ public:
+  // Starts from what the problem says (what perception reported when the
+  // goal was made) and knows the care plan's timed literals.
+  Belief(const pddl::Problem& problem, ObservationOptions options);
+
+  // Takes in what the sensors report of `truth` at its time. Returns true
+  // when something besides the robot's own state changed (a fact of the
+  // world, or a new sighting): a reason to think again about a failure.
+  bool observe(const WorldState& truth);
+  // The robot's own snap, predicted before the sensors confirm it.
+  void act(const GroundTask& task, ActionId action, bool start, double duration);
+  // New objects integrated into the problem are known from now on.
+  void know(const std::string& object);
+
+  const WorldState& state() const { return state_; }
+  // Things the problem does not name that the camera has seen, the latest
+  // sighting of each, in the order first seen.
+  const std::vector<Sighting>& sightings() const { return sightings_; }
+  // When the fact was last in view; nothing if never (it is assumed).
+  std::optional<double> last_seen(const AtomKey& key) const;
+  ObservationModel model() const { return options_.model; }
+
+ private:
+  // What the robot's senses take in at one observation.
+  struct View {
+    std::set<std::string> rooms;                     // where the robots are
+    std::map<std::string, std::string> truth_at;     // where things are
+    std::map<std::string, std::string> believed_at;  // where the belief has them
+    std::set<std::string> held;                      // by a robot
+  };
+  bool visible(const AtomKey& key, const View& view) const;
+  void apply_timed_literals(double t);
+  // True when a new thing is seen, or a known sighting moved.
+  bool record_sightings(const WorldState& truth, const View& view);
+
+  ObservationOptions options_;
+  SensedObjects objects_;
+  WorldState state_;
+  std::map<AtomKey, double> seen_at_;
+  std::vector<pddl::TimedInitialLiteral> timed_literals_;  // not yet applied, by time
+  std::vector<Sighting> sightings_;
+};
+
+// Where each thing is, from the location predicate's atoms.
+std::map<std::string, std::string> locations(const WorldState& state, const std::string& location_predicate);
+
+}  // namespace alplan::repair
