@@ -1,7 +1,8 @@
 // alplan bench repair --homes N --failures-per-run K --seed S
 //                     --strategies replan,substitute,suggest,patch --out DIR
-//                     [--runs-per-home R] [--external] [--events KINDS] [--rooms ...]
-// Compares repair strategies on the same failures in generated homes.
+//                     [--runs-per-home R] [--external] [--events KINDS] [--observe full|iot|camera] [--rooms ...]
+// Compares repair strategies on the same failures in generated homes: a
+// paired study per failure kind (benchmarks/harness/repair_study.h).
 #include <CLI/CLI.hpp>
 
 #include <iostream>
@@ -13,6 +14,7 @@
 #include "benchmarks/harness/repair_bench.h"
 #include "cli/commands.h"
 #include "domains/pddl_files.h"
+#include "repair/observation.h"
 #include "repair/random_events.h"
 #include "repair/repair_strategy.h"
 
@@ -22,7 +24,8 @@ namespace {
 struct BenchRepairOptions {
   bench::RepairBenchOptions bench;
   std::string strategies = "replan,substitute,suggest,patch,adapt";
-  std::string events = "unavailable,moves,overrun";
+  std::string events = "arrival,iot,sibling,moves,emotion,overrun,two";
+  std::string observe = "iot";
 };
 
 // "all", or a comma-separated list of random event kinds.
@@ -55,11 +58,18 @@ int run_repair(BenchRepairOptions options) {
   }
   const auto kinds = event_kinds(options.events);
   if (!kinds) {
-    std::cerr << "error: --events takes 'all' or a list of unavailable, appears, moves, emotion, overrun; got '"
+    std::cerr << "error: --events takes 'all' or a list of arrival, iot, sibling, moves, emotion, overrun, two, "
+                 "unavailable, appears; got '"
               << options.events << "'\n";
     return kExitInputError;
   }
   options.bench.events.kinds = *kinds;
+  const std::optional<repair::ObservationModel> model = repair::observation_model(options.observe);
+  if (!model) {
+    std::cerr << "error: --observe takes full, iot or camera; got '" << options.observe << "'\n";
+    return kExitInputError;
+  }
+  options.bench.observation.model = *model;
   if (options.bench.out_dir.empty()) {
     std::cerr << "error: --out is required\n";
     return kExitInputError;
@@ -90,7 +100,15 @@ void add_bench_repair_command(CLI::App* bench, int& exit_code) {
   r->add_option("--seed", o->bench.seed, "First home's seed; the others follow");
   r->add_option("--strategies", o->strategies, "Comma-separated: replan, substitute, suggest, patch, adapt");
   r->add_option("--events", o->events,
-                "Failures to draw: 'all' or a comma-separated list of unavailable, appears, moves, emotion, overrun");
+                "Failures to draw: 'all' or a comma-separated list of arrival, iot, sibling, moves, emotion, overrun, "
+                "two (the study's, the default), unavailable, appears");
+  r->add_option("--observe", o->observe,
+                "What the monitor sees: full (the true state), iot (IoT tags, wristbands, the robot's camera; the "
+                "paper's), camera (the robot's camera only)");
+  r->add_option("--iot-share", o->bench.home.iot_share, "Share of the generated homes' objects with an IoT tag");
+  r->add_option("--bootstrap", o->bench.bootstrap.resamples, "Bootstrap resamples for the confidence intervals")
+      ->check(CLI::PositiveNumber);
+  r->add_flag("!--no-paper-home", o->bench.paper_home, "Skip timing the strategies on the paper's three scenarios");
   r->add_option("--out", o->bench.out_dir, "Folder for runs.csv, runs.json, summary.md, summary.json, plots/");
   r->add_flag("!--no-grounding-reuse", o->bench.reuse_grounding,
               "Ground every repair's problem from scratch instead of reusing the grounding made when execution starts");

@@ -1,10 +1,10 @@
 // `alplan bench repair`: generates homes, injects the same failures into the
-// same executions for every strategy, and compares the strategies: success
-// rate, repair latency (median, p95), plan stability (actions removed plus
-// added, Fox et al. 2006), delay until the senior is comforted, makespan,
-// cost, planner calls. Optionally the same repairs through a planner in
-// another process (the paper's architecture), for the latency ratio.
-// Writes runs.csv, runs.json, summary.md, summary.json and one SVG per metric.
+// same executions for every strategy (a paired design), executes them under
+// the monitor's observation model, and compares the strategies per failure
+// kind with paired statistics (repair_study.h). Optionally the same repairs
+// through a planner in another process (the paper's architecture), for the
+// latency ratio. Writes runs.csv, runs.json, summary.md, summary.json and
+// plots/*.svg.
 #pragma once
 
 #include <cstdint>
@@ -12,19 +12,21 @@
 #include <string>
 #include <vector>
 
+#include "benchmarks/harness/paired_statistics.h"
 #include "domains/home_generator.h"
+#include "repair/observation.h"
 #include "repair/random_events.h"
 #include "repair/repair_strategy.h"
 
 namespace alplan::bench {
 
 struct RepairBenchOptions {
-  int homes = 10;
+  int homes = 40;
   int failures_per_run = 1;
   // The kinds of failure to draw and how (repair/random_events.h); the
   // seed is replaced per run, from the home's seed and the run's number.
   repair::RandomEventOptions events;
-  int runs_per_home = 3;
+  int runs_per_home = 5;
   std::uint64_t seed = 1;
   std::vector<std::string> strategies{"replan", "substitute", "suggest", "patch", "adapt"};
   domains::HomeOptions home;  // its seed is replaced per home
@@ -34,6 +36,12 @@ struct RepairBenchOptions {
   std::string alplan;     // the executable, for the external runs
   double epsilon = 0.001;
   double planning_time = 10.0;
+  double initial_planning_time = 1.0;  // anytime, for each home's first plan
+  // The repairs' planner: anytime down to this weight, each weight capped
+  // at so many expansions (PlannerOptions), for every strategy alike.
+  bool repair_anytime = true;
+  double repair_min_weight = 3.0;
+  std::uint64_t repair_expansions = 1000;
   // The monitor grounds each home once when execution starts and repairs
   // reuse that grounding when they can (repair/monitor.h); off, every
   // repair grounds its problem from scratch, as the external planner must.
@@ -41,6 +49,10 @@ struct RepairBenchOptions {
   // The strategies' own knobs (adapt's search); their planner's epsilon
   // and time come from the fields above.
   repair::StrategyOptions strategy_options;
+  // What the monitor sees of the world (iot: the paper's sensors).
+  repair::ObservationOptions observation;
+  BootstrapOptions bootstrap;
+  bool paper_home = true;  // also time the strategies on the paper's three scenarios
 };
 
 // Returns the exit code: 0, or 2 for bad options or unwritable output.

@@ -14,4 +14,15 @@ struct Bar {
 
 std::string bar_chart_svg(const std::string& title, const std::string& unit, const std::vector<Bar>& bars);
 
+// One row of a forest plot: an estimate with its interval.
+struct IntervalRow {
+  std::string label;
+  double estimate = 0.0, low = 0.0, high = 0.0;
+  bool highlighted = false;  // drawn in a stronger colour (significant)
+};
+
+// A forest plot: each row's estimate as a dot, its interval as a whisker,
+// and a vertical line at zero; for differences with confidence intervals.
+std::string forest_plot_svg(const std::string& title, const std::string& unit, const std::vector<IntervalRow>& rows);
+
 }  // namespace alplan::bench

@@ -1,0 +1,282 @@
+#include "benchmarks/harness/repair_study.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <sstream>
+
+#include "benchmarks/harness/svg_chart.h"
+#include "benchmarks/harness/table.h"
+
+namespace alplan::bench {
+namespace {
+
+struct Metric {
+  const char* name;
+  const char* unit;
+  bool higher_is_better;
+  std::function<std::optional<double>(const StudyRun&)> value;
+};
+
+double sum(const std::vector<double>& v) {
+  double s = 0.0;
+  for (double x : v) s += x;
+  return s;
+}
+
+const std::vector<Metric>& metrics() {
+  static const std::vector<Metric> all{
+      {"success", "share of runs comforted", true, [](const StudyRun& r) { return r.comforted ? 1.0 : 0.0; }},
+      {"latency_ms", "ms of repair per run", false, [](const StudyRun& r) { return sum(r.latencies_ms); }},
+      {"stability", "actions removed + added", false, [](const StudyRun& r) { return r.stability; }},
+      {"delay", "time units after the planned end", false, [](const StudyRun& r) { return r.delay; }},
+      {"makespan", "time units", false, [](const StudyRun& r) { return r.makespan; }},
+      {"cost", "total-cost", false, [](const StudyRun& r) { return r.cost; }},
+      {"planner_calls", "per run", false, [](const StudyRun& r) { return static_cast<double>(r.planner_calls); }},
+  };
+  return all;
+}
+
+double mean_of(const std::vector<double>& v) { return v.empty() ? std::nan("") : sum(v) / static_cast<double>(v.size()); }
+
+nlohmann::json number_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); }
+
+// The runs of one kind ("all": every run).
+std::vector<const StudyRun*> of_kind(const std::vector<StudyRun>& runs, const std::string& kind) {
+  std::vector<const StudyRun*> out;
+  for (const StudyRun& r : runs) {
+    if (kind == "all" || r.kind == kind) out.push_back(&r);
+  }
+  return out;
+}
+
+struct Cell {  // one strategy within one kind
+  std::size_t runs = 0, comforted = 0;
+  std::vector<double> latencies, perception, stability, delay, makespan, cost, calls;
+};
+
+Cell summarise(const std::vector<const StudyRun*>& runs, const std::string& strategy) {
+  Cell c;
+  for (const StudyRun* r : runs) {
+    if (r->strategy != strategy) continue;
+    ++c.runs;
+    c.comforted += r->comforted ? 1 : 0;
+    c.latencies.insert(c.latencies.end(), r->latencies_ms.begin(), r->latencies_ms.end());
+    if (!r->latencies_ms.empty()) c.perception.push_back(r->perception_ms);
+    c.stability.push_back(r->stability);
+    c.calls.push_back(r->planner_calls);
+    if (r->delay) c.delay.push_back(*r->delay);
+    if (r->makespan) c.makespan.push_back(*r->makespan);
+    if (r->cost) c.cost.push_back(*r->cost);
+  }
+  return c;
+}
+
+// The metric's values of `strategy` and of the reference, paired by run.
+PairedComparison compare(const std::vector<const StudyRun*>& runs, const std::string& reference,
+                         const std::string& strategy, const Metric& metric, const BootstrapOptions& bootstrap) {
+  std::map<std::pair<std::string, int>, const StudyRun*> base;
+  for (const StudyRun* r : runs) {
+    if (r->strategy == reference) base[{r->home, r->run}] = r;
+  }
+  std::vector<double> a, b;
+  for (const StudyRun* r : runs) {
+    if (r->strategy != strategy) continue;
+    const auto it = base.find({r->home, r->run});
+    if (it == base.end()) continue;
+    a.push_back(metric.value(*it->second).value_or(std::nan("")));
+    b.push_back(metric.value(*r).value_or(std::nan("")));
+  }
+  return compare_paired(a, b, bootstrap);
+}
+
+std::string verdict(const PairedComparison& c, const Metric& m) {
+  if (c.pairs == 0) return "no pairs";
+  if (!c.significant()) return "tie";
+  return (c.mean_difference > 0) == m.higher_is_better ? "better" : "worse";
+}
+
+std::string interval(const PairedComparison& c, int decimals) {
+  return "[" + fixed(c.ci_low, decimals) + ", " + fixed(c.ci_high, decimals) + "]";
+}
+
+std::string p_text(double p) {
+  if (p < 0.001) return "<0.001";
+  return fixed(p, 3);
+}
+
+int decimals_for(const Metric& m) { return std::string(m.name) == "success" ? 3 : 2; }
+
+}  // namespace
+
+double percentile(std::vector<double> values, double p) {
+  if (values.empty()) return std::nan("");
+  std::sort(values.begin(), values.end());
+  const double rank = p * static_cast<double>(values.size() - 1);
+  const auto low = static_cast<std::size_t>(std::floor(rank));
+  const auto high = std::min(values.size() - 1, low + 1);
+  return values[low] + (rank - static_cast<double>(low)) * (values[high] - values[low]);
+}
+
+namespace {
+
+struct Study {
+  const std::vector<StudyRun>& runs;
+  const std::vector<std::string>& strategies;
+  const std::string& reference;
+  const BootstrapOptions& bootstrap;
+  std::vector<std::string> kinds;  // as drawn, then "all"
+  std::map<std::string, std::map<std::string, std::map<std::string, PairedComparison>>> comparisons;
+};
+
+void summary_tables(const Study& s, StudyAnalysis& out, std::ostringstream& md) {
+  Table table({"failure kind", "strategy", "runs", "comforted", "latency median ms", "latency p95 ms",
+               "perception median ms", "stability", "delay", "makespan", "cost", "planner calls"});
+  for (const std::string& kind : s.kinds) {
+    const std::vector<const StudyRun*> runs = of_kind(s.runs, kind);
+    for (const std::string& strategy : s.strategies) {
+      const Cell c = summarise(runs, strategy);
+      if (c.runs == 0) continue;
+      const double median = percentile(c.latencies, 0.5), p95 = percentile(c.latencies, 0.95);
+      table.add({kind, strategy, std::to_string(c.runs),
+                 std::to_string(c.comforted) + " (" + fixed(100.0 * static_cast<double>(c.comforted) / static_cast<double>(c.runs), 0) + "%)",
+                 fixed(median, 3), fixed(p95, 3), fixed(percentile(c.perception, 0.5), 3), fixed(mean_of(c.stability), 2),
+                 fixed(mean_of(c.delay), 1), fixed(mean_of(c.makespan), 1), fixed(mean_of(c.cost), 1), fixed(mean_of(c.calls), 2)});
+      out.json["kinds"][kind]["strategies"][strategy] = {
+          {"runs", c.runs}, {"comforted", c.comforted},
+          {"success_rate", static_cast<double>(c.comforted) / static_cast<double>(c.runs)},
+          {"latency_median_ms", number_or_null(median)}, {"latency_p95_ms", number_or_null(p95)},
+          {"perception_median_ms", number_or_null(percentile(c.perception, 0.5))},
+          {"stability_mean", number_or_null(mean_of(c.stability))}, {"delay_mean", number_or_null(mean_of(c.delay))},
+          {"makespan_mean", number_or_null(mean_of(c.makespan))}, {"cost_mean", number_or_null(mean_of(c.cost))},
+          {"planner_calls_mean", number_or_null(mean_of(c.calls))}};
+    }
+  }
+  md << "## Per failure kind and strategy\n\nMeans over the runs; delay, makespan and cost over the runs that comforted "
+        "the senior; latency over every repair attempt (substitute's includes its perception call).\n\n";
+  table.print_markdown(md);
+}
+
+void comparison_tables(Study& s, StudyAnalysis& out, std::ostringstream& md) {
+  Table table({"failure kind", "strategy", "metric", "pairs", "differing", "mean difference", "95% CI", "Wilcoxon p",
+               "sign p", "verdict"});
+  for (const std::string& kind : s.kinds) {
+    const std::vector<const StudyRun*> runs = of_kind(s.runs, kind);
+    for (const std::string& strategy : s.strategies) {
+      if (strategy == s.reference) continue;
+      for (const Metric& m : metrics()) {
+        const PairedComparison c = compare(runs, s.reference, strategy, m, s.bootstrap);
+        if (c.pairs == 0) continue;
+        s.comparisons[kind][strategy][m.name] = c;
+        const int d = decimals_for(m);
+        table.add({kind, strategy, m.name, std::to_string(c.pairs), std::to_string(c.nonzero), fixed(c.mean_difference, d),
+                   interval(c, d), p_text(c.wilcoxon_p), p_text(c.sign_p), verdict(c, m)});
+        out.json["kinds"][kind]["against_" + s.reference][strategy][m.name] = {
+            {"pairs", c.pairs}, {"differing", c.nonzero}, {"mean_difference", c.mean_difference},
+            {"ci_low", c.ci_low}, {"ci_high", c.ci_high}, {"wilcoxon_p", c.wilcoxon_p}, {"sign_p", c.sign_p},
+            {"verdict", verdict(c, m)}};
+      }
+    }
+  }
+  md << "\n## Differences against " << s.reference << "\n\nStrategy minus " << s.reference
+     << " on the same run; 95% percentile bootstrap interval (" << s.bootstrap.resamples
+     << " resamples); Wilcoxon signed-rank and sign tests, two-sided. A verdict other than tie needs the interval to "
+        "exclude zero and p < 0.05.\n\n";
+  table.print_markdown(md);
+}
+
+void wins_table(const Study& s, StudyAnalysis& out, std::ostringstream& md) {
+  const std::vector<std::string> shown{"success", "delay", "stability", "latency_ms"};
+  std::vector<std::string> header{"failure kind"};
+  header.insert(header.end(), shown.begin(), shown.end());
+  Table table(header);
+  for (const std::string& kind : s.kinds) {
+    std::vector<std::string> row{kind};
+    for (const std::string& name : shown) {
+      const Metric& m = *std::find_if(metrics().begin(), metrics().end(), [&](const Metric& x) { return name == x.name; });
+      std::string better, worse;
+      const auto k = s.comparisons.find(kind);
+      for (const std::string& strategy : s.strategies) {
+        if (k == s.comparisons.end() || !k->second.count(strategy) || !k->second.at(strategy).count(name)) continue;
+        const PairedComparison& c = k->second.at(strategy).at(name);
+        const std::string v = verdict(c, m);
+        const std::string entry = strategy + " (" + fixed(c.mean_difference, decimals_for(m)) + ")";
+        if (v == "better") better += (better.empty() ? "" : ", ") + entry;
+        if (v == "worse") worse += (worse.empty() ? "" : ", ") + entry;
+        out.json["wins"][kind][name][strategy] = v;
+      }
+      std::string cell = better.empty() ? "tie with " + s.reference : "**" + better + "**";
+      if (!worse.empty()) cell += "; worse: " + worse;
+      row.push_back(cell);
+    }
+    table.add(row);
+  }
+  md << "\n## Where each strategy wins\n\nAgainst " << s.reference
+     << ", per failure kind: the strategies significantly better (mean difference in brackets), and those "
+        "significantly worse; everything else ties.\n\n";
+  table.print_markdown(md);
+}
+
+// Fox et al. 2006: repair keeps plans more stable than replanning.
+void stability_finding(const Study& s, StudyAnalysis& out, std::ostringstream& md) {
+  md << "\n## Plan stability (Fox et al. 2006)\n\n";
+  const auto all = s.comparisons.find("all");
+  for (const std::string& strategy : {std::string("adapt"), std::string("patch")}) {
+    if (all == s.comparisons.end() || !all->second.count(strategy)) continue;
+    const PairedComparison& c = all->second.at(strategy).at("stability");
+    const bool holds = c.significant() && c.mean_difference < 0;
+    md << "- " << strategy << " against " << s.reference << ": " << fixed(c.mean_difference, 2)
+       << " actions removed + added per run, 95% CI " << interval(c, 2) << ", Wilcoxon p " << p_text(c.wilcoxon_p)
+       << " over " << c.pairs << " runs (" << c.nonzero << " differ): "
+       << (holds ? "more stable, as Fox et al. found" : "not more stable here") << ".\n";
+    out.json["fox2006"][strategy] = {{"mean_difference", c.mean_difference}, {"ci_low", c.ci_low},
+                                     {"ci_high", c.ci_high}, {"wilcoxon_p", c.wilcoxon_p}, {"holds", holds}};
+  }
+}
+
+void forest_plots(const Study& s, StudyAnalysis& out) {
+  for (const Metric& m : metrics()) {
+    std::vector<IntervalRow> rows;
+    for (const std::string& kind : s.kinds) {
+      const auto k = s.comparisons.find(kind);
+      if (k == s.comparisons.end()) continue;
+      for (const std::string& strategy : s.strategies) {
+        if (!k->second.count(strategy) || !k->second.at(strategy).count(m.name)) continue;
+        const PairedComparison& c = k->second.at(strategy).at(m.name);
+        rows.push_back({kind + " / " + strategy, c.mean_difference, c.ci_low, c.ci_high, c.significant()});
+      }
+    }
+    out.plots[std::string(m.name) + "-vs-" + s.reference + ".svg"] =
+        forest_plot_svg(std::string(m.name) + ": strategy minus " + s.reference + ", 95% CI", m.unit, rows);
+  }
+  std::vector<Bar> success;
+  const std::vector<const StudyRun*> every = of_kind(s.runs, "all");
+  for (const std::string& strategy : s.strategies) {
+    const Cell c = summarise(every, strategy);
+    if (c.runs) success.push_back({strategy, static_cast<double>(c.comforted) / static_cast<double>(c.runs)});
+  }
+  out.plots["success-rate.svg"] = bar_chart_svg("success rate, all failure kinds", "share of runs comforted", success);
+}
+
+}  // namespace
+
+StudyAnalysis analyse_repair_study(const std::vector<StudyRun>& runs, const std::vector<std::string>& strategies,
+                                   const std::string& reference, const BootstrapOptions& bootstrap) {
+  Study s{runs, strategies, reference, bootstrap, {}, {}};
+  for (const StudyRun& r : runs) {
+    if (std::find(s.kinds.begin(), s.kinds.end(), r.kind) == s.kinds.end()) s.kinds.push_back(r.kind);
+  }
+  s.kinds.push_back("all");
+  StudyAnalysis out;
+  out.json = nlohmann::json::object();
+  std::ostringstream md;
+  summary_tables(s, out, md);
+  comparison_tables(s, out, md);
+  wins_table(s, out, md);
+  stability_finding(s, out, md);
+  forest_plots(s, out);
+  out.markdown = md.str();
+  return out;
+}
+
+}  // namespace alplan::bench

@@ -1,0 +1,49 @@
+// The analysis of `alplan bench repair`: a paired study of repair
+// strategies. Every strategy meets the same failures in the same homes, so
+// each is compared with a reference (replan) run by run: per failure kind
+// and over all, success rate, repair latency (median, p95), plan stability
+// (Fox, Gerevini, Long & Serina, ICAPS 2006: actions removed plus added),
+// delay until the senior is comforted, makespan, cost and planner calls;
+// each difference with a 95% bootstrap interval and paired tests
+// (paired_statistics.h); then where each strategy wins.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "benchmarks/harness/paired_statistics.h"
+
+namespace alplan::bench {
+
+// One execution of one strategy against one run's failures.
+struct StudyRun {
+  std::string home;
+  int run = 0;
+  std::string strategy;
+  std::string kind;  // the failure kind drawn (random_events.h)
+  bool comforted = false;
+  std::vector<double> latencies_ms;  // one per repair attempt, perception included
+  double perception_ms = 0.0;        // of the latencies
+  double stability = 0.0;            // actions removed plus added, over the run's repairs
+  int planner_calls = 0;
+  std::size_t repairs = 0;
+  std::optional<double> delay, makespan, cost;  // runs that comforted the senior
+};
+
+struct StudyAnalysis {
+  nlohmann::json json;        // per kind, per strategy, per metric
+  std::string markdown;       // the tables people read
+  std::map<std::string, std::string> plots;  // file name -> SVG
+};
+
+// `strategies` in the order to report; `reference` among them.
+StudyAnalysis analyse_repair_study(const std::vector<StudyRun>& runs, const std::vector<std::string>& strategies,
+                                   const std::string& reference, const BootstrapOptions& bootstrap);
+
+double percentile(std::vector<double> values, double p);
+
+}  // namespace alplan::bench
