@@ -13,6 +13,7 @@
 #include "benchmarks/harness/process_runner.h"
 #include "benchmarks/harness/repair_bench.h"
 #include "cli/commands.h"
+#include "cli/perception_module.h"
 #include "domains/pddl_files.h"
 #include "repair/observation.h"
 #include "repair/random_events.h"
@@ -26,6 +27,7 @@ struct BenchRepairOptions {
   std::string strategies = "replan,substitute,suggest,patch,adapt";
   std::string events = "arrival,iot,sibling,moves,emotion,overrun,two";
   std::string observe = "iot";
+  std::string recognizer = "cnn";
 };
 
 // "all", or a comma-separated list of random event kinds.
@@ -74,6 +76,17 @@ int run_repair(BenchRepairOptions options) {
     std::cerr << "error: --out is required\n";
     return kExitInputError;
   }
+  if (options.recognizer == "cnn") {
+    std::string error;
+    if (!load_drawing_camera(options.bench.assisted_living_dir + "/types.ttl", options.bench.camera,
+                             options.bench.camera_info, error)) {
+      std::cerr << "error: --recognizer cnn: " << error << "\n";
+      return kExitInputError;
+    }
+  } else if (options.recognizer != "simulated") {
+    std::cerr << "error: --recognizer takes cnn or simulated; got '" << options.recognizer << "'\n";
+    return kExitInputError;
+  }
   options.bench.alplan = bench::self_executable();
   try {
     return bench::run_repair_bench(options.bench, std::cout, std::cerr);
@@ -105,6 +118,9 @@ void add_bench_repair_command(CLI::App* bench, int& exit_code) {
   r->add_option("--observe", o->observe,
                 "What the monitor sees: full (the true state), iot (IoT tags, wristbands, the robot's camera; the "
                 "paper's), camera (the robot's camera only)");
+  r->add_option("--recognizer", o->recognizer,
+                "What names the new things the camera sees: cnn (the paper's CNN on drawings of them, trained when "
+                "the run starts; its time is part of substitute's latency) or simulated (the simulator, perfect, free)");
   r->add_option("--iot-share", o->bench.home.iot_share, "Share of the generated homes' objects with an IoT tag");
   r->add_option("--bootstrap", o->bench.bootstrap.resamples, "Bootstrap resamples for the confidence intervals")
       ->check(CLI::PositiveNumber);

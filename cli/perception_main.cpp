@@ -4,8 +4,13 @@
 
 #include <opencv2/core/utils/logger.hpp>
 
+#include <exception>
+#include <memory>
+
 #include "cli/commands.h"
 #include "cli/parse_command_line.h"
+#include "cli/perception_module.h"
+#include "perception/drawing_camera.h"
 
 extern "C" __attribute__((visibility("default"))) int alplan_perception_main(int argc, char** argv) {
   // OpenCV's own warnings ("can't open/read file") would repeat the
@@ -22,4 +27,25 @@ extern "C" __attribute__((visibility("default"))) int alplan_perception_main(int
   bench->require_subcommand(1);
   alplan::cli::add_bench_service_command(bench, exit_code);
   return alplan::cli::parse_command_line(app, argc, argv, exit_code);
+}
+
+// The repair study's camera (perception_module.h): trains the CNN once.
+extern "C" __attribute__((visibility("default"))) bool alplan_drawing_camera(const char* types_ttl,
+                                                                             alplan::cli::ObjectCamera* make,
+                                                                             nlohmann::json* info, std::string* error) {
+  try {
+    auto ontology = std::make_shared<const alplan::repair::TypeOntology>(alplan::repair::TypeOntology::from_file(types_ttl));
+    const alplan::perception::TrainedObjectClassifier trained = alplan::perception::train_object_classifier_on_drawings({});
+    *info = {{"recognizer", "the paper's CNN on drawings of each thing's true type"},
+             {"classifier_test_accuracy", trained.test_accuracy},
+             {"training_seconds", trained.seconds}};
+    *make = [ontology, classifier = trained.classifier](alplan::repair::ObjectRecognizer& truth) {
+      return std::unique_ptr<alplan::repair::ObjectRecognizer>(
+          std::make_unique<alplan::perception::DrawingObjectRecognizer>(truth, classifier, *ontology));
+    };
+    return true;
+  } catch (const std::exception& e) {
+    *error = e.what();
+    return false;
+  }
 }

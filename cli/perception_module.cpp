@@ -23,6 +23,22 @@ std::filesystem::path module_path() {
 
 }  // namespace
 
+bool load_drawing_camera(const std::string& types_ttl, ObjectCamera& make, nlohmann::json& info, std::string& error) {
+  const std::filesystem::path path = module_path();
+  // Kept open for the process: the recognizers' code lives in the module.
+  void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!module) {
+    error = "cannot load the perception module " + path.string() + ": " + dlerror();
+    return false;
+  }
+  auto entry = reinterpret_cast<DrawingCameraEntry>(dlsym(module, kDrawingCameraEntryPoint));
+  if (!entry) {
+    error = path.string() + " has no " + kDrawingCameraEntryPoint;
+    return false;
+  }
+  return entry(types_ttl.c_str(), &make, &info, &error);
+}
+
 bool runs_in_perception_module(int argc, char** argv) {
   if (argc < 2) return false;
   const std::string first = argv[1];

@@ -8,8 +8,14 @@
 // and runs the command line as `alplan` received it.
 #pragma once
 
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "repair/object_recognizer.h"
 
 namespace alplan::cli {
 
@@ -38,5 +44,19 @@ inline constexpr const char* kBenchServiceHelp =
 // and runs the command; prints a clear error and returns 2 if the module
 // cannot be loaded.
 int run_perception_command(int argc, char** argv);
+
+// The repair study's camera (perception/drawing_camera.h), made in the
+// module: the paper's CNN trained once on drawings, and a maker of
+// recognizers that picture what the simulator knows and let the network
+// name it. The module exports kDrawingCameraEntryPoint as DrawingCameraEntry,
+// which fills `make` and `info` (accuracy, training time) or returns false
+// with `error` set.
+using ObjectCamera = std::function<std::unique_ptr<repair::ObjectRecognizer>(repair::ObjectRecognizer& truth)>;
+inline constexpr const char* kDrawingCameraEntryPoint = "alplan_drawing_camera";
+using DrawingCameraEntry = bool (*)(const char* types_ttl, ObjectCamera* make, nlohmann::json* info, std::string* error);
+
+// Loads the module and makes the camera; false with `error` set when the
+// module cannot be loaded or the camera made.
+bool load_drawing_camera(const std::string& types_ttl, ObjectCamera& make, nlohmann::json& info, std::string& error);
 
 }  // namespace alplan::cli

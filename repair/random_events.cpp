@@ -205,8 +205,20 @@ std::vector<ExogenousEvent> RandomEventGenerator::sibling_present(const PlanStep
   const std::vector<std::string> types = siblings(problem, ontology, object);
   const std::string type = types[index(types.size())];
   const std::string room = uniform(0.0, 1.0) < 0.5 ? rooms.front() : rooms[index(rooms.size())];
-  return {becomes_unavailable(uniform(0.0, std::max(0.0, carry.start - 0.001)), object),
-          object_appears(0.0, {type + "_new" + std::to_string(serial), type, room, 1.0})};
+  const double at = uniform(0.0, std::max(0.0, carry.start - 0.001));
+  // As in the paper's Scenarios 1 and 2: every object of that category in
+  // the pickup room is taken, not only the one the plan needs.
+  const std::optional<std::string> category = ontology.parent(object_type(problem, object).value_or(""));
+  std::vector<ExogenousEvent> events;
+  for (const pddl::Atom& a : problem.init) {
+    if (a.name != "be" || a.args.size() != 2 || a.args[1].name != word(carry.name, 3)) continue;
+    const std::string& other = a.args[0].name;
+    if (other == object || ontology.parent(object_type(problem, other).value_or("")) == category) {
+      events.push_back(becomes_unavailable(at, other));
+    }
+  }
+  events.push_back(object_appears(0.0, {type + "_new" + std::to_string(serial), type, room, 1.0}));
+  return events;
 }
 
 std::vector<ExogenousEvent> RandomEventGenerator::two_failures(const PlanSteps& steps, const pddl::Problem& problem,

@@ -9,9 +9,11 @@
 //   unavailable; the robot finds out when it reaches the room;
 // - iot: an IoT-tagged object the plan will carry becomes unavailable and
 //   its tag says so at once;
-// - sibling: as arrival, and an object of a sibling type (the ontology's
-//   augmented types: a mug for a glass) that the problem does not list
-//   stands in that room, or in a room the robot passes on its way there;
+// - sibling: as in the paper's Scenarios 1 and 2, every object of the
+//   carried one's category in its room becomes unavailable (the carried one
+//   untagged), and an object of a sibling type (the ontology's augmented
+//   types: a mug for a glass) that the problem does not list stands in that
+//   room, or in a room the robot passes on its way there;
 // - moves: the senior to be served walks to another private room;
 // - emotion: that senior's emotion changes, so the goal changes;
 // - overrun: a move takes longer than planned;

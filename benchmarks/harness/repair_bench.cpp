@@ -81,7 +81,9 @@ RunRecord execute(const std::string& home_name, int run, const repair::Mission& 
   monitor_options.reuse_grounding = o.reuse_grounding;
   monitor_options.observation = o.observation;
   const repair::Monitor monitor(monitor_options);
-  const repair::ExecutionReport report = monitor.run(mission, plan, world, strategy, &world, &ontology);
+  const std::unique_ptr<repair::ObjectRecognizer> camera = o.camera ? o.camera(world) : nullptr;
+  repair::ObjectRecognizer* eyes = camera ? camera.get() : &world;
+  const repair::ExecutionReport report = monitor.run(mission, plan, world, strategy, eyes, &ontology);
   RunRecord r;
   r.home = home_name;
   r.run = run;
@@ -287,6 +289,7 @@ int run_repair_bench(const RepairBenchOptions& o, std::ostream& out, std::ostrea
     }
   }
   nlohmann::json extra = nlohmann::json::object();
+  extra["camera"] = o.camera ? o.camera_info : nlohmann::json("the simulator names what it made (no perception)");
   std::size_t repairs = 0, reused = 0;
   for (const RunRecord& r : records) {
     repairs += r.reused_grounding.size();

@@ -8,12 +8,17 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "benchmarks/harness/paired_statistics.h"
 #include "domains/home_generator.h"
+#include <nlohmann/json.hpp>
+
+#include "repair/object_recognizer.h"
 #include "repair/observation.h"
 #include "repair/random_events.h"
 #include "repair/repair_strategy.h"
@@ -53,6 +58,12 @@ struct RepairBenchOptions {
   repair::ObservationOptions observation;
   BootstrapOptions bootstrap;
   bool paper_home = true;  // also time the strategies on the paper's three scenarios
+  // The camera: wraps the simulator (which knows each thing's type) with a
+  // real recognizer (perception/drawing_camera.h); none: the simulator
+  // names things itself, perfectly and at no cost. `camera_info` goes into
+  // the summary.
+  std::function<std::unique_ptr<repair::ObjectRecognizer>(repair::ObjectRecognizer& truth)> camera;
+  nlohmann::json camera_info;
 };
 
 // Returns the exit code: 0, or 2 for bad options or unwritable output.

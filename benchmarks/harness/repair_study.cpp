@@ -32,6 +32,12 @@ const std::vector<Metric>& metrics() {
       {"delay", "time units after the planned end", false, [](const StudyRun& r) { return r.delay; }},
       {"makespan", "time units", false, [](const StudyRun& r) { return r.makespan; }},
       {"cost", "total-cost", false, [](const StudyRun& r) { return r.cost; }},
+      // The generated homes' metric: (+ (total-time) (total-cost)).
+      {"metric", "total-time + total-cost", false,
+       [](const StudyRun& r) -> std::optional<double> {
+         if (!r.makespan || !r.cost) return std::nullopt;
+         return *r.makespan + *r.cost;
+       }},
       {"planner_calls", "per run", false, [](const StudyRun& r) { return static_cast<double>(r.planner_calls); }},
   };
   return all;
@@ -186,7 +192,7 @@ void comparison_tables(Study& s, StudyAnalysis& out, std::ostringstream& md) {
 }
 
 void wins_table(const Study& s, StudyAnalysis& out, std::ostringstream& md) {
-  const std::vector<std::string> shown{"success", "delay", "stability", "latency_ms"};
+  const std::vector<std::string> shown{"success", "metric", "cost", "delay", "stability", "latency_ms"};
   std::vector<std::string> header{"failure kind"};
   header.insert(header.end(), shown.begin(), shown.end());
   Table table(header);
@@ -227,7 +233,8 @@ void stability_finding(const Study& s, StudyAnalysis& out, std::ostringstream& m
     const bool holds = c.significant() && c.mean_difference < 0;
     md << "- " << strategy << " against " << s.reference << ": " << fixed(c.mean_difference, 2)
        << " actions removed + added per run, 95% CI " << interval(c, 2) << ", Wilcoxon p " << p_text(c.wilcoxon_p)
-       << " over " << c.pairs << " runs (" << c.nonzero << " differ): "
+       << " over " << c.pairs << " runs (" << c.nonzero << " differ: " << strategy << " changes fewer actions in "
+       << c.nonzero - c.positive << ", more in " << c.positive << "): "
        << (holds ? "more stable, as Fox et al. found" : "not more stable here") << ".\n";
     out.json["fox2006"][strategy] = {{"mean_difference", c.mean_difference}, {"ci_low", c.ci_low},
                                      {"ci_high", c.ci_high}, {"wilcoxon_p", c.wilcoxon_p}, {"holds", holds}};

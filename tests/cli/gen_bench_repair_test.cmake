@@ -7,7 +7,7 @@ expect_run(0 "; plan found" ${ALPLAN} plan ${CMAKE_CURRENT_LIST_DIR}/../../domai
   ${WORK}/home.pddl)
 expect_run(2 "at least 4 rooms" ${ALPLAN} gen home --rooms 3)
 expect_run(0 "latency median ms" ${ALPLAN} bench repair --homes 2 --runs-per-home 2 --seed 3
-  --strategies replan,patch,suggest --external --out ${WORK}/repair)
+  --strategies replan,patch,suggest --external --recognizer simulated --out ${WORK}/repair)
 foreach(f runs.csv runs.json summary.md summary.json plots/success-rate.svg plots/stability-vs-replan.svg
         plots/delay-vs-replan.svg)
   if(NOT EXISTS ${WORK}/repair/${f})
@@ -35,9 +35,9 @@ if(failed EQUAL 0)
 endif()
 # The repairs reuse the grounding made at the start; without it, none does.
 expect_run(0 "grounding reused" ${ALPLAN} bench repair --homes 2 --runs-per-home 1 --seed 3 --strategies replan
-  --out ${WORK}/repair-reuse)
+  --recognizer simulated --out ${WORK}/repair-reuse)
 expect_run(0 "grounding reused" ${ALPLAN} bench repair --homes 2 --runs-per-home 1 --seed 3 --strategies replan
-  --no-grounding-reuse --out ${WORK}/repair-no-reuse)
+  --recognizer simulated --no-grounding-reuse --out ${WORK}/repair-no-reuse)
 foreach(pair "repair-reuse;some" "repair-no-reuse;0")
   list(GET pair 0 dir)
   list(GET pair 1 reused)
@@ -56,11 +56,18 @@ endforeach()
 expect_run(2 "unknown repair strategy 'fast'" ${ALPLAN} bench repair --homes 1 --strategies fast --out ${WORK}/x)
 # Failures of every kind the world simulator draws, emotion changes included.
 expect_run(0 "latency median ms" ${ALPLAN} bench repair --homes 1 --runs-per-home 2 --seed 2 --strategies replan
-  --events all --out ${WORK}/repair-all)
+  --recognizer simulated --events all --out ${WORK}/repair-all)
 expect_run(0 "latency median ms" ${ALPLAN} bench repair --homes 1 --runs-per-home 1 --seed 2 --strategies replan
-  --events emotion --out ${WORK}/repair-emotion)
+  --recognizer simulated --events emotion --out ${WORK}/repair-emotion)
 file(READ ${WORK}/repair-emotion/runs.csv emotion_runs)
 if(NOT emotion_runs MATCHES "senior1 is no longer sad but bored")
   message(FATAL_ERROR "bench repair --events emotion drew no emotion change:\n${emotion_runs}")
 endif()
 expect_run(2 "--events takes" ${ALPLAN} bench repair --homes 1 --events earthquake --out ${WORK}/x)
+# The study's camera: the paper's CNN names what the simulator made, and
+# substitute's latency includes it; an unknown recognizer or observation
+# model is refused.
+expect_run(0 "classifier_test_accuracy" ${ALPLAN} bench repair --homes 2 --runs-per-home 2 --seed 1
+  --strategies replan,substitute --events sibling --no-paper-home --out ${WORK}/repair-cnn)
+expect_run(2 "--recognizer takes cnn or simulated" ${ALPLAN} bench repair --homes 1 --recognizer oracle --out ${WORK}/x)
+expect_run(2 "--observe takes full, iot or camera" ${ALPLAN} bench repair --homes 1 --observe psychic --out ${WORK}/x)
