@@ -121,6 +121,10 @@ void add_bench_repair_command(CLI::App* bench, int& exit_code) {
   r->add_option("--recognizer", o->recognizer,
                 "What names the new things the camera sees: cnn (the paper's CNN on drawings of them, trained when "
                 "the run starts; its time is part of substitute's latency) or simulated (the simulator, perfect, free)");
+  r->add_flag("!--first-plan", o->bench.repair_anytime,
+              "Repairs take the first plan found (as the external planner does) instead of a short anytime search");
+  r->add_option("--repair-expansions", o->bench.repair_expansions,
+                "Expansions each anytime weight of a repair may spend (0: until proven)");
   r->add_option("--iot-share", o->bench.home.iot_share, "Share of the generated homes' objects with an IoT tag");
   r->add_option("--bootstrap", o->bench.bootstrap.resamples, "Bootstrap resamples for the confidence intervals")
       ->check(CLI::PositiveNumber);
