@@ -30,6 +30,8 @@ struct PairedComparison {
 struct BootstrapOptions {
   int resamples = 2000;
   std::uint64_t seed = 1;
+  // A difference within this fraction of the values (at least 1) is zero.
+  double zero_tolerance = 1e-6;
 };
 
 // `reference` and `other` are paired by index and of equal length.

@@ -40,6 +40,10 @@ TEST_CASE("paired comparison: a shifted sample has an interval that excludes zer
   CHECK(same.ci_low == 0.0);
   CHECK(same.ci_high == 0.0);
   CHECK_FALSE(same.significant());
+  // Rounding in the last digits is no difference.
+  const PairedComparison rounding = compare_paired({100.0, 200.0, 300.0}, {100.0 + 1e-9, 200.0 - 1e-8, 300.0});
+  CHECK(rounding.nonzero == 0);
+  CHECK(rounding.wilcoxon_p == 1.0);
   // Pairs with a missing side (NaN) are left out.
   const PairedComparison partial = compare_paired({1.0, std::nan(""), 3.0}, {2.0, 5.0, 4.0});
   CHECK(partial.pairs == 2);
