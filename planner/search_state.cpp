@@ -44,8 +44,9 @@ bool SearchState::same_as(const SearchState& other) const {
     if (a.action != b.action || a.min_duration != b.min_duration || a.max_duration != b.max_duration) return false;
   }
   // NaN (undefined) equals NaN here: compare bit patterns.
+  // memcmp may not be given the null data() of an empty vector, even for 0 bytes.
   return values_.size() == other.values_.size() &&
-         std::memcmp(values_.data(), other.values_.data(), values_.size() * sizeof(double)) == 0;
+         (values_.empty() || std::memcmp(values_.data(), other.values_.data(), values_.size() * sizeof(double)) == 0);
 }
 
 }  // namespace alplan
