@@ -143,6 +143,15 @@ Token Lexer::word(std::size_t start, SourceLocation where) {
                      : TokenKind::Invalid;
     return token;
   }
+  if (first == '-' && w.size() > 1 && is(w[1], kNameStart) && all_name_chars(w.substr(1))) {
+    // Some IPC 2006 files write "?g -goods": PDDL's grammar is silent on it,
+    // and VAL's lexer reads a '-' token and then a name. So do we.
+    position_ = start + 1;
+    token.text = w.substr(0, 1);
+    token.kind = TokenKind::Symbol;
+    token.glued = true;
+    return token;
+  }
   const bool signed_number = (first == '-' || first == '+') && w.size() > 1 &&
                              (is(w[1], kDigit) || w[1] == '.');
   if (is(first, kDigit) || first == '.' || signed_number) {

@@ -29,6 +29,9 @@ struct Token {
   double number = 0.0;    // for Number
   int depth = 0;          // parenthesis depth before this token
   SourceLocation location;
+  // A '-' written against the name after it ("?g -goods"): split off as
+  // VAL's, OPTIC's and Fast Downward's lexers split it; the parser warns.
+  bool glued = false;
 };
 
 const char* to_string(TokenKind kind);

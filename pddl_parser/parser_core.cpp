@@ -10,17 +10,25 @@ ParserCore::ParserCore(std::string_view text, DiagnosticSink& sink, const Parser
   advance();
 }
 
+Token ParserCore::fetch() {
+  Token token = lexer_.next();
+  if (token.glued) {
+    warn(token.location, "'-' is written against the name after it; read as a separate '-', as VAL reads it");
+  }
+  return token;
+}
+
 void ParserCore::advance() {
   if (second_) {
     current_ = *second_;
     second_.reset();
     return;
   }
-  current_ = lexer_.next();
+  current_ = fetch();
 }
 
 const Token& ParserCore::peek_second() {
-  if (!second_) second_ = lexer_.next();
+  if (!second_) second_ = fetch();
   return *second_;
 }
 

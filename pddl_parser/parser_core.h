@@ -68,6 +68,7 @@ class ParserCore {
 
  private:
   void advance();
+  Token fetch();  // the lexer's next token, warning about a glued '-'
 
   Lexer lexer_;
   DiagnosticSink& sink_;

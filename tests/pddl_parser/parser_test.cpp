@@ -230,3 +230,20 @@ TEST_CASE("fuzzer finding: a problem without (:domain ...) no longer round-trips
   const std::string text = alplan::test::read_text(alplan::test::data_dir() + "/fuzz/problem_without_domain.pddl");
   CHECK_FALSE(parse_problem(text, "f.pddl").ok());
 }
+
+TEST_CASE("a type marker written against its type, as in some IPC 2006 files, is read as VAL reads it") {
+  const DomainParseResult r = parse_domain(
+      "(define (domain d) (:requirements :typing) (:types goods place)\n"
+      "  (:predicates (ready-to-load ?g -goods ?m - place) (at-1 ?p - place)))",
+      "glued.pddl");
+  REQUIRE(r.ok());
+  const auto& ready = r.ast->predicates.front();
+  REQUIRE(ready.parameters.size() == 2);
+  CHECK(ready.parameters[0].types == std::vector<std::string>{"goods"});
+  CHECK(ready.parameters[1].types == std::vector<std::string>{"place"});
+  REQUIRE(r.diagnostics.size() == 1);
+  CHECK(r.diagnostics[0].severity == Severity::Warning);
+  CHECK(r.diagnostics[0].to_string().rfind("glued.pddl:2:34: warning: '-' is written against the name", 0) == 0);
+  // A name with dashes inside, and negative numbers, are untouched.
+  CHECK(r.ast->predicates.back().name == "at-1");
+}
