@@ -1,0 +1,42 @@
+"""Builds the Python module with the project's CMake (the alplan_python
+target) and installs the one shared object it makes. ALPLAN_BUILD_DIR reuses
+a configured build tree (scripts/build's); otherwise a fresh one is made
+under the build_temp folder. Install with:
+
+    pip install --no-build-isolation .
+"""
+import os
+import shutil
+import subprocess
+import sys
+
+from setuptools import Extension, setup
+from setuptools.command.build_ext import build_ext
+
+ROOT = os.path.dirname(os.path.abspath(__file__))
+
+
+class CMakeExtension(Extension):
+    def __init__(self, name):
+        super().__init__(name, sources=[])
+
+
+class CMakeBuild(build_ext):
+    def build_extension(self, ext):
+        build = os.environ.get("ALPLAN_BUILD_DIR") or os.path.join(os.path.abspath(self.build_temp), "cmake")
+        configure = ["cmake", "-S", ROOT, "-B", build, "-DCMAKE_BUILD_TYPE=Release",
+                     "-DALPLAN_PYTHON=" + sys.executable]
+        if not os.environ.get("ALPLAN_BUILD_DIR"):
+            configure += ["-DALPLAN_BUILD_TESTS=OFF", "-DALPLAN_BUILD_BENCHMARKS=OFF"]
+        subprocess.check_call(configure)
+        subprocess.check_call(["cmake", "--build", build, "--target", "alplan_python", "-j", str(os.cpu_count() or 2)])
+        built = [f for f in os.listdir(os.path.join(build, "python")) if f.startswith("alplan") and f.endswith(".so")]
+        if not built:
+            raise RuntimeError("CMake built no alplan*.so in " + os.path.join(build, "python"))
+        target = self.get_ext_fullpath(ext.name)
+        os.makedirs(os.path.dirname(target), exist_ok=True)
+        shutil.copyfile(os.path.join(build, "python", built[0]), target)
+
+
+# packages=[]: the folders here are C++ libraries, not Python packages.
+setup(packages=[], ext_modules=[CMakeExtension("alplan")], cmdclass={"build_ext": CMakeBuild})
