@@ -40,5 +40,10 @@ std::string read_text_file(const std::string& path);
 void add_errors(py::module_& m);
 void add_pddl(py::module_& m);
 void add_planning(py::module_& m);
+void add_monitor(py::module_& m);
+
+// A Domain/Problem object, or a file path to read and check.
+PyDomain domain_of(const py::object& d);
+PyProblem problem_of(const py::object& p, const PyDomain& domain);
 
 }  // namespace alplan::python

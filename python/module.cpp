@@ -8,4 +8,5 @@ PYBIND11_MODULE(alplan, m) {
   alplan::python::add_errors(m);
   alplan::python::add_pddl(m);
   alplan::python::add_planning(m);
+  alplan::python::add_monitor(m);
 }

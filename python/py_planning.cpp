@@ -57,18 +57,6 @@ const char* status_name(PlannerResult::Status s) {
   return "?";
 }
 
-// A Domain/Problem object, or a file path.
-PyDomain domain_of(const py::object& d) {
-  if (py::isinstance<PyDomain>(d)) return d.cast<PyDomain>();
-  const std::string path = py::str(d);
-  return load_domain(read_text_file(path), path);
-}
-PyProblem problem_of(const py::object& p, const PyDomain& domain) {
-  if (py::isinstance<PyProblem>(p)) return p.cast<PyProblem>();
-  const std::string path = py::str(p);
-  return load_problem(read_text_file(path), path, domain);
-}
-
 PyFoundPlan found_plan(const FoundPlan& p) {
   PyFoundPlan out;
   for (const PlanStep& s : p.plan.steps) {
@@ -227,6 +215,18 @@ PyValidation validate(const py::object& domain_arg, const py::object& problem_ar
 }
 
 }  // namespace
+
+PyDomain domain_of(const py::object& d) {
+  if (py::isinstance<PyDomain>(d)) return d.cast<PyDomain>();
+  const std::string path = py::str(d);
+  return load_domain(read_text_file(path), path);
+}
+
+PyProblem problem_of(const py::object& p, const PyDomain& domain) {
+  if (py::isinstance<PyProblem>(p)) return p.cast<PyProblem>();
+  const std::string path = py::str(p);
+  return load_problem(read_text_file(path), path, domain);
+}
 
 void add_planning(py::module_& m) {
   py::class_<PyStep>(m, "Step", "One step of a plan: start time, duration (None if instantaneous), action")

@@ -177,3 +177,59 @@ def test_the_gantt_example_draws_a_plan(tmp_path):
     finally:
         sys.argv = argv
     assert out.stat().st_size > 5000
+
+
+class HandWorld:
+    """The one-hand domain's world, written in Python: the robot's carries do
+    what the domain says, and at time 1 somebody else carries the ball still
+    waiting in r1 to r2."""
+
+    def __init__(self):
+        self.atoms = {"(at b1 r1)", "(at b2 r1)", "(free)"}
+        self.now = 0.0
+        self.calls = []
+
+    def advance(self, t):
+        if self.now < 1.0 <= t:
+            for ball in ("b1", "b2"):
+                if "(at %s r1)" % ball in self.atoms:
+                    self.atoms.discard("(at %s r1)" % ball)
+                    self.atoms.add("(at %s r2)" % ball)
+                    self.moved = ball
+        self.now = t
+
+    def observe(self):
+        return {"atoms": sorted(self.atoms), "values": {}, "time": self.now}
+
+    def start_action(self, name, t, duration):
+        self.calls.append(("start", name, t))
+        _, ball, src, _dst = name.strip("()").split()
+        self.atoms -= {"(at %s %s)" % (ball, src), "(free)"}
+
+    def end_action(self, name, t):
+        self.calls.append(("end", name, t))
+        _, ball, _src, dst = name.strip("()").split()
+        self.atoms |= {"(at %s %s)" % (ball, dst), "(free)"}
+        return True
+
+
+@pytest.mark.parametrize("strategy", ["replan", "adapt"])
+def test_the_monitor_runs_against_a_world_written_in_python(strategy):
+    assert "replan" in alplan.strategies()
+    domain = alplan.parse_domain_string(DOMAIN)
+    problem = alplan.parse_problem_string(PROBLEM, domain)
+    world = HandWorld()
+    report = alplan.execute(domain, problem, world, strategy=strategy)
+    assert report["goal_reached"], report["outcome"]
+    assert report["repairs"], "a ball moved by somebody else: the plan's second carry must fail"
+    repair = report["repairs"][0]
+    assert repair["condition"] == "(at %s r1)" % world.moved
+    assert repair["explanation"]["repaired"]
+    assert world.calls[0][0] == "start"
+    assert "(at b1 r2)" in world.atoms and "(at b2 r2)" in world.atoms
+
+
+def test_an_unknown_strategy_is_a_value_error():
+    domain = alplan.parse_domain_string(DOMAIN)
+    with pytest.raises(ValueError, match="unknown repair strategy"):
+        alplan.execute(domain, alplan.parse_problem_string(PROBLEM, domain), HandWorld(), strategy="pray")
