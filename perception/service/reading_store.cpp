@@ -76,7 +76,9 @@ void ReadingStore::create_schema() {
 
 void ReadingStore::begin() { db_.execute("BEGIN IMMEDIATE"); }
 void ReadingStore::commit() { db_.execute("COMMIT"); }
-void ReadingStore::rollback() { db_.execute("ROLLBACK"); }
+void ReadingStore::rollback() {
+  if (db_.in_transaction()) db_.execute("ROLLBACK");
+}
 
 bool ReadingStore::insert_reading(const ReceivedReading& r, std::int64_t received_ms) {
   SqliteStatement& s = *insert_reading_;
@@ -155,11 +157,14 @@ std::vector<ReceivedReading> ReadingStore::readings_of(const std::string& device
   return select_readings(q);
 }
 
-std::vector<ReceivedReading> ReadingStore::latest_readings_of(const std::string& device, std::size_t limit) {
+std::vector<ReceivedReading> ReadingStore::latest_readings_of(const std::string& device, std::size_t limit,
+                                                             std::int64_t max_t_ms) {
   SqliteStatement q = db_.prepare(std::string("SELECT ") + kReadingColumns +
-                                  " FROM readings WHERE device = ? ORDER BY t_ms DESC, boot DESC, seq DESC LIMIT ?");
+                                  " FROM readings WHERE device = ? AND t_ms <= ?"
+                                  " ORDER BY t_ms DESC, boot DESC, seq DESC LIMIT ?");
   q.bind(1, device);
-  q.bind(2, static_cast<std::int64_t>(limit));
+  q.bind(2, max_t_ms);
+  q.bind(3, static_cast<std::int64_t>(limit));
   std::vector<ReceivedReading> out = select_readings(q);
   std::reverse(out.begin(), out.end());
   return out;

@@ -19,7 +19,9 @@
 #pragma once
 
 #include <cstdint>
+#include <climits>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -52,7 +54,11 @@ class ReadingStore {
 
   void begin();
   void commit();
+  // Rolls back the open transaction, if any (a failed COMMIT may have ended it).
   void rollback();
+  // Fault injection for tests and the soak benchmark: see
+  // SqliteDatabase::set_commit_veto.
+  void set_commit_veto(std::function<bool()> veto) { db_.set_commit_veto(std::move(veto)); }
 
   // True when stored, false when (device, boot, seq) was already there.
   bool insert_reading(const ReceivedReading& reading, std::int64_t received_ms);
@@ -62,8 +68,10 @@ class ReadingStore {
   std::uint64_t count_readings();
   // One device's readings by (boot, seq).
   std::vector<ReceivedReading> readings_of(const std::string& device);
-  // The device's last `limit` readings by time, oldest first.
-  std::vector<ReceivedReading> latest_readings_of(const std::string& device, std::size_t limit);
+  // The device's last `limit` readings by time, oldest first, of those
+  // stamped at or before `max_t_ms`.
+  std::vector<ReceivedReading> latest_readings_of(const std::string& device, std::size_t limit,
+                                                  std::int64_t max_t_ms = INT64_MAX);
   std::vector<StressEvent> stress_events();
 
   const std::filesystem::path& file() const { return db_.file(); }

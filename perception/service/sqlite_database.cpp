@@ -108,4 +108,26 @@ SqliteStatement SqliteDatabase::prepare(std::string_view sql) { return SqliteSta
 
 int SqliteDatabase::changes() const { return sqlite3_changes(db_); }
 
+bool SqliteDatabase::in_transaction() const { return sqlite3_get_autocommit(db_) == 0; }
+
+void SqliteDatabase::set_commit_veto(std::function<bool()> veto) {
+  commit_veto_ = std::move(veto);
+  if (!commit_veto_) {
+    sqlite3_commit_hook(db_, nullptr, nullptr);
+    return;
+  }
+  // SQLite's commit hook: non-zero turns the COMMIT into a ROLLBACK. No
+  // exception may cross SQLite's C frames: a throwing veto vetoes.
+  sqlite3_commit_hook(
+      db_,
+      [](void* self) {
+        try {
+          return static_cast<SqliteDatabase*>(self)->commit_veto_() ? 1 : 0;
+        } catch (...) {
+          return 1;
+        }
+      },
+      this);
+}
+
 }  // namespace alplan::perception::service
