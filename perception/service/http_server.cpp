@@ -1,10 +1,13 @@
 #include "perception/service/http_server.h"
 
+#include <atomic>
+#include <future>
 #include <optional>
 #include <stdexcept>
 #include <thread>
 #include <vector>
 
+#include <boost/asio/executor_work_guard.hpp>
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/post.hpp>
 #include <boost/asio/steady_timer.hpp>
@@ -34,10 +37,19 @@ bool expects_continue(const HttpRequest& request) {
 
 // What every connection shares.
 struct ServerContext {
+  ServerContext(RequestHandler& h, ServiceMetrics& m, const ServerOptions& o, net::thread_pool& pool)
+      : handler(h), metrics(m), options(o), handler_pool(pool) {}
+
   RequestHandler& handler;
   ServiceMetrics& metrics;
   ServerOptions options;
   net::thread_pool& handler_pool;
+  // Set by stop(): requests still arriving get 503, connections close after
+  // their response instead of waiting for another request.
+  std::atomic<bool> stopping{false};
+  // Requests handed to the handler pool whose response is not written yet;
+  // stop() waits for them, so a committed batch's answer reaches its client.
+  std::atomic<int> answers_owed{0};
 };
 
 // One client connection: read a request, hand it to the handler pool, write
@@ -110,12 +122,18 @@ class Session : public std::enable_shared_from_this<Session> {
   void on_body(beast::error_code ec) {
     if (ec) return on_read_error(ec);
     deadline_.cancel();
+    if (context_.stopping.load()) {
+      context_.metrics.count_rejection("shutting_down");
+      context_.metrics.count_response(503);
+      return write(error_response(503, "shutting_down", "the service is stopping; retry later"), true);
+    }
+    context_.answers_owed.fetch_add(1);
     // The handler may wait for a commit: run it off the I/O threads.
     net::post(context_.handler_pool, [self = shared_from_this(), request = parser_->release()]() mutable {
       HttpResponse response = self->context_.handler.handle(request);
       net::post(self->stream_.get_executor(), [self, response = std::move(response)]() mutable {
-        const bool close_after = !response.keep_alive();
-        self->write(std::move(response), close_after);
+        const bool close_after = !response.keep_alive() || self->context_.stopping.load();
+        self->write(std::move(response), close_after, true);
       });
     });
   }
@@ -138,14 +156,16 @@ class Session : public std::enable_shared_from_this<Session> {
     close();  // the peer went away (or sent half a request and closed)
   }
 
-  void write(HttpResponse response, bool close_after) {
+  // `owed`: the answer to a request the handler took (stop() waits for it).
+  void write(HttpResponse response, bool close_after, bool owed = false) {
     response_ = std::make_shared<HttpResponse>(std::move(response));
     stream_.expires_after(context_.options.write_timeout);
     http::async_write(stream_, *response_,
-                      [self = shared_from_this(), close_after](beast::error_code ec, std::size_t) {
+                      [self = shared_from_this(), close_after, owed](beast::error_code ec, std::size_t) {
                         self->stream_.expires_never();
                         self->response_.reset();
-                        if (ec || close_after) return self->close();
+                        if (owed) self->context_.answers_owed.fetch_sub(1);
+                        if (ec || close_after || self->context_.stopping.load()) return self->close();
                         self->read_request();
                       });
   }
@@ -173,7 +193,7 @@ class Session : public std::enable_shared_from_this<Session> {
 struct HttpServer::Impl {
   Impl(RequestHandler& handler, ServiceMetrics& metrics, const ServerOptions& options)
       : handler_pool(options.handler_threads == 0 ? 1 : options.handler_threads),
-        context{handler, metrics, options, handler_pool} {}
+        context(handler, metrics, options, handler_pool) {}
 
   void accept() {
     acceptor->async_accept(net::make_strand(*io), [this](beast::error_code ec, tcp::socket socket) {
@@ -199,6 +219,9 @@ struct HttpServer::Impl {
   std::unique_ptr<net::io_context> io;
   std::unique_ptr<tcp::acceptor> acceptor;
   std::unique_ptr<net::steady_timer> retry_accept;
+  // Keeps the I/O threads running while stop() drains, when no socket
+  // operation is pending (a session waits for its handler).
+  std::optional<net::executor_work_guard<net::io_context::executor_type>> work;
   std::vector<std::thread> io_threads;
   std::uint16_t port = 0;
   bool running = false;
@@ -232,6 +255,7 @@ void HttpServer::start() {
     s.io.reset();
     throw std::runtime_error("cannot listen on " + where + ": " + e.code().message());
   }
+  s.work.emplace(s.io->get_executor());
   s.accept();
   for (std::size_t i = 0; i < (o.io_threads == 0 ? 1 : o.io_threads); ++i) {
     s.io_threads.emplace_back([io = s.io.get()] { io->run(); });
@@ -246,14 +270,29 @@ void HttpServer::stop() {
   if (!s.running) return;
   s.running = false;
   s.stopped = true;
+  s.context.stopping.store(true);
+  // No new connections: the acceptor is closed on its own thread.
+  std::promise<void> closed;
+  net::post(*s.io, [&s, &closed] {
+    beast::error_code ignored;
+    s.acceptor->close(ignored);
+    s.retry_accept->cancel();
+    closed.set_value();
+  });
+  closed.get_future().wait();
+  // Running handlers finish (their commits complete) while the I/O threads
+  // still run, so their answers are written: a client whose batch was
+  // committed hears so. A client that does not read its answer is given
+  // up on after the write timeout.
+  s.handler_pool.join();
+  const auto give_up = std::chrono::steady_clock::now() + s.context.options.write_timeout;
+  while (s.context.answers_owed.load() > 0 && std::chrono::steady_clock::now() < give_up) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  s.work.reset();
   s.io->stop();
   for (std::thread& t : s.io_threads) t.join();
   s.io_threads.clear();
-  beast::error_code ignored;
-  s.acceptor->close(ignored);
-  // Running handlers finish (their commits complete); their responses are
-  // posted to the stopped io_context and dropped with it.
-  s.handler_pool.join();
   s.acceptor.reset();
   s.retry_accept.reset();
   s.io.reset();  // destroys the pending operations and with them the sessions and sockets

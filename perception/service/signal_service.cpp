@@ -9,8 +9,12 @@ SignalService::SignalService(DeviceRegistry registry, std::optional<StressClassi
       store_(options.database, options.durability),
       events_(options.event_queue_capacity) {
   if (classifier) detector_ = std::make_unique<ClassifierStressDetector>(std::move(*classifier), options.smoothing);
-  ingest_ = std::make_unique<ReadingIngest>(store_, detector_.get(), events_, registry_, options.priming_readings);
-  handler_ = std::make_unique<RequestHandler>(registry_, *ingest_, metrics_, events_, options.limits);
+  if (options.commit_veto) store_.set_commit_veto(options.commit_veto);
+  IngestOptions ingest;
+  ingest.priming_readings = options.priming_readings;
+  ingest.max_clock_skew_ms = options.limits.max_clock_skew_ms;
+  ingest_ = std::make_unique<ReadingIngest>(store_, detector_.get(), events_, registry_, std::move(ingest));
+  handler_ = std::make_unique<RequestHandler>(registry_, *ingest_, metrics_, events_, options.limits, options.error_log);
   ServerOptions server = options.server;
   server.parse_limits.max_body_bytes = options.limits.max_body_bytes;
   server_ = std::make_unique<HttpServer>(*handler_, metrics_, server);

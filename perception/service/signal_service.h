@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -42,6 +43,11 @@ struct SignalServiceOptions {
   // Per device, the latest stored readings replayed into the detector at
   // start-up: four smoothing windows, so the hysteresis settles where it was.
   std::size_t priming_readings = 24;
+  // Fault injection (tests, the soak benchmark): asked at every COMMIT of
+  // readings, true fails it (SqliteDatabase::set_commit_veto). Called on the
+  // committing thread only. Empty in production.
+  std::function<bool()> commit_veto;
+  ErrorLog error_log = log_to_stderr;
 };
 
 class SignalService {

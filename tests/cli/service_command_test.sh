@@ -23,7 +23,16 @@ expect() {
 
 expect 0 "" "$alplan" wristband tokens --devices 3 --out tokens.txt
 [ "$(grep -c '^wb-0[123] [0-9a-f]\{32\} senior-0[123]$' tokens.txt)" -eq 3 ] || fail "tokens.txt: $(cat tokens.txt)"
-printf 'wb-01 short senior\n' > short.txt
+[ "$(stat -c %a tokens.txt)" = 600 ] || fail "tokens.txt has mode $(stat -c %a tokens.txt), expected 600"
+expect 2 "tokens.txt: error: the file exists; remove it or give --force" "$alplan" wristband tokens --devices 3 --out tokens.txt
+cp tokens.txt tokens-before.txt
+expect 0 "" "$alplan" wristband tokens --devices 3 --out tokens.txt --force
+[ "$(stat -c %a tokens.txt)" = 600 ] && ! cmp -s tokens.txt tokens-before.txt || fail "--force did not rewrite tokens.txt 0600"
+# A tokens file others can read is refused, naming the file and the fix.
+cp tokens.txt open.txt && chmod 644 open.txt
+expect 2 "open.txt: error: the tokens file is readable by others (mode 0644); run: chmod 600 open.txt" \
+  "$alplan" serve --port 0 --db s.db --tokens open.txt --no-stress
+printf 'wb-01 short senior\n' > short.txt && chmod 600 short.txt
 
 expect 2 "error: missing.txt: error: cannot open the file" "$alplan" serve --port 0 --db s.db --tokens missing.txt
 expect 2 "short.txt:1: error: token too short" "$alplan" serve --port 0 --db s.db --tokens short.txt
@@ -36,7 +45,7 @@ expect 2 "--rate must be between" \
 expect 2 "URL 'ftp://x': expected http://host:port[/path]" \
   "$alplan" wristband simulate --devices 1 --rate 0.2 --url ftp://x --tokens tokens.txt
 
-"$alplan" serve --port 0 --db s.db --tokens tokens.txt >serve.out 2>serve.err &
+"$alplan" serve --port 0 --db s.db --tokens tokens.txt --events-out - >serve.out 2>serve.err &
 pid=$!
 for _ in $(seq 100); do grep -q "serving on" serve.out && break; sleep 0.2; done
 url=$(grep -o 'http://[0-9.]*:[0-9]*' serve.out) || fail "no 'serving on' line"
@@ -54,6 +63,9 @@ wait "$pid" || fail "serve exited $? after SIGTERM"
 grep -q '"event":"stressed","senior":"senior-01"' serve.out || fail "no stress event: $(cat serve.out)"
 [ "$(grep -c '"event"' serve.out)" -eq 1 ] || fail "events for calm seniors: $(cat serve.out)"
 grep -q "serve: stopped; stored 36 readings" serve.err || fail "$(cat serve.err)"
+for f in s.db s.db-wal s.db-shm; do
+  [ ! -e "$f" ] || [ "$(stat -c %a "$f")" = 600 ] || fail "$f has mode $(stat -c %a "$f"), expected 600"
+done
 
 # Nothing listens any more: the readings stay queued, the run is incomplete.
 expect 1 "INCOMPLETE: some readings not acknowledged" "$alplan" wristband simulate --devices 1 --rate 0.2 \
@@ -61,7 +73,7 @@ expect 1 "INCOMPLETE: some readings not acknowledged" "$alplan" wristband simula
 # The service as the deliberation loop's source: a stressed senior's event
 # runs emotion -> goal -> plan -> act for that senior, in the same process.
 expect 2 "--deliberate: give the seniors' face" "$alplan" serve --port 0 --db d.db --tokens tokens.txt --deliberate
-sed 's/senior-01$/senior1/' tokens.txt > tokens-home.txt
+sed 's/senior-01$/senior1/' tokens.txt > tokens-home.txt && chmod 600 tokens-home.txt
 "$alplan" serve --port 0 --db d.db --tokens tokens-home.txt --deliberate --emotion terrified >deliberate.out 2>serve.err &
 pid=$!
 for _ in $(seq 100); do grep -q "serving on" deliberate.out && break; sleep 0.2; done
