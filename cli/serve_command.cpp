@@ -55,6 +55,9 @@ struct ServeOptions {
   double duration_s = 0.0;
   std::int64_t max_clock_skew_ms = service::kDefaultMaxClockSkewMs;
   std::string events_out;
+  std::string admin_bind = "127.0.0.1";
+  std::uint16_t admin_port = 0;
+  bool detailed_metrics = false;
   bool deliberate = false;
   DeliberationSettings deliberation;
 };
@@ -155,6 +158,9 @@ int run_serve(const ServeOptions& o) {
   options.limits.max_body_bytes = o.max_body;
   options.limits.max_batch = o.max_batch;
   options.limits.max_clock_skew_ms = o.max_clock_skew_ms;
+  options.limits.detailed_metrics = o.detailed_metrics;
+  options.admin.bind_address = o.admin_bind;
+  options.admin.port = o.admin_port;
   const sigset_t signals = block_stop_signals();
   std::unique_ptr<service::SignalService> signal_service;
   std::unique_ptr<Deliberator> deliberator;
@@ -171,6 +177,8 @@ int run_serve(const ServeOptions& o) {
   }
   std::cout << "serving on " << signal_service->url() << " (database " << o.db << ", "
             << signal_service->registry().size() << " devices)" << std::endl;
+  // On stderr: stdout's first line stays the one scripts read the URL from.
+  std::cerr << "serve: admin on " << signal_service->admin_url() << " (GET /healthz, /metrics)" << std::endl;
   std::thread consumer([&deliberator, &events_out, &events = signal_service->events()] {
     while (true) {
       const std::optional<service::StressEvent> e = events.pop_wait(std::chrono::milliseconds(500));
@@ -217,6 +225,10 @@ void add_serve_command(CLI::App& app, int& exit_code) {
   s->add_option("--max-clock-skew", o->max_clock_skew_ms,
                 "Milliseconds a reading may be stamped ahead of this machine's clock (422 beyond)")
       ->check(CLI::Range(std::int64_t{0}, std::int64_t{86400000}));
+  s->add_option("--admin-bind", o->admin_bind, "Address of the /healthz and /metrics listener (keep it loopback)");
+  s->add_option("--admin-port", o->admin_port, "Port of the /healthz and /metrics listener (0: any free one, printed)");
+  s->add_flag("--detailed-metrics", o->detailed_metrics,
+              "Per-device missing readings and stress transitions in /metrics and /healthz");
   s->add_option("--events-out", o->events_out,
                 "Write each stress event as a JSON line to '-' (stdout) or FILE (mode 0600); default: nowhere");
   s->add_flag("--deliberate", o->deliberate,

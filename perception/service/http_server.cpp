@@ -130,7 +130,7 @@ class Session : public std::enable_shared_from_this<Session> {
     context_.answers_owed.fetch_add(1);
     // The handler may wait for a commit: run it off the I/O threads.
     net::post(context_.handler_pool, [self = shared_from_this(), request = parser_->release()]() mutable {
-      HttpResponse response = self->context_.handler.handle(request);
+      HttpResponse response = self->context_.handler.handle(request, self->context_.options.endpoints);
       net::post(self->stream_.get_executor(), [self, response = std::move(response)]() mutable {
         const bool close_after = !response.keep_alive() || self->context_.stopping.load();
         self->write(std::move(response), close_after, true);
@@ -189,6 +189,12 @@ class Session : public std::enable_shared_from_this<Session> {
 };
 
 }  // namespace
+
+bool is_loopback_address(const std::string& address) {
+  beast::error_code error;
+  const net::ip::address parsed = net::ip::make_address(address, error);
+  return !error && parsed.is_loopback();
+}
 
 struct HttpServer::Impl {
   Impl(RequestHandler& handler, ServiceMetrics& metrics, const ServerOptions& options)

@@ -40,7 +40,11 @@ struct ServerOptions {
   std::chrono::milliseconds request_timeout{10000};
   std::chrono::milliseconds write_timeout{10000};
   ParseLimits parse_limits{};
+  Endpoints endpoints = Endpoints::All;
 };
+
+// True for 127.0.0.0/8 and ::1; false for anything else, unparsable included.
+bool is_loopback_address(const std::string& address);
 
 class HttpServer {
  public:

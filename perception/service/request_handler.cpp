@@ -132,11 +132,11 @@ RequestHandler::RequestHandler(const DeviceRegistry& registry, ReadingIngest& in
       limits_(limits),
       error_log_(std::move(error_log)) {}
 
-HttpResponse RequestHandler::handle(const HttpRequest& request) {
+HttpResponse RequestHandler::handle(const HttpRequest& request, Endpoints served) {
   HttpResponse response;
   try {
     try {
-      response = route(request);
+      response = route(request, served);
     } catch (const Rejection& r) {
       metrics_.count_rejection(r.reason);
       response = error_response(r.status, r.reason, r.message, request.version(), request.keep_alive());
@@ -153,9 +153,15 @@ HttpResponse RequestHandler::handle(const HttpRequest& request) {
   return response;
 }
 
-HttpResponse RequestHandler::route(const HttpRequest& request) {
+HttpResponse RequestHandler::route(const HttpRequest& request, Endpoints served) {
   const std::string_view path = path_of({request.target().data(), request.target().size()});
   const http::verb method = request.method();
+  if (served == Endpoints::Readings && path != "/v1/readings") {
+    throw Rejection{404, "not_found", "no such path; this listener serves POST /v1/readings only"};
+  }
+  if (served == Endpoints::Admin && path != "/healthz" && path != "/metrics") {
+    throw Rejection{404, "not_found", "no such path; this listener serves GET /healthz and GET /metrics only"};
+  }
   if (path == "/v1/readings") {
     if (method != http::verb::post) throw Rejection{405, "method_not_allowed", "/v1/readings takes POST"};
     const auto start = std::chrono::steady_clock::now();
@@ -218,13 +224,13 @@ HttpResponse RequestHandler::post_readings(const HttpRequest& request) {
 
 HttpResponse RequestHandler::healthz(const HttpRequest& request) const {
   const IngestCounters counters = ingest_.counters();
-  return json_response(200,
-                       {{"status", "ok"},
-                        {"devices", registry_.size()},
-                        {"stored_since_start", counters.stored},
-                        {"stress_events", counters.became_stressed + counters.became_calm},
-                        {"uptime_s", metrics_.uptime_seconds()}},
-                       request);
+  json body = {{"status", "ok"},
+               {"devices", registry_.size()},
+               {"stored_since_start", counters.stored},
+               {"uptime_s", metrics_.uptime_seconds()}};
+  // With one senior, a count of stress events is that senior's state.
+  if (limits_.detailed_metrics) body["stress_events"] = counters.became_stressed + counters.became_calm;
+  return json_response(200, body, request);
 }
 
 HttpResponse RequestHandler::metrics(const HttpRequest& request) const {
@@ -232,7 +238,8 @@ HttpResponse RequestHandler::metrics(const HttpRequest& request) const {
   response.set(http::field::server, "alplan");
   response.set(http::field::content_type, "text/plain; version=0.0.4; charset=utf-8");
   response.keep_alive(request.keep_alive());
-  response.body() = metrics_.render_prometheus(ingest_.counters(), ingest_.missing_by_device(), events_.dropped());
+  response.body() = metrics_.render_prometheus(ingest_.counters(), ingest_.missing_by_device(), events_.dropped(),
+                                               limits_.detailed_metrics);
   response.prepare_payload();
   return response;
 }

@@ -19,8 +19,10 @@
 //     503 the database failed (Retry-After: 1); the body says no more (the
 //         file and SQL go to the error log)
 //   GET /healthz       200 {"status":"ok","devices":N,"stored_since_start":N,
-//                      "stress_events":N,"uptime_s":S}
+//                      "uptime_s":S} (and "stress_events":N when detailed)
 //   GET /metrics       200 Prometheus text format (service_metrics.h)
+//   A listener serves the readings, the admin endpoints, or both (Endpoints);
+//   the others are 404 there.
 //   other paths 404, other methods on these paths 405 (with Allow).
 //
 // Every error body is {"error":"<what, naming the place>","reason":"<label>"}
@@ -55,7 +57,14 @@ struct HandlerLimits {
   // (422): the wristband's clock is wrong, and the reading would blind its
   // senior's detector (reading_ingest.h).
   std::int64_t max_clock_skew_ms = kDefaultMaxClockSkewMs;
+  // /metrics and /healthz carry nothing per device or senior (device ids,
+  // stress transitions) unless this is set.
+  bool detailed_metrics = false;
 };
+
+// Which endpoints a listener serves: the wristbands' one POST /v1/readings,
+// the operator's /healthz and /metrics, or both (a loopback-only service).
+enum class Endpoints { Readings, Admin, All };
 
 // Where the handler reports what it keeps out of its answers (the database's
 // file and SQL behind a 503, an exception behind a 500).
@@ -75,12 +84,12 @@ class RequestHandler {
 
   // Never throws: anything unexpected becomes a 500 with a JSON error.
   // Counts the response (and the rejection reason) in the metrics.
-  HttpResponse handle(const HttpRequest& request);
+  HttpResponse handle(const HttpRequest& request, Endpoints served = Endpoints::All);
 
   const HandlerLimits& limits() const { return limits_; }
 
  private:
-  HttpResponse route(const HttpRequest& request);
+  HttpResponse route(const HttpRequest& request, Endpoints served);
   HttpResponse post_readings(const HttpRequest& request);
   HttpResponse healthz(const HttpRequest& request) const;
   HttpResponse metrics(const HttpRequest& request) const;

@@ -17,23 +17,47 @@ SignalService::SignalService(DeviceRegistry registry, std::optional<StressClassi
   handler_ = std::make_unique<RequestHandler>(registry_, *ingest_, metrics_, events_, options.limits, options.error_log);
   ServerOptions server = options.server;
   server.parse_limits.max_body_bytes = options.limits.max_body_bytes;
+  server.endpoints = is_loopback_address(server.bind_address) ? Endpoints::All : Endpoints::Readings;
   server_ = std::make_unique<HttpServer>(*handler_, metrics_, server);
+  if (options.admin_listener) {
+    ServerOptions admin = options.admin;
+    admin.endpoints = Endpoints::Admin;
+    admin_server_ = std::make_unique<HttpServer>(*handler_, metrics_, admin);
+  }
 }
 
 SignalService::~SignalService() { stop(); }
 
-void SignalService::start() { server_->start(); }
+void SignalService::start() {
+  if (admin_server_) admin_server_->start();
+  try {
+    server_->start();
+  } catch (...) {
+    if (admin_server_) admin_server_->stop();
+    throw;
+  }
+}
 
 void SignalService::stop() {
   server_->stop();
+  if (admin_server_) admin_server_->stop();
   events_.close();
 }
 
-std::string SignalService::url() const {
+namespace {
+
+std::string url_of(const std::string& host, std::uint16_t port) {
   // A wildcard address is not one to connect to; loopback reaches it.
-  const std::string& host = options_.server.bind_address;
   const bool wildcard = host == "0.0.0.0" || host == "::";
-  return "http://" + (wildcard ? std::string("127.0.0.1") : host) + ":" + std::to_string(server_->port());
+  return "http://" + (wildcard ? std::string("127.0.0.1") : host) + ":" + std::to_string(port);
+}
+
+}  // namespace
+
+std::string SignalService::url() const { return url_of(options_.server.bind_address, server_->port()); }
+
+std::string SignalService::admin_url() const {
+  return admin_server_ ? url_of(options_.admin.bind_address, admin_server_->port()) : std::string();
 }
 
 }  // namespace alplan::perception::service

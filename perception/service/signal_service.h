@@ -36,7 +36,14 @@ namespace alplan::perception::service {
 struct SignalServiceOptions {
   std::filesystem::path database;
   Durability durability = Durability::Full;
+  // The wristbands' listener. On a loopback address it serves the admin
+  // endpoints too (nobody off the machine reaches either); otherwise only
+  // POST /v1/readings.
   ServerOptions server{};
+  // The operator's listener for GET /healthz and /metrics, loopback by
+  // default, on its own port (0: any free one, see admin_port()).
+  ServerOptions admin{};
+  bool admin_listener = true;
   HandlerLimits limits{};
   StressSmoothing smoothing{};
   std::size_t event_queue_capacity = 1024;
@@ -69,6 +76,9 @@ class SignalService {
 
   std::uint16_t port() const { return server_->port(); }
   std::string url() const;  // http://<bind address>:<port>
+  // The admin listener's port and URL (0 and empty without one).
+  std::uint16_t admin_port() const { return admin_server_ ? admin_server_->port() : 0; }
+  std::string admin_url() const;
 
   StressEventQueue& events() { return events_; }
   IngestCounters counters() const { return ingest_->counters(); }
@@ -85,6 +95,7 @@ class SignalService {
   std::unique_ptr<ReadingIngest> ingest_;
   ServiceMetrics metrics_;
   std::unique_ptr<RequestHandler> handler_;
+  std::unique_ptr<HttpServer> admin_server_;
   std::unique_ptr<HttpServer> server_;  // last: stopped and destroyed first
 };
 

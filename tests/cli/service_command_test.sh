@@ -51,6 +51,9 @@ for _ in $(seq 100); do grep -q "serving on" serve.out && break; sleep 0.2; done
 url=$(grep -o 'http://[0-9.]*:[0-9]*' serve.out) || fail "no 'serving on' line"
 
 [ "$(curl -s -o /dev/null -w '%{http_code}' "$url/healthz")" = 200 ] || fail "healthz"
+admin=$(grep -o 'serve: admin on http://127.0.0.1:[0-9]*' serve.err | grep -o 'http://.*') || fail "no admin line"
+[ "$(curl -s -o /dev/null -w '%{http_code}' "$admin/metrics")" = 200 ] || fail "admin metrics"
+[ "$(curl -s -o /dev/null -w '%{http_code}' "$admin/v1/readings")" = 404 ] || fail "readings on the admin port"
 answer=$(curl -s -w ' %{http_code}' -H 'Content-Type: application/json' -d '[]' "$url/v1/readings")
 [ "$answer" = '{"error":"missing Authorization: Bearer <device token>","reason":"unauthorized"} 401' ] || fail "$answer"
 
