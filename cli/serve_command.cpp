@@ -2,6 +2,8 @@
 //              [--max-body BYTES] [--max-batch N] [--threads N] [--io-threads N]
 //              [--max-connections N] [--request-timeout MS] [--sync full|normal]
 //              [--no-stress] [--duration S] [--max-clock-skew MS] [--events-out -|FILE]
+//              [--tls-cert PEM --tls-key PEM | --insecure-http] [--max-connections-per-client N]
+//              [--admin-bind ADDR] [--admin-port P] [--detailed-metrics]
 //              [--deliberate --emotion E|--face IMAGE [--problem P] [--camera DIR] ...]
 // The signal service (perception/service/signal_service.h): wristbands POST
 // readings, the service stores them, detects stress per senior and, with
@@ -55,6 +57,10 @@ struct ServeOptions {
   double duration_s = 0.0;
   std::int64_t max_clock_skew_ms = service::kDefaultMaxClockSkewMs;
   std::string events_out;
+  std::string tls_cert;
+  std::string tls_key;
+  bool insecure_http = false;
+  std::size_t max_connections_per_client = 256;
   std::string admin_bind = "127.0.0.1";
   std::uint16_t admin_port = 0;
   bool detailed_metrics = false;
@@ -145,7 +151,30 @@ void wait_for_stop(const sigset_t& signals, double duration_s) {
   }
 }
 
-int run_serve(const ServeOptions& o) {
+// Plain HTTP would carry the tokens and the seniors' readings in clear: off
+// loopback it takes TLS or an explicit --insecure-http. The message starts as
+// a failed bind's does, since it is the same refusal to listen there.
+void check_transport(const ServeOptions& o) {
+  const bool tls = !o.tls_cert.empty() || !o.tls_key.empty();
+  if (tls && (o.tls_cert.empty() || o.tls_key.empty())) {
+    throw CommandInputError("--tls-cert and --tls-key go together");
+  }
+  if (tls) {
+    if (const std::string problem = service::private_file_problem(o.tls_key, "TLS key"); !problem.empty()) {
+      throw CommandInputError(problem);
+    }
+    return;
+  }
+  if (o.insecure_http) return;
+  for (const auto& [address, port] : {std::pair{o.bind, o.port}, std::pair{o.admin_bind, o.admin_port}}) {
+    if (service::is_loopback_address(address)) continue;
+    throw CommandInputError("cannot listen on " + address + ":" + std::to_string(port) +
+                            ": plain HTTP off loopback would carry tokens and readings in clear; give --tls-cert "
+                            "and --tls-key, or --insecure-http");
+  }
+}
+
+service::SignalServiceOptions service_options(const ServeOptions& o) {
   service::SignalServiceOptions options;
   options.database = o.db;
   options.durability = o.sync == "normal" ? service::Durability::Normal : service::Durability::Full;
@@ -161,15 +190,24 @@ int run_serve(const ServeOptions& o) {
   options.limits.detailed_metrics = o.detailed_metrics;
   options.admin.bind_address = o.admin_bind;
   options.admin.port = o.admin_port;
+  options.server.max_connections_per_client = o.max_connections_per_client;
+  options.server.tls_certificate_file = o.tls_cert;
+  options.server.tls_key_file = o.tls_key;
+  return options;
+}
+
+int run_serve(const ServeOptions& o) {
   const sigset_t signals = block_stop_signals();
   std::unique_ptr<service::SignalService> signal_service;
   std::unique_ptr<Deliberator> deliberator;
   std::unique_ptr<std::ostream> events_out;
   try {
+    check_transport(o);
     deliberator = make_deliberator(o);
     service::DeviceRegistry registry = read_private_registry(o.tokens);
     events_out = open_events_out(o.events_out);
-    signal_service = std::make_unique<service::SignalService>(std::move(registry), load_classifier(o), options);
+    signal_service =
+        std::make_unique<service::SignalService>(std::move(registry), load_classifier(o), service_options(o));
     signal_service->start();
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
@@ -225,6 +263,13 @@ void add_serve_command(CLI::App& app, int& exit_code) {
   s->add_option("--max-clock-skew", o->max_clock_skew_ms,
                 "Milliseconds a reading may be stamped ahead of this machine's clock (422 beyond)")
       ->check(CLI::Range(std::int64_t{0}, std::int64_t{86400000}));
+  s->add_option("--tls-cert", o->tls_cert, "PEM certificate (chain) to serve HTTPS with; with --tls-key");
+  s->add_option("--tls-key", o->tls_key, "PEM private key of --tls-cert (must be mode 0600 or stricter)");
+  s->add_flag("--insecure-http", o->insecure_http,
+              "Allow plain HTTP on a non-loopback address (tokens and readings in clear)");
+  s->add_option("--max-connections-per-client", o->max_connections_per_client,
+                "Open connections one client address may hold before its new ones get 503")
+      ->check(CLI::PositiveNumber);
   s->add_option("--admin-bind", o->admin_bind, "Address of the /healthz and /metrics listener (keep it loopback)");
   s->add_option("--admin-port", o->admin_port, "Port of the /healthz and /metrics listener (0: any free one, printed)");
   s->add_flag("--detailed-metrics", o->detailed_metrics,

@@ -2,7 +2,7 @@
 //                           [--duration S] [--stressed K] [--typical-subjects]
 //                           [--seed S] [--speed X]
 //                           [--sample-rate HZ] [--connections N] [--boot B]
-//                           [--batch N] [--drain-timeout S] [--json]
+//                           [--batch N] [--drain-timeout S] [--json] [--cacert PEM]
 //   Plays N simulated wristbands against the service (perception/service/
 //   wristband_fleet.h) and prints a summary. Exit 0 when every reading was
 //   acknowledged, 1 when some were not (service down past the drain timeout,
@@ -113,7 +113,8 @@ void add_wristband_command(CLI::App& app, int& exit_code) {
       ->check(CLI::PositiveNumber);
   s->add_option("--rate", f.rate_hz, "Readings per wristband per second of signal (1/30 to 1; the board: 0.2)")
       ->required();
-  s->add_option("--url", f.url, "The service, http://host:port")->required();
+  s->add_option("--url", f.url, "The service, http://host:port or https://host[:port]")->required();
+  s->add_option("--cacert", f.ca_file, "For https: the CA certificate(s) to check the service's with (default: the system's)");
   s->add_option("--tokens", o->tokens, "Tokens file (device token senior), as given to serve")->required();
   s->add_option("--duration", f.duration_s, "Seconds of signal per wristband");
   s->add_option("--stressed", f.stressed, "The first K wristbands' seniors are stressed");

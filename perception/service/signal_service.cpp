@@ -22,6 +22,11 @@ SignalService::SignalService(DeviceRegistry registry, std::optional<StressClassi
   if (options.admin_listener) {
     ServerOptions admin = options.admin;
     admin.endpoints = Endpoints::Admin;
+    // Off loopback the admin endpoints need TLS as much as the readings do.
+    if (!is_loopback_address(admin.bind_address)) {
+      admin.tls_certificate_file = server.tls_certificate_file;
+      admin.tls_key_file = server.tls_key_file;
+    }
     admin_server_ = std::make_unique<HttpServer>(*handler_, metrics_, admin);
   }
 }
@@ -46,18 +51,23 @@ void SignalService::stop() {
 
 namespace {
 
-std::string url_of(const std::string& host, std::uint16_t port) {
+std::string url_of(const ServerOptions& server, std::uint16_t port) {
   // A wildcard address is not one to connect to; loopback reaches it.
+  const std::string& host = server.bind_address;
   const bool wildcard = host == "0.0.0.0" || host == "::";
-  return "http://" + (wildcard ? std::string("127.0.0.1") : host) + ":" + std::to_string(port);
+  const char* scheme = server.tls_certificate_file.empty() ? "http://" : "https://";
+  return scheme + (wildcard ? std::string("127.0.0.1") : host) + ":" + std::to_string(port);
 }
 
 }  // namespace
 
-std::string SignalService::url() const { return url_of(options_.server.bind_address, server_->port()); }
+std::string SignalService::url() const { return url_of(options_.server, server_->port()); }
 
 std::string SignalService::admin_url() const {
-  return admin_server_ ? url_of(options_.admin.bind_address, admin_server_->port()) : std::string();
+  if (!admin_server_) return {};
+  ServerOptions admin = options_.admin;
+  if (!is_loopback_address(admin.bind_address)) admin.tls_certificate_file = options_.server.tls_certificate_file;
+  return url_of(admin, admin_server_->port());
 }
 
 }  // namespace alplan::perception::service

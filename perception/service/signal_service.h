@@ -75,7 +75,7 @@ class SignalService {
   void stop();
 
   std::uint16_t port() const { return server_->port(); }
-  std::string url() const;  // http://<bind address>:<port>
+  std::string url() const;  // http[s]://<bind address>:<port>
   // The admin listener's port and URL (0 and empty without one).
   std::uint16_t admin_port() const { return admin_server_ ? admin_server_->port() : 0; }
   std::string admin_url() const;
