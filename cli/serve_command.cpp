@@ -3,7 +3,7 @@
 //              [--max-connections N] [--request-timeout MS] [--sync full|normal]
 //              [--no-stress] [--duration S] [--max-clock-skew MS] [--events-out -|FILE]
 //              [--tls-cert PEM --tls-key PEM | --insecure-http] [--max-connections-per-client N]
-//              [--admin-bind ADDR] [--admin-port P] [--detailed-metrics]
+//              [--admin-bind ADDR] [--admin-port P] [--detailed-metrics] [--retention-days D]
 //              [--deliberate --emotion E|--face IMAGE [--problem P] [--camera DIR] ...]
 // The signal service (perception/service/signal_service.h): wristbands POST
 // readings, the service stores them, detects stress per senior and, with
@@ -61,6 +61,7 @@ struct ServeOptions {
   std::string tls_key;
   bool insecure_http = false;
   std::size_t max_connections_per_client = 256;
+  double retention_days = 0.0;
   std::string admin_bind = "127.0.0.1";
   std::uint16_t admin_port = 0;
   bool detailed_metrics = false;
@@ -193,6 +194,7 @@ service::SignalServiceOptions service_options(const ServeOptions& o) {
   options.server.max_connections_per_client = o.max_connections_per_client;
   options.server.tls_certificate_file = o.tls_cert;
   options.server.tls_key_file = o.tls_key;
+  options.retention.days = o.retention_days;
   return options;
 }
 
@@ -270,6 +272,9 @@ void add_serve_command(CLI::App& app, int& exit_code) {
   s->add_option("--max-connections-per-client", o->max_connections_per_client,
                 "Open connections one client address may hold before its new ones get 503")
       ->check(CLI::PositiveNumber);
+  s->add_option("--retention-days", o->retention_days,
+                "Delete readings and stress events older than this many days, in the background (0: keep all)")
+      ->check(CLI::NonNegativeNumber);
   s->add_option("--admin-bind", o->admin_bind, "Address of the /healthz and /metrics listener (keep it loopback)");
   s->add_option("--admin-port", o->admin_port, "Port of the /healthz and /metrics listener (0: any free one, printed)");
   s->add_flag("--detailed-metrics", o->detailed_metrics,

@@ -25,6 +25,7 @@ CREATE TABLE IF NOT EXISTS readings (
   PRIMARY KEY (device, boot, seq)
 ) WITHOUT ROWID;
 CREATE INDEX IF NOT EXISTS readings_by_time ON readings (device, t_ms);
+CREATE INDEX IF NOT EXISTS readings_by_arrival ON readings (received_ms);
 CREATE TABLE IF NOT EXISTS stress_events (
   id INTEGER PRIMARY KEY,
   senior TEXT NOT NULL,
@@ -168,6 +169,24 @@ std::vector<ReceivedReading> ReadingStore::latest_readings_of(const std::string&
   std::vector<ReceivedReading> out = select_readings(q);
   std::reverse(out.begin(), out.end());
   return out;
+}
+
+std::size_t ReadingStore::delete_readings_received_before(std::int64_t cutoff_ms, std::size_t limit) {
+  // Row values instead of DELETE ... LIMIT, which SQLite builds leave out by default.
+  SqliteStatement q = db_.prepare(
+      "DELETE FROM readings WHERE (device, boot, seq) IN "
+      "(SELECT device, boot, seq FROM readings WHERE received_ms < ? LIMIT ?)");
+  q.bind(1, cutoff_ms);
+  q.bind(2, static_cast<std::int64_t>(limit));
+  q.step();
+  return static_cast<std::size_t>(db_.changes());
+}
+
+std::size_t ReadingStore::delete_stress_events_recorded_before(std::int64_t cutoff_ms) {
+  SqliteStatement q = db_.prepare("DELETE FROM stress_events WHERE recorded_ms < ?");
+  q.bind(1, cutoff_ms);
+  q.step();
+  return static_cast<std::size_t>(db_.changes());
 }
 
 std::vector<StressEvent> ReadingStore::stress_events() {

@@ -6,7 +6,8 @@
 //   readings(device, boot, seq, t_ms, window_ms, hr_bpm, ibi_ms, sdnn_ms,
 //            rmssd_ms, beats, rejected_fraction, motion, received_ms)
 //     primary key (device, boot, seq): a re-sent reading is stored once;
-//     readings may arrive in any order.
+//     readings may arrive in any order. Indexed by (device, t_ms) for the
+//     detector's priming and by received_ms for retention.
 //   stress_events(id, senior, device, stressed, t_ms, stressed_fraction,
 //                 votes, recorded_ms)
 //
@@ -73,6 +74,12 @@ class ReadingStore {
   std::vector<ReceivedReading> latest_readings_of(const std::string& device, std::size_t limit,
                                                   std::int64_t max_t_ms = INT64_MAX);
   std::vector<StressEvent> stress_events();
+
+  // Retention (retention_sweeper.h): deletes up to `limit` readings that
+  // arrived before `cutoff_ms`, and every stress event recorded before it.
+  // Return how many rows went. Call inside a transaction.
+  std::size_t delete_readings_received_before(std::int64_t cutoff_ms, std::size_t limit);
+  std::size_t delete_stress_events_recorded_before(std::int64_t cutoff_ms);
 
   const std::filesystem::path& file() const { return db_.file(); }
 

@@ -19,6 +19,9 @@ SignalService::SignalService(DeviceRegistry registry, std::optional<StressClassi
   server.parse_limits.max_body_bytes = options.limits.max_body_bytes;
   server.endpoints = is_loopback_address(server.bind_address) ? Endpoints::All : Endpoints::Readings;
   server_ = std::make_unique<HttpServer>(*handler_, metrics_, server);
+  if (options.retention.days > 0.0) {
+    retention_ = std::make_unique<RetentionSweeper>(options.database, options.retention, options.error_log);
+  }
   if (options.admin_listener) {
     ServerOptions admin = options.admin;
     admin.endpoints = Endpoints::Admin;
@@ -41,9 +44,11 @@ void SignalService::start() {
     if (admin_server_) admin_server_->stop();
     throw;
   }
+  if (retention_) retention_->start();
 }
 
 void SignalService::stop() {
+  if (retention_) retention_->stop();
   server_->stop();
   if (admin_server_) admin_server_->stop();
   events_.close();

@@ -26,6 +26,7 @@
 #include "perception/service/reading_ingest.h"
 #include "perception/service/reading_store.h"
 #include "perception/service/request_handler.h"
+#include "perception/service/retention_sweeper.h"
 #include "perception/service/service_metrics.h"
 #include "perception/service/stress_event_queue.h"
 #include "perception/stress_classifier.h"
@@ -55,6 +56,8 @@ struct SignalServiceOptions {
   // committing thread only. Empty in production.
   std::function<bool()> commit_veto;
   ErrorLog error_log = log_to_stderr;
+  // Readings older than this are deleted in the background (days 0: never).
+  RetentionOptions retention{};
 };
 
 class SignalService {
@@ -95,6 +98,7 @@ class SignalService {
   std::unique_ptr<ReadingIngest> ingest_;
   ServiceMetrics metrics_;
   std::unique_ptr<RequestHandler> handler_;
+  std::unique_ptr<RetentionSweeper> retention_;
   std::unique_ptr<HttpServer> admin_server_;
   std::unique_ptr<HttpServer> server_;  // last: stopped and destroyed first
 };
