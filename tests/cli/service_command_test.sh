@@ -93,6 +93,9 @@ grep -q "deliberation for senior1 ended with exit 0" deliberate.out || fail "$(c
 # HTTPS: a self-signed certificate for 127.0.0.1; curl and the simulator trust it with --cacert.
 openssl req -x509 -newkey ec -pkeyopt ec_paramgen_curve:prime256v1 -nodes -days 2 -subj /CN=localhost \
   -addext subjectAltName=DNS:localhost,IP:127.0.0.1 -keyout key.pem -out cert.pem 2>/dev/null
+chmod 644 key.pem
+expect 2 "key.pem: error: the TLS key is readable by others (mode 0644); run: chmod 600 key.pem" \
+  "$alplan" serve --port 0 --db t.db --tokens tokens.txt --tls-cert cert.pem --tls-key key.pem
 chmod 600 key.pem
 expect 2 "--tls-cert and --tls-key go together" "$alplan" serve --port 0 --db t.db --tokens tokens.txt --tls-cert cert.pem
 expect 2 "error: cannot listen on 0.0.0.0:0: plain HTTP off loopback would carry tokens and readings in clear; give --tls-cert and --tls-key, or --insecure-http" \
