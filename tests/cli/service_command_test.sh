@@ -100,6 +100,8 @@ chmod 600 key.pem
 expect 2 "--tls-cert and --tls-key go together" "$alplan" serve --port 0 --db t.db --tokens tokens.txt --tls-cert cert.pem
 expect 2 "error: cannot listen on 0.0.0.0:0: plain HTTP off loopback would carry tokens and readings in clear; give --tls-cert and --tls-key, or --insecure-http" \
   "$alplan" serve --bind 0.0.0.0 --port 0 --db t.db --tokens tokens.txt --no-stress
+expect 2 "error: cannot listen on 0.0.0.0:0: plain HTTP off loopback" \
+  "$alplan" serve --admin-bind 0.0.0.0 --port 0 --db t.db --tokens tokens.txt --no-stress
 "$alplan" serve --bind 0.0.0.0 --port 0 --db t.db --tokens tokens.txt --no-stress --insecure-http --duration 0.5 >insecure.out 2>&1 \
   || fail "--insecure-http: $(cat insecure.out)"
 grep -q "serving on http://127.0.0.1:" insecure.out || fail "--insecure-http: $(cat insecure.out)"

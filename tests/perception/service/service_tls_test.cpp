@@ -102,3 +102,15 @@ TEST_CASE("tls: simulated wristbands deliver every reading over HTTPS") {
   CHECK(summary.total.made > 0);
   CHECK(service->counters().stored == summary.total.made);
 }
+
+TEST_CASE("tls: a client that connects and never starts the handshake is let go at the request deadline") {
+  test::ScratchDir dir("tls-silent");
+  const test::TestCertificate certificate = test::make_test_certificate(dir, "service");
+  const DeviceRegistry registry = test::test_registry(1);
+  SignalServiceOptions options = tls_options(dir, certificate);
+  options.server.request_timeout = 500ms;
+  auto service = test::start_service(registry, options, false);
+  const auto start = std::chrono::steady_clock::now();
+  CHECK(test::exchange_raw(service->port(), "", 5000ms).empty());  // closed without a word
+  CHECK(std::chrono::steady_clock::now() - start < 3s);
+}
