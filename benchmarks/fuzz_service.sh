@@ -12,7 +12,7 @@ mkdir -p "$out/corpus"
 
 service="$root/perception/service"
 sources=("$service"/{raw_request,request_handler,reading_message,device_registry,reading_ingest,reading_store}.cpp
-         "$service"/{sqlite_database,service_metrics,latency_histogram,stress_event_queue}.cpp
+         "$service"/{sqlite_database,private_file,service_metrics,latency_histogram,stress_event_queue}.cpp
          "$root/benchmarks/fuzz_service.cpp")
 binary="$out/fuzz_service"
 newest=$(ls -t "${sources[@]}" "$service"/*.h | head -1)

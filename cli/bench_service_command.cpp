@@ -1,5 +1,6 @@
 // alplan bench service [--devices N[,N...]] [--rate HZ] [--duration S] [--speed X]
 //                      [--threads N] [--sync full|normal] [--work-dir DIR]
+//                      [--tls-cert PEM --tls-key PEM]
 // The signal service's load benchmark: for each fleet size, starts a service
 // in this process on a free loopback port with a fresh database, plays that
 // many simulated wristbands against it (perception/service/wristband_fleet.h),
@@ -35,6 +36,10 @@ struct BenchServiceOptions {
   std::size_t connections = 8;
   std::string sync = "full";
   std::string work_dir = "build/bench-service";
+  // HTTPS with this certificate, which the wristbands then trust (a
+  // self-signed one, or give its CA's by making the chain file start with it).
+  std::string tls_cert;
+  std::string tls_key;
 };
 
 struct BenchRow {
@@ -82,6 +87,8 @@ BenchRow run_one(const BenchServiceOptions& o, std::size_t devices, const percep
   options.durability = o.sync == "normal" ? service::Durability::Normal : service::Durability::Full;
   options.server.handler_threads = o.threads;
   options.server.max_connections = 4096;
+  options.server.tls_certificate_file = o.tls_cert;
+  options.server.tls_key_file = o.tls_key;
   service::FleetOptions fleet_options;
   fleet_options.devices = devices;
   fleet_options.rate_hz = o.rate_hz;
@@ -90,6 +97,7 @@ BenchRow run_one(const BenchServiceOptions& o, std::size_t devices, const percep
   fleet_options.stressed = devices / 4;
   fleet_options.sample_rate_hz = 25.0;  // the cheapest rate the core takes: the simulator shares the CPU
   fleet_options.connections = o.connections;
+  fleet_options.ca_file = o.tls_cert;
   BenchRow row;
   row.devices = devices;
   {
@@ -169,6 +177,8 @@ void add_bench_service_command(CLI::App* bench, int& exit_code) {
   s->add_option("--connections", o->connections, "Client threads (keep-alive connections)")->check(CLI::PositiveNumber);
   s->add_option("--sync", o->sync, "full or normal (see alplan serve)")->check(CLI::IsMember({"full", "normal"}));
   s->add_option("--work-dir", o->work_dir, "Where the databases go");
+  s->add_option("--tls-cert", o->tls_cert, "Serve HTTPS with this PEM certificate (the wristbands trust it)");
+  s->add_option("--tls-key", o->tls_key, "The PEM key of --tls-cert");
   s->callback([o, &exit_code] { exit_code = run_bench_service(*o); });
 }
 

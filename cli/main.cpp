@@ -25,5 +25,6 @@ int main(int argc, char** argv) {
     app.add_subcommand(c.name, c.help)->allow_extras();
   }
   app.get_subcommand("bench")->add_subcommand("service", alplan::cli::kBenchServiceHelp)->allow_extras();
+  app.get_subcommand("bench")->add_subcommand("soak", alplan::cli::kBenchSoakHelp)->allow_extras();
   return alplan::cli::parse_command_line(app, argc, argv, exit_code);
 }

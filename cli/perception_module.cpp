@@ -45,7 +45,7 @@ bool runs_in_perception_module(int argc, char** argv) {
   for (const ModuleCommand& c : kPerceptionCommands) {
     if (first == c.name) return true;
   }
-  return first == "bench" && argc > 2 && std::string(argv[2]) == "service";
+  return first == "bench" && argc > 2 && (std::string(argv[2]) == "service" || std::string(argv[2]) == "soak");
 }
 
 int run_perception_command(int argc, char** argv) {

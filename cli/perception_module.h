@@ -34,11 +34,13 @@ inline constexpr ModuleCommand kPerceptionCommands[] = {
     {"wristband", "Simulated wristbands against the signal service; device tokens"},
 };
 
-// True for the module's commands, and for `bench service` (the signal
-// service's load benchmark; the other benchmarks run in alplan itself).
+// True for the module's commands, and for `bench service` and `bench soak`
+// (the signal service's benchmarks; the others run in alplan itself).
 bool runs_in_perception_module(int argc, char** argv);
 inline constexpr const char* kBenchServiceHelp =
     "Load benchmark of the signal service: simulated wristbands, readings/s held and latency";
+inline constexpr const char* kBenchSoakHelp =
+    "Soak benchmark of the signal service: wristbands for minutes with commit failures, restarts, stalled clients";
 
 // Loads the module (ALPLAN_PERCEPTION_MODULE, else beside the executable)
 // and runs the command; prints a clear error and returns 2 if the module

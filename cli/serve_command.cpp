@@ -1,22 +1,27 @@
 // alplan serve --port P --db FILE --tokens FILE [--bind ADDR] [--model FILE]
 //              [--max-body BYTES] [--max-batch N] [--threads N] [--io-threads N]
 //              [--max-connections N] [--request-timeout MS] [--sync full|normal]
-//              [--no-stress] [--duration S]
+//              [--no-stress] [--duration S] [--max-clock-skew MS] [--events-out -|FILE]
+//              [--tls-cert PEM --tls-key PEM | --insecure-http] [--max-connections-per-client N]
+//              [--admin-bind ADDR] [--admin-port P] [--detailed-metrics] [--retention-days D]
 //              [--deliberate --emotion E|--face IMAGE [--problem P] [--camera DIR] ...]
 // The signal service (perception/service/signal_service.h): wristbands POST
-// readings, the service stores them, detects stress per senior and prints
-// each stress event as a JSON line on stdout (the in-process queue's
-// consumer here; the deliberation loop consumes the same queue). Runs until
+// readings, the service stores them, detects stress per senior and, with
+// --events-out, writes each stress event as a JSON line to stdout ("-") or a
+// file made mode 0600 (the in-process queue's consumer here; the
+// deliberation loop consumes the same queue). Seniors' names and states are
+// health data: without --events-out they are in the database only. Runs until
 // SIGINT or SIGTERM (or --duration seconds), then stops cleanly: exit 0.
 // With --deliberate the consumer is the deliberation loop too: each
 // "stressed" event runs layers 2-4 (deliberation_run.h) for that senior, one
 // event at a time, while the service keeps taking readings.
-// Bad options, tokens file, model or database, or an address that cannot be
-// bound: exit 2.
+// Bad options, tokens file (also one that others may read), model or
+// database, or an address that cannot be bound: exit 2.
 #include <CLI/CLI.hpp>
 
 #include <csignal>
 #include <ctime>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <thread>
@@ -26,6 +31,7 @@
 #include "cli/commands.h"
 #include "cli/deliberation_run.h"
 #include "cli/perceive_common.h"
+#include "perception/service/private_file.h"
 #include "perception/service/signal_service.h"
 #include "perception/simulated_stress_model.h"
 
@@ -49,6 +55,16 @@ struct ServeOptions {
   long request_timeout_ms = 10000;
   std::string sync = "full";
   double duration_s = 0.0;
+  std::int64_t max_clock_skew_ms = service::kDefaultMaxClockSkewMs;
+  std::string events_out;
+  std::string tls_cert;
+  std::string tls_key;
+  bool insecure_http = false;
+  std::size_t max_connections_per_client = 256;
+  double retention_days = 0.0;
+  std::string admin_bind = "127.0.0.1";
+  std::uint16_t admin_port = 0;
+  bool detailed_metrics = false;
   bool deliberate = false;
   DeliberationSettings deliberation;
 };
@@ -88,11 +104,30 @@ std::optional<perception::StressClassifier> load_classifier(const ServeOptions& 
   return perception::train_simulated_stress_classifier({});
 }
 
-void print_event(const service::StressEvent& e) {
+void print_event(std::ostream& out, const service::StressEvent& e) {
   const nlohmann::json line = {{"event", e.stressed ? "stressed" : "calm"}, {"senior", e.senior},
                                {"device", e.device}, {"t_ms", e.t_ms},
                                {"stressed_fraction", e.stressed_fraction}, {"votes", e.votes}};
-  std::cout << line.dump() << std::endl;
+  out << line.dump() << std::endl;
+}
+
+// Where --events-out sends the events: stdout, a private file (appended), or
+// nowhere (null).
+std::unique_ptr<std::ostream> open_events_out(const std::string& destination) {
+  if (destination.empty()) return nullptr;
+  if (destination == "-") return std::make_unique<std::ostream>(std::cout.rdbuf());
+  service::make_private_file(destination);
+  auto file = std::make_unique<std::ofstream>(destination, std::ios::app);
+  if (!*file) throw CommandInputError(destination + ": error: cannot open the events file");
+  return file;
+}
+
+// The tokens file holds every wristband's secret: refuse one others can read.
+service::DeviceRegistry read_private_registry(const std::string& tokens) {
+  if (const std::string problem = service::private_file_problem(tokens, "tokens file"); !problem.empty()) {
+    throw CommandInputError(problem);
+  }
+  return service::read_device_registry_file(tokens);
 }
 
 // Blocks SIGINT and SIGTERM in this thread and the ones it starts, so the
@@ -117,7 +152,30 @@ void wait_for_stop(const sigset_t& signals, double duration_s) {
   }
 }
 
-int run_serve(const ServeOptions& o) {
+// Plain HTTP would carry the tokens and the seniors' readings in clear: off
+// loopback it takes TLS or an explicit --insecure-http. The message starts as
+// a failed bind's does, since it is the same refusal to listen there.
+void check_transport(const ServeOptions& o) {
+  const bool tls = !o.tls_cert.empty() || !o.tls_key.empty();
+  if (tls && (o.tls_cert.empty() || o.tls_key.empty())) {
+    throw CommandInputError("--tls-cert and --tls-key go together");
+  }
+  if (tls) {
+    if (const std::string problem = service::private_file_problem(o.tls_key, "TLS key"); !problem.empty()) {
+      throw CommandInputError(problem);
+    }
+    return;
+  }
+  if (o.insecure_http) return;
+  for (const auto& [address, port] : {std::pair{o.bind, o.port}, std::pair{o.admin_bind, o.admin_port}}) {
+    if (service::is_loopback_address(address)) continue;
+    throw CommandInputError("cannot listen on " + address + ":" + std::to_string(port) +
+                            ": plain HTTP off loopback would carry tokens and readings in clear; give --tls-cert "
+                            "and --tls-key, or --insecure-http");
+  }
+}
+
+service::SignalServiceOptions service_options(const ServeOptions& o) {
   service::SignalServiceOptions options;
   options.database = o.db;
   options.durability = o.sync == "normal" ? service::Durability::Normal : service::Durability::Full;
@@ -129,13 +187,29 @@ int run_serve(const ServeOptions& o) {
   options.server.request_timeout = std::chrono::milliseconds(o.request_timeout_ms);
   options.limits.max_body_bytes = o.max_body;
   options.limits.max_batch = o.max_batch;
+  options.limits.max_clock_skew_ms = o.max_clock_skew_ms;
+  options.limits.detailed_metrics = o.detailed_metrics;
+  options.admin.bind_address = o.admin_bind;
+  options.admin.port = o.admin_port;
+  options.server.max_connections_per_client = o.max_connections_per_client;
+  options.server.tls_certificate_file = o.tls_cert;
+  options.server.tls_key_file = o.tls_key;
+  options.retention.days = o.retention_days;
+  return options;
+}
+
+int run_serve(const ServeOptions& o) {
   const sigset_t signals = block_stop_signals();
   std::unique_ptr<service::SignalService> signal_service;
   std::unique_ptr<Deliberator> deliberator;
+  std::unique_ptr<std::ostream> events_out;
   try {
+    check_transport(o);
     deliberator = make_deliberator(o);
-    service::DeviceRegistry registry = service::read_device_registry_file(o.tokens);
-    signal_service = std::make_unique<service::SignalService>(std::move(registry), load_classifier(o), options);
+    service::DeviceRegistry registry = read_private_registry(o.tokens);
+    events_out = open_events_out(o.events_out);
+    signal_service =
+        std::make_unique<service::SignalService>(std::move(registry), load_classifier(o), service_options(o));
     signal_service->start();
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
@@ -143,11 +217,13 @@ int run_serve(const ServeOptions& o) {
   }
   std::cout << "serving on " << signal_service->url() << " (database " << o.db << ", "
             << signal_service->registry().size() << " devices)" << std::endl;
-  std::thread consumer([&deliberator, &events = signal_service->events()] {
+  // On stderr: stdout's first line stays the one scripts read the URL from.
+  std::cerr << "serve: admin on " << signal_service->admin_url() << " (GET /healthz, /metrics)" << std::endl;
+  std::thread consumer([&deliberator, &events_out, &events = signal_service->events()] {
     while (true) {
       const std::optional<service::StressEvent> e = events.pop_wait(std::chrono::milliseconds(500));
       if (e) {
-        print_event(*e);
+        if (events_out) print_event(*events_out, *e);
         if (deliberator && e->stressed) deliberate_on_event(*deliberator, *e);
       } else if (events.closed()) {
         return;  // closed and drained
@@ -186,6 +262,25 @@ void add_serve_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"full", "normal"}));
   s->add_option("--duration", o->duration_s, "Stop after this many seconds (0: until SIGINT/SIGTERM)")
       ->check(CLI::NonNegativeNumber);
+  s->add_option("--max-clock-skew", o->max_clock_skew_ms,
+                "Milliseconds a reading may be stamped ahead of this machine's clock (422 beyond)")
+      ->check(CLI::Range(std::int64_t{0}, std::int64_t{86400000}));
+  s->add_option("--tls-cert", o->tls_cert, "PEM certificate (chain) to serve HTTPS with; with --tls-key");
+  s->add_option("--tls-key", o->tls_key, "PEM private key of --tls-cert (must be mode 0600 or stricter)");
+  s->add_flag("--insecure-http", o->insecure_http,
+              "Allow plain HTTP on a non-loopback address (tokens and readings in clear)");
+  s->add_option("--max-connections-per-client", o->max_connections_per_client,
+                "Open connections one client address may hold before its new ones get 503")
+      ->check(CLI::PositiveNumber);
+  s->add_option("--retention-days", o->retention_days,
+                "Delete readings and stress events older than this many days, in the background (0: keep all)")
+      ->check(CLI::NonNegativeNumber);
+  s->add_option("--admin-bind", o->admin_bind, "Address of the /healthz and /metrics listener (keep it loopback)");
+  s->add_option("--admin-port", o->admin_port, "Port of the /healthz and /metrics listener (0: any free one, printed)");
+  s->add_flag("--detailed-metrics", o->detailed_metrics,
+              "Per-device missing readings and stress transitions in /metrics and /healthz");
+  s->add_option("--events-out", o->events_out,
+                "Write each stress event as a JSON line to '-' (stdout) or FILE (mode 0600); default: nowhere");
   s->add_flag("--deliberate", o->deliberate,
               "Run the deliberation (emotion, goal, plan, act, repair) for each senior who becomes stressed");
   add_deliberation_options(*s, o->deliberation);

@@ -2,28 +2,29 @@
 //                           [--duration S] [--stressed K] [--typical-subjects]
 //                           [--seed S] [--speed X]
 //                           [--sample-rate HZ] [--connections N] [--boot B]
-//                           [--batch N] [--drain-timeout S] [--json]
+//                           [--batch N] [--drain-timeout S] [--json] [--cacert PEM]
 //   Plays N simulated wristbands against the service (perception/service/
 //   wristband_fleet.h) and prints a summary. Exit 0 when every reading was
 //   acknowledged, 1 when some were not (service down past the drain timeout,
 //   refused, or dropped from a full queue), 2 on bad input.
-// alplan wristband tokens --devices N [--prefix wb-] [--out FILE]
+// alplan wristband tokens --devices N [--prefix wb-] [--out FILE [--force]]
 //   Writes a tokens file for N devices with fresh random tokens (device wb-01
 //   is worn by senior senior-01, ...), for `serve --tokens` and `simulate
-//   --tokens`.
+//   --tokens`. The file is created mode 0600 (the tokens are secrets); an
+//   existing one is refused unless --force.
 #include <CLI/CLI.hpp>
 
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
-#include <random>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
 #include "perception/service/device_registry.h"
+#include "perception/service/private_file.h"
+#include "perception/service/random_token.h"
 #include "perception/service/wristband_fleet.h"
 
 namespace alplan::cli {
@@ -42,6 +43,7 @@ struct TokensOptions {
   std::size_t devices = 4;
   std::string prefix = "wb-";
   std::string out;
+  bool force = false;
 };
 
 nlohmann::json summary_json(const service::FleetSummary& s) {
@@ -72,30 +74,25 @@ int run_simulate(const SimulateOptions& o) {
   }
 }
 
-std::string random_token(std::random_device& entropy) {
-  std::ostringstream hex;
-  for (int i = 0; i < 4; ++i) hex << std::hex << std::setw(8) << std::setfill('0') << entropy();
-  return hex.str();
-}
-
 int run_tokens(const TokensOptions& o) {
-  std::random_device entropy;
-  std::vector<service::Device> devices;
-  const int width = o.devices < 100 ? 2 : static_cast<int>(std::to_string(o.devices).size());
-  for (std::size_t i = 1; i <= o.devices; ++i) {
-    std::ostringstream number;
-    number << std::setw(width) << std::setfill('0') << i;
-    devices.push_back({o.prefix + number.str(), random_token(entropy), "senior-" + number.str()});
-  }
   try {
+    std::vector<service::Device> devices;
+    const int width = o.devices < 100 ? 2 : static_cast<int>(std::to_string(o.devices).size());
+    for (std::size_t i = 1; i <= o.devices; ++i) {
+      std::ostringstream number;
+      number << std::setw(width) << std::setfill('0') << i;
+      devices.push_back({o.prefix + number.str(), service::random_token(), "senior-" + number.str()});
+    }
     const service::DeviceRegistry registry(std::move(devices));
     if (o.out.empty()) {
       service::write_device_registry(std::cout, registry);
       return kExitOk;
     }
-    std::ofstream out(o.out);
-    service::write_device_registry(out, registry);
-    if (!out) throw std::runtime_error(o.out + ": cannot write the file");
+    std::ostringstream text;
+    service::write_device_registry(text, registry);
+    // Created 0600 before a byte of a token is in it.
+    const int fd = service::create_private_file(o.out, o.force);
+    service::write_and_close(fd, text.str(), o.out);
     return kExitOk;
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
@@ -116,7 +113,8 @@ void add_wristband_command(CLI::App& app, int& exit_code) {
       ->check(CLI::PositiveNumber);
   s->add_option("--rate", f.rate_hz, "Readings per wristband per second of signal (1/30 to 1; the board: 0.2)")
       ->required();
-  s->add_option("--url", f.url, "The service, http://host:port")->required();
+  s->add_option("--url", f.url, "The service, http://host:port or https://host[:port]")->required();
+  s->add_option("--cacert", f.ca_file, "For https: the CA certificate(s) to check the service's with (default: the system's)");
   s->add_option("--tokens", o->tokens, "Tokens file (device token senior), as given to serve")->required();
   s->add_option("--duration", f.duration_s, "Seconds of signal per wristband");
   s->add_option("--stressed", f.stressed, "The first K wristbands' seniors are stressed");
@@ -138,7 +136,8 @@ void add_wristband_command(CLI::App& app, int& exit_code) {
   CLI::App* k = w->add_subcommand("tokens", "Write a tokens file with random tokens for N devices");
   k->add_option("--devices", t->devices, "Devices")->required()->check(CLI::Range(1, 100000));
   k->add_option("--prefix", t->prefix, "Device id prefix");
-  k->add_option("--out", t->out, "File to write (default: stdout)");
+  k->add_option("--out", t->out, "File to write, mode 0600 (default: stdout)");
+  k->add_flag("--force", t->force, "Overwrite an existing --out file");
   k->callback([t, &exit_code] { exit_code = run_tokens(*t); });
 }
 

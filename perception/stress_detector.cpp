@@ -46,4 +46,18 @@ std::optional<StressState> ClassifierStressDetector::state(const std::string& se
   return it->second.state;
 }
 
+StressDetector::Memory ClassifierStressDetector::remember(const std::string& senior) const {
+  const auto it = seniors_.find(senior);
+  if (it == seniors_.end()) return nullptr;
+  return std::make_shared<const Senior>(it->second);
+}
+
+void ClassifierStressDetector::restore(const std::string& senior, const Memory& memory) {
+  if (memory == nullptr) {
+    seniors_.erase(senior);
+    return;
+  }
+  seniors_[senior] = *static_cast<const Senior*>(memory.get());
+}
+
 }  // namespace alplan::perception

@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <deque>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -42,6 +43,14 @@ class StressDetector {
   virtual StressObservation observe(const std::string& senior, const firmware::WindowFeatures& reading) = 0;
   // The current decision for a senior; nothing before any reading.
   virtual std::optional<StressState> state(const std::string& senior) const = 0;
+
+  // What the detector remembers of one senior (opaque; null when it knows
+  // nothing of them), and putting that back. The signal service detects
+  // inside a transaction; when the commit fails the readings are not stored
+  // and will be re-sent, so the detector must forget it saw them.
+  using Memory = std::shared_ptr<const void>;
+  virtual Memory remember(const std::string& senior) const = 0;
+  virtual void restore(const std::string& senior, const Memory& memory) = 0;
 };
 
 struct StressSmoothing {
@@ -57,6 +66,8 @@ class ClassifierStressDetector : public StressDetector {
 
   StressObservation observe(const std::string& senior, const firmware::WindowFeatures& reading) override;
   std::optional<StressState> state(const std::string& senior) const override;
+  Memory remember(const std::string& senior) const override;
+  void restore(const std::string& senior, const Memory& memory) override;
 
  private:
   struct Senior {

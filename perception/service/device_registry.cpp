@@ -29,7 +29,9 @@ std::string device_problem(const Device& d) {
     return "device id '" + d.id + "' must be 1-32 of [A-Za-z0-9._-]";
   }
   if (d.token.size() < 16) return "token too short (need at least 16 characters)";
-  if (d.token.size() > 128) return "token too long (at most 128 characters)";
+  if (d.token.size() > kMaxTokenLength) {
+    return "token too long (at most " + std::to_string(kMaxTokenLength) + " characters)";
+  }
   if (!all_of(d.token, is_token_character)) return "token may hold only [A-Za-z0-9._~+/=-]";
   if (d.senior.empty() || d.senior.size() > 64 || !all_of(d.senior, is_id_character)) {
     return "senior '" + d.senior + "' must be 1-64 of [A-Za-z0-9._-]";
@@ -63,6 +65,7 @@ DeviceRegistry::DeviceRegistry(std::vector<Device> devices) : devices_(std::move
 }
 
 const Device* DeviceRegistry::authenticate(std::string_view token) const {
+  if (token.size() > kMaxTokenLength) return nullptr;
   const Device* match = nullptr;
   for (const Device& d : devices_) {
     if (tokens_equal(d.token, token)) match = &d;

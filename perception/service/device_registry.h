@@ -31,6 +31,8 @@ struct Device {
   std::string senior;
 };
 
+inline constexpr std::size_t kMaxTokenLength = 128;
+
 class DeviceRegistryError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -48,7 +50,9 @@ class DeviceRegistry {
   explicit DeviceRegistry(std::vector<Device> devices);
 
   // The device this token belongs to, or null. Compares the token with every
-  // device's in constant time and does not stop at a match.
+  // device's in constant time and does not stop at a match. A token over
+  // kMaxTokenLength is refused before any comparison, since the comparison's
+  // cost grows with the presented token's length.
   const Device* authenticate(std::string_view token) const;
   const Device* find(std::string_view device_id) const;
 

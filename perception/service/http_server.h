@@ -8,8 +8,10 @@
 //  - Bodies over max_body_bytes get 413 as soon as the header announces them
 //    (or when the chunks exceed it); headers over max_header_bytes 431;
 //    anything the parser refuses 400. The connection is closed after these.
-//  - Over max_connections open connections, a new one is answered 503 and
-//    closed (the wristband backs off and retries).
+//  - Over max_connections open connections, or over
+//    max_connections_per_client from one address, a new one is answered 503
+//    and closed (the wristband backs off and retries).
+//  - With a certificate and key, HTTPS (TLS 1.2+); otherwise plain HTTP.
 //  - Reading and writing run on `io_threads` threads that never block; the
 //    handler (which waits for the database commit) runs on a separate pool of
 //    `handler_threads`, so a slow commit stalls no socket. "Expect:
@@ -37,10 +39,21 @@ struct ServerOptions {
   std::size_t io_threads = 1;
   std::size_t handler_threads = 4;
   std::size_t max_connections = 1024;
+  // One client address may hold at most this many of them (a stalled or
+  // greedy client cannot take every slot); more get 503.
+  std::size_t max_connections_per_client = 256;
   std::chrono::milliseconds request_timeout{10000};
   std::chrono::milliseconds write_timeout{10000};
   ParseLimits parse_limits{};
+  Endpoints endpoints = Endpoints::All;
+  // PEM files; both empty: plain HTTP. With them every connection starts
+  // with a TLS (1.2 or newer) handshake, within request_timeout.
+  std::string tls_certificate_file;
+  std::string tls_key_file;
 };
+
+// True for 127.0.0.0/8 and ::1; false for anything else, unparsable included.
+bool is_loopback_address(const std::string& address);
 
 class HttpServer {
  public:
@@ -51,7 +64,8 @@ class HttpServer {
   HttpServer& operator=(const HttpServer&) = delete;
 
   // Binds, listens and starts the threads. Throws std::runtime_error naming
-  // the address when it cannot bind. A server starts once: after stop(),
+  // the address when it cannot bind, or the file when the TLS certificate
+  // or key cannot be loaded. A server starts once: after stop(),
   // make a new one (on the same port if wanted).
   void start();
   // The bound port (the chosen one when options.port was 0).

@@ -20,8 +20,14 @@
 // not forget a senior's recent state.
 //
 // If a commit fails, every batch in the group gets the error (the wristbands
-// keep their readings and retry); the detector may then have seen readings
-// that were not stored, and sees them again when they are re-sent.
+// keep their readings and retry), and the detector is put back as it was
+// before the group (StressDetector::remember/restore), so the re-sent
+// readings are voted on, and their event raised, exactly once.
+//
+// Time. A reading stamped more than max_clock_skew_ms ahead of the server's
+// clock is never voted on and never primes the detector: one such reading
+// would otherwise make every later one "late" for good, across restarts.
+// (The request handler refuses such readings before they get here.)
 #pragma once
 
 #include <atomic>
@@ -29,8 +35,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <exception>
+#include <functional>
 #include <map>
+#include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -47,11 +56,22 @@ struct IngestCounters {
   std::uint64_t stored = 0;
   std::uint64_t duplicates = 0;
   std::uint64_t late = 0;  // stored, not voted on (older than the senior's newest)
+  std::uint64_t ahead = 0;  // stored, not voted on (beyond the server's clock plus the skew)
   std::uint64_t became_stressed = 0;
   std::uint64_t became_calm = 0;
   std::uint64_t commits = 0;      // transactions
   std::uint64_t batches = 0;      // ingest() calls committed
   std::uint64_t failed_commits = 0;
+};
+
+inline constexpr std::int64_t kDefaultMaxClockSkewMs = 5 * 60 * 1000;
+
+struct IngestOptions {
+  std::size_t priming_readings = 24;
+  std::int64_t max_clock_skew_ms = kDefaultMaxClockSkewMs;
+  // Where committed events go; empty: pushed to the queue. (Tests make it
+  // throw to check that a failure after the commit blocks no later batch.)
+  std::function<void(const StressEvent&)> publish;
 };
 
 class ReadingIngest {
@@ -62,10 +82,13 @@ class ReadingIngest {
   // `priming_readings` per device of `registry`.
   ReadingIngest(ReadingStore& store, StressDetector* detector, StressEventQueue& events,
                 const DeviceRegistry& registry, std::size_t priming_readings);
+  ReadingIngest(ReadingStore& store, StressDetector* detector, StressEventQueue& events,
+                const DeviceRegistry& registry, IngestOptions options);
 
   // Stores the readings of `senior`'s device, oldest first; returns for each
   // whether it was stored now (true) or already there (false). Blocks until
-  // committed. Thread-safe. Throws SqliteError when the commit failed.
+  // committed. Thread-safe. Throws SqliteError when the commit failed, and
+  // whatever publishing the group's events threw (the readings are stored).
   std::vector<bool> ingest(const std::string& senior, const std::vector<ReceivedReading>& readings);
 
   // Missing readings per device: sequence numbers below the highest stored
@@ -86,15 +109,27 @@ class ReadingIngest {
     std::uint64_t count = 0;
   };
 
+  // What the detector knew of each senior of a group before it, to put back
+  // when the group's commit fails.
+  struct SeniorMemory {
+    StressDetector::Memory detector;
+    std::optional<std::int64_t> newest_voted_ms;
+  };
+  using DetectionUndo = std::map<std::string, SeniorMemory>;
+
   void prime_detector(const DeviceRegistry& registry, std::size_t priming_readings);
+  void lead(std::unique_lock<std::mutex>& lock);
   void commit_group(const std::vector<Batch*>& group);
-  std::vector<StressEvent> write_group(const std::vector<Batch*>& group, std::int64_t now_ms);
-  void detect(const std::string& senior, const ReceivedReading& reading, std::vector<StressEvent>& events);
+  std::vector<StressEvent> write_group(const std::vector<Batch*>& group, std::int64_t now_ms, DetectionUndo& undo);
+  void detect(const std::string& senior, const ReceivedReading& reading, std::int64_t now_ms,
+              std::vector<StressEvent>& events);
+  void undo_detection(const DetectionUndo& undo);
   void after_commit(const std::vector<Batch*>& group, const std::vector<StressEvent>& events);
 
   ReadingStore& store_;
   StressDetector* detector_;
   StressEventQueue& events_;
+  IngestOptions options_;
 
   // The group commit's hand-over.
   std::mutex queue_mutex_;
@@ -103,7 +138,7 @@ class ReadingIngest {
   bool leader_active_ = false;
 
   // Touched only by the leader (and read by missing_by_device under stats_mutex_).
-  std::map<std::string, std::uint64_t> newest_voted_ms_;  // per senior
+  std::map<std::string, std::int64_t> newest_voted_ms_;  // per senior
   mutable std::mutex stats_mutex_;
   std::map<std::pair<std::string, std::uint32_t>, BootCount> boots_;
   IngestCounters counters_;

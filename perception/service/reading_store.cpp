@@ -25,6 +25,7 @@ CREATE TABLE IF NOT EXISTS readings (
   PRIMARY KEY (device, boot, seq)
 ) WITHOUT ROWID;
 CREATE INDEX IF NOT EXISTS readings_by_time ON readings (device, t_ms);
+CREATE INDEX IF NOT EXISTS readings_by_arrival ON readings (received_ms);
 CREATE TABLE IF NOT EXISTS stress_events (
   id INTEGER PRIMARY KEY,
   senior TEXT NOT NULL,
@@ -76,7 +77,9 @@ void ReadingStore::create_schema() {
 
 void ReadingStore::begin() { db_.execute("BEGIN IMMEDIATE"); }
 void ReadingStore::commit() { db_.execute("COMMIT"); }
-void ReadingStore::rollback() { db_.execute("ROLLBACK"); }
+void ReadingStore::rollback() {
+  if (db_.in_transaction()) db_.execute("ROLLBACK");
+}
 
 bool ReadingStore::insert_reading(const ReceivedReading& r, std::int64_t received_ms) {
   SqliteStatement& s = *insert_reading_;
@@ -155,14 +158,35 @@ std::vector<ReceivedReading> ReadingStore::readings_of(const std::string& device
   return select_readings(q);
 }
 
-std::vector<ReceivedReading> ReadingStore::latest_readings_of(const std::string& device, std::size_t limit) {
+std::vector<ReceivedReading> ReadingStore::latest_readings_of(const std::string& device, std::size_t limit,
+                                                             std::int64_t max_t_ms) {
   SqliteStatement q = db_.prepare(std::string("SELECT ") + kReadingColumns +
-                                  " FROM readings WHERE device = ? ORDER BY t_ms DESC, boot DESC, seq DESC LIMIT ?");
+                                  " FROM readings WHERE device = ? AND t_ms <= ?"
+                                  " ORDER BY t_ms DESC, boot DESC, seq DESC LIMIT ?");
   q.bind(1, device);
-  q.bind(2, static_cast<std::int64_t>(limit));
+  q.bind(2, max_t_ms);
+  q.bind(3, static_cast<std::int64_t>(limit));
   std::vector<ReceivedReading> out = select_readings(q);
   std::reverse(out.begin(), out.end());
   return out;
+}
+
+std::size_t ReadingStore::delete_readings_received_before(std::int64_t cutoff_ms, std::size_t limit) {
+  // Row values instead of DELETE ... LIMIT, which SQLite builds leave out by default.
+  SqliteStatement q = db_.prepare(
+      "DELETE FROM readings WHERE (device, boot, seq) IN "
+      "(SELECT device, boot, seq FROM readings WHERE received_ms < ? LIMIT ?)");
+  q.bind(1, cutoff_ms);
+  q.bind(2, static_cast<std::int64_t>(limit));
+  q.step();
+  return static_cast<std::size_t>(db_.changes());
+}
+
+std::size_t ReadingStore::delete_stress_events_recorded_before(std::int64_t cutoff_ms) {
+  SqliteStatement q = db_.prepare("DELETE FROM stress_events WHERE recorded_ms < ?");
+  q.bind(1, cutoff_ms);
+  q.step();
+  return static_cast<std::size_t>(db_.changes());
 }
 
 std::vector<StressEvent> ReadingStore::stress_events() {

@@ -6,7 +6,8 @@
 //   readings(device, boot, seq, t_ms, window_ms, hr_bpm, ibi_ms, sdnn_ms,
 //            rmssd_ms, beats, rejected_fraction, motion, received_ms)
 //     primary key (device, boot, seq): a re-sent reading is stored once;
-//     readings may arrive in any order.
+//     readings may arrive in any order. Indexed by (device, t_ms) for the
+//     detector's priming and by received_ms for retention.
 //   stress_events(id, senior, device, stressed, t_ms, stressed_fraction,
 //                 votes, recorded_ms)
 //
@@ -19,7 +20,9 @@
 #pragma once
 
 #include <cstdint>
+#include <climits>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -52,7 +55,11 @@ class ReadingStore {
 
   void begin();
   void commit();
+  // Rolls back the open transaction, if any (a failed COMMIT may have ended it).
   void rollback();
+  // Fault injection for tests and the soak benchmark: see
+  // SqliteDatabase::set_commit_veto.
+  void set_commit_veto(std::function<bool()> veto) { db_.set_commit_veto(std::move(veto)); }
 
   // True when stored, false when (device, boot, seq) was already there.
   bool insert_reading(const ReceivedReading& reading, std::int64_t received_ms);
@@ -62,9 +69,17 @@ class ReadingStore {
   std::uint64_t count_readings();
   // One device's readings by (boot, seq).
   std::vector<ReceivedReading> readings_of(const std::string& device);
-  // The device's last `limit` readings by time, oldest first.
-  std::vector<ReceivedReading> latest_readings_of(const std::string& device, std::size_t limit);
+  // The device's last `limit` readings by time, oldest first, of those
+  // stamped at or before `max_t_ms`.
+  std::vector<ReceivedReading> latest_readings_of(const std::string& device, std::size_t limit,
+                                                  std::int64_t max_t_ms = INT64_MAX);
   std::vector<StressEvent> stress_events();
+
+  // Retention (retention_sweeper.h): deletes up to `limit` readings that
+  // arrived before `cutoff_ms`, and every stress event recorded before it.
+  // Return how many rows went. Call inside a transaction.
+  std::size_t delete_readings_received_before(std::int64_t cutoff_ms, std::size_t limit);
+  std::size_t delete_stress_events_recorded_before(std::int64_t cutoff_ms);
 
   const std::filesystem::path& file() const { return db_.file(); }
 

@@ -6,8 +6,13 @@
 #include <boost/asio/connect.hpp>
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/ssl/context.hpp>
+#include <boost/asio/ssl/host_name_verification.hpp>
 #include <boost/beast/core/flat_buffer.hpp>
 #include <boost/beast/core/tcp_stream.hpp>
+#include <boost/beast/ssl/ssl_stream.hpp>
+#include <openssl/err.h>
+#include <openssl/ssl.h>
 #include <boost/beast/http/read.hpp>
 #include <boost/beast/http/string_body.hpp>
 #include <boost/beast/http/write.hpp>
@@ -23,12 +28,18 @@ using tcp = net::ip::tcp;
 }  // namespace
 
 HttpEndpoint parse_http_url(const std::string& url) {
-  const std::string scheme = "http://";
-  if (url.rfind(scheme, 0) != 0) throw std::invalid_argument("URL '" + url + "': expected http://host:port[/path]");
+  HttpEndpoint endpoint;
+  std::string scheme = "http://";
+  if (url.rfind("https://", 0) == 0) {
+    scheme = "https://";
+    endpoint.tls = true;
+    endpoint.port = 443;
+  } else if (url.rfind(scheme, 0) != 0) {
+    throw std::invalid_argument("URL '" + url + "': expected http://host:port[/path]");
+  }
   const std::string rest = url.substr(scheme.size());
   const auto slash = rest.find('/');
   const std::string authority = rest.substr(0, slash);
-  HttpEndpoint endpoint;
   endpoint.path = slash == std::string::npos ? "" : rest.substr(slash);
   const auto colon = authority.rfind(':');
   endpoint.host = authority.substr(0, colon);
@@ -54,8 +65,26 @@ struct ReadingsClient::Impl {
   HttpEndpoint endpoint;
   std::chrono::milliseconds timeout;
   net::io_context io;
-  std::optional<beast::tcp_stream> stream;
+  std::unique_ptr<net::ssl::context> tls;  // for https
+  std::optional<beast::tcp_stream> plain;
+  std::optional<beast::ssl_stream<beast::tcp_stream>> secure;
   beast::flat_buffer buffer;
+
+  bool connected() const { return plain.has_value() || secure.has_value(); }
+  void drop() {
+    plain.reset();
+    secure.reset();
+  }
+  beast::tcp_stream& lowest() { return secure ? beast::get_lowest_layer(*secure) : *plain; }
+  // Calls f with the stream requests go over.
+  template <class F>
+  void with_stream(F&& f) {
+    if (secure) {
+      f(*secure);
+    } else {
+      f(*plain);
+    }
+  }
 
   // Runs the asynchronous operations started before it: Beast's deadlines
   // (expires_after) bind asynchronous operations only.
@@ -64,27 +93,56 @@ struct ReadingsClient::Impl {
     io.run();
   }
 
+  std::string where() const { return endpoint.host + ":" + std::to_string(endpoint.port); }
+
+  // The TLS handshake on a connected socket, checking the certificate and
+  // that it names the URL's host (or IP address).
+  beast::error_code handshake() {
+    secure.emplace(std::move(*plain), *tls);
+    plain.reset();
+    beast::error_code error;
+    beast::error_code ip_error;
+    net::ip::make_address(endpoint.host, ip_error);
+    // SNI: a host name only (RFC 6066 forbids addresses there).
+    // (SSL_set_tlsext_host_name spelled out: the macro casts in C style.)
+    if (ip_error && SSL_ctrl(secure->native_handle(), SSL_CTRL_SET_TLSEXT_HOSTNAME, TLSEXT_NAMETYPE_host_name,
+                             const_cast<char*>(endpoint.host.c_str())) != 1) {
+      return beast::error_code(static_cast<int>(::ERR_get_error()), net::error::get_ssl_category());
+    }
+    secure->set_verify_mode(net::ssl::verify_peer);
+    secure->set_verify_callback(net::ssl::host_name_verification(endpoint.host));
+    beast::get_lowest_layer(*secure).expires_after(timeout);
+    secure->async_handshake(net::ssl::stream_base::client, [&error](beast::error_code e) { error = e; });
+    run();
+    return error;
+  }
+
   HttpResult connect() {
     HttpResult failed;
     beast::error_code error;
     try {
       tcp::resolver resolver(io);
       const auto addresses = resolver.resolve(endpoint.host, std::to_string(endpoint.port));
-      stream.emplace(io);
-      stream->expires_after(timeout);
-      stream->async_connect(addresses, [&error](beast::error_code e, const tcp::endpoint&) { error = e; });
+      plain.emplace(io);
+      plain->expires_after(timeout);
+      plain->async_connect(addresses, [&error](beast::error_code e, const tcp::endpoint&) { error = e; });
       run();
     } catch (const boost::system::system_error& e) {
       error = e.code();
     }
     if (!error) {
-      stream->socket().set_option(tcp::no_delay(true), error);
+      plain->socket().set_option(tcp::no_delay(true), error);
       buffer.clear();
-      return failed;  // status 0: connected
     }
-    stream.reset();
+    std::string what = "cannot connect to ";
+    if (!error && endpoint.tls) {
+      error = handshake();
+      what = "TLS handshake with ";
+    }
+    if (!error) return failed;  // status 0: connected
+    drop();
     failed.status = error == beast::error::timeout ? kTransportTimeout : kTransportConnectFailed;
-    failed.error = "cannot connect to " + endpoint.host + ":" + std::to_string(endpoint.port) + ": " + error.message();
+    failed.error = what + where() + " failed: " + error.message();
     return failed;
   }
 
@@ -94,29 +152,31 @@ struct ReadingsClient::Impl {
     http::response_parser<http::string_body> parser;
     parser.body_limit(16 * 1024 * 1024);
     beast::error_code error;
-    stream->expires_after(timeout);
-    http::async_write(*stream, request, [&](beast::error_code write_error, std::size_t) {
-      error = write_error;
-      if (write_error) return;
-      http::async_read(*stream, buffer, parser, [&error](beast::error_code read_error, std::size_t) { error = read_error; });
+    lowest().expires_after(timeout);
+    with_stream([&](auto& stream) {
+      http::async_write(stream, request, [&](beast::error_code write_error, std::size_t) {
+        error = write_error;
+        if (write_error) return;
+        http::async_read(stream, buffer, parser, [&error](beast::error_code read_error, std::size_t) { error = read_error; });
+      });
     });
     run();
     if (error) {
-      stream.reset();
+      drop();
       result.status = error == beast::error::timeout ? kTransportTimeout : kTransportConnectionLost;
-      result.error = "request to " + endpoint.host + ":" + std::to_string(endpoint.port) + " failed: " + error.message();
+      result.error = "request to " + where() + " failed: " + error.message();
       return result;
     }
-    stream->expires_never();
+    lowest().expires_never();
     result.status = static_cast<int>(parser.get().result_int());
     result.body = std::move(parser.get().body());
-    if (!parser.get().keep_alive()) stream.reset();
+    if (!parser.get().keep_alive()) drop();
     return result;
   }
 
   HttpResult send(const http::request<http::string_body>& request) {
     const auto start = std::chrono::steady_clock::now();
-    const bool reused = stream.has_value();
+    const bool reused = connected();
     HttpResult result;
     if (!reused) result = connect();
     if (result.status == 0) {
@@ -140,10 +200,24 @@ struct ReadingsClient::Impl {
   }
 };
 
-ReadingsClient::ReadingsClient(const HttpEndpoint& endpoint, std::chrono::milliseconds timeout)
+ReadingsClient::ReadingsClient(const HttpEndpoint& endpoint, std::chrono::milliseconds timeout,
+                               const std::string& ca_file)
     : impl_(std::make_unique<Impl>()) {
   impl_->endpoint = endpoint;
   impl_->timeout = timeout;
+  if (!endpoint.tls) return;
+  impl_->tls = std::make_unique<net::ssl::context>(net::ssl::context::tls_client);
+  SSL_CTX_set_min_proto_version(impl_->tls->native_handle(), TLS1_2_VERSION);
+  try {
+    if (ca_file.empty()) {
+      impl_->tls->set_default_verify_paths();
+    } else {
+      impl_->tls->load_verify_file(ca_file);
+    }
+  } catch (const boost::system::system_error& e) {
+    throw std::runtime_error("cannot load the CA certificates " + (ca_file.empty() ? "of the system" : ca_file) +
+                             ": " + e.code().message());
+  }
 }
 
 ReadingsClient::~ReadingsClient() = default;

@@ -7,6 +7,11 @@
 // A keep-alive connection the server has closed meanwhile (idle timeout) is
 // only found out when it is used; then the request is sent once more on a
 // new connection before giving up, as browsers and curl do.
+//
+// https:// URLs are spoken over TLS 1.2+, checking the server's certificate
+// against a CA file (the board's ALPLAN_SERVICE_CA_PEM; the system's CAs
+// when none is given) and the URL's host against the certificate's names,
+// as the board's WiFiClientSecure does. A failed check is a failed connect.
 #pragma once
 
 #include <chrono>
@@ -21,10 +26,11 @@ struct HttpEndpoint {
   std::string host;
   std::uint16_t port = 80;
   std::string path;  // "/v1/readings"; empty when the URL had none
+  bool tls = false;  // https
 };
 
-// "http://host:port[/path]". Throws std::invalid_argument naming the URL for
-// anything else (https is the board's business; here the service is local).
+// "http://host:port[/path]" or "https://host[:port][/path]" (port 443 by
+// default). Throws std::invalid_argument naming the URL for anything else.
 HttpEndpoint parse_http_url(const std::string& url);
 
 inline constexpr int kTransportConnectFailed = -1;
@@ -40,7 +46,9 @@ struct HttpResult {
 
 class ReadingsClient {
  public:
-  ReadingsClient(const HttpEndpoint& endpoint, std::chrono::milliseconds timeout);
+  // `ca_file`: PEM certificates to trust for https (empty: the system's).
+  // Throws std::runtime_error naming the file when it cannot be loaded.
+  ReadingsClient(const HttpEndpoint& endpoint, std::chrono::milliseconds timeout, const std::string& ca_file = "");
   ~ReadingsClient();
   ReadingsClient(const ReadingsClient&) = delete;
   ReadingsClient& operator=(const ReadingsClient&) = delete;

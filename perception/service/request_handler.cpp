@@ -1,6 +1,7 @@
 #include "perception/service/request_handler.h"
 
 #include <chrono>
+#include <iostream>
 #include <string_view>
 
 #include <boost/beast/http/field.hpp>
@@ -61,7 +62,12 @@ const Device& authenticate(const DeviceRegistry& registry, const HttpRequest& re
   if (space == std::string_view::npos || !iequals(value.substr(0, space), "Bearer")) {
     throw Rejection{401, "unauthorized", "Authorization must be 'Bearer <device token>'"};
   }
-  const Device* device = registry.authenticate(trim(value.substr(space + 1)));
+  const std::string_view token = trim(value.substr(space + 1));
+  // Refused before any comparison, so a huge token costs no more than a valid one.
+  if (token.size() > kMaxTokenLength) {
+    throw Rejection{401, "unauthorized", "token longer than " + std::to_string(kMaxTokenLength) + " characters"};
+  }
+  const Device* device = registry.authenticate(token);
   if (device == nullptr) throw Rejection{401, "unauthorized", "unknown device token"};
   return *device;
 }
@@ -76,7 +82,32 @@ void require_json_content(const HttpRequest& request) {
   }
 }
 
+std::int64_t unix_ms_now() {
+  return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+// The place of reading i in the body, as the parser names it.
+std::string place_of(const HttpRequest& request, std::size_t i) {
+  const bool single = request.body().find_first_not_of(" \t\r\n") == request.body().find('{');
+  return single ? std::string("reading") : "readings[" + std::to_string(i) + "]";
+}
+
+void require_clock_plausible(const HttpRequest& request, const std::vector<ReceivedReading>& readings,
+                             std::int64_t max_skew_ms) {
+  const std::int64_t now = unix_ms_now();
+  for (std::size_t i = 0; i < readings.size(); ++i) {
+    if (readings[i].t_ms <= static_cast<std::uint64_t>(now + max_skew_ms)) continue;
+    throw Rejection{422, "clock_ahead",
+                    place_of(request, i) + ".t_ms: " + std::to_string(readings[i].t_ms) +
+                        " is ahead of the server's clock (" + std::to_string(now) + ") by more than the allowed " +
+                        std::to_string(max_skew_ms) + " ms; the wristband's clock is wrong; nothing was stored"};
+  }
+}
+
 }  // namespace
+
+void log_to_stderr(const std::string& message) { std::cerr << message << std::endl; }
 
 HttpResponse error_response(unsigned status, const std::string& reason, const std::string& message,
                             unsigned version, bool keep_alive) {
@@ -93,14 +124,19 @@ HttpResponse error_response(unsigned status, const std::string& reason, const st
 }
 
 RequestHandler::RequestHandler(const DeviceRegistry& registry, ReadingIngest& ingest, ServiceMetrics& metrics,
-                               const StressEventQueue& events, const HandlerLimits& limits)
-    : registry_(registry), ingest_(ingest), metrics_(metrics), events_(events), limits_(limits) {}
+                               const StressEventQueue& events, const HandlerLimits& limits, ErrorLog error_log)
+    : registry_(registry),
+      ingest_(ingest),
+      metrics_(metrics),
+      events_(events),
+      limits_(limits),
+      error_log_(std::move(error_log)) {}
 
-HttpResponse RequestHandler::handle(const HttpRequest& request) {
+HttpResponse RequestHandler::handle(const HttpRequest& request, Endpoints served) {
   HttpResponse response;
   try {
     try {
-      response = route(request);
+      response = route(request, served);
     } catch (const Rejection& r) {
       metrics_.count_rejection(r.reason);
       response = error_response(r.status, r.reason, r.message, request.version(), request.keep_alive());
@@ -110,15 +146,22 @@ HttpResponse RequestHandler::handle(const HttpRequest& request) {
     }
   } catch (const std::exception& e) {
     metrics_.count_rejection("internal_error");
-    response = error_response(500, "internal_error", std::string("internal error: ") + e.what(), request.version());
+    if (error_log_) error_log_(std::string("signal service: internal error: ") + e.what());
+    response = error_response(500, "internal_error", "internal error; the service's log says more", request.version());
   }
   metrics_.count_response(response.result_int());
   return response;
 }
 
-HttpResponse RequestHandler::route(const HttpRequest& request) {
+HttpResponse RequestHandler::route(const HttpRequest& request, Endpoints served) {
   const std::string_view path = path_of({request.target().data(), request.target().size()});
   const http::verb method = request.method();
+  if (served == Endpoints::Readings && path != "/v1/readings") {
+    throw Rejection{404, "not_found", "no such path; this listener serves POST /v1/readings only"};
+  }
+  if (served == Endpoints::Admin && path != "/healthz" && path != "/metrics") {
+    throw Rejection{404, "not_found", "no such path; this listener serves GET /healthz and GET /metrics only"};
+  }
   if (path == "/v1/readings") {
     if (method != http::verb::post) throw Rejection{405, "method_not_allowed", "/v1/readings takes POST"};
     const auto start = std::chrono::steady_clock::now();
@@ -155,17 +198,19 @@ HttpResponse RequestHandler::post_readings(const HttpRequest& request) {
   }
   for (std::size_t i = 0; i < readings.size(); ++i) {
     if (readings[i].device != device.id) {
-      const bool single = request.body().find_first_not_of(" \t\r\n") == request.body().find('{');
-      const std::string place = single ? std::string("reading") : "readings[" + std::to_string(i) + "]";
       throw Rejection{403, "wrong_device",
-                      place + ".device: '" + readings[i].device + "' is not the device this token belongs to"};
+                      place_of(request, i) + ".device: '" + readings[i].device +
+                          "' is not the device this token belongs to"};
     }
   }
+  require_clock_plausible(request, readings, limits_.max_clock_skew_ms);
   std::vector<bool> stored;
   try {
     stored = ingest_.ingest(device.senior, readings);
   } catch (const SqliteError& e) {
-    throw Rejection{503, "storage_error", std::string("readings not stored, retry later: ") + e.what()};
+    // The file and the SQL are the operator's business, not the network's.
+    if (error_log_) error_log_(std::string("signal service: commit failed: ") + e.what());
+    throw Rejection{503, "storage_error", "readings not stored (storage error), retry later"};
   }
   json results = json::array();
   std::size_t new_count = 0;
@@ -179,13 +224,13 @@ HttpResponse RequestHandler::post_readings(const HttpRequest& request) {
 
 HttpResponse RequestHandler::healthz(const HttpRequest& request) const {
   const IngestCounters counters = ingest_.counters();
-  return json_response(200,
-                       {{"status", "ok"},
-                        {"devices", registry_.size()},
-                        {"stored_since_start", counters.stored},
-                        {"stress_events", counters.became_stressed + counters.became_calm},
-                        {"uptime_s", metrics_.uptime_seconds()}},
-                       request);
+  json body = {{"status", "ok"},
+               {"devices", registry_.size()},
+               {"stored_since_start", counters.stored},
+               {"uptime_s", metrics_.uptime_seconds()}};
+  // With one senior, a count of stress events is that senior's state.
+  if (limits_.detailed_metrics) body["stress_events"] = counters.became_stressed + counters.became_calm;
+  return json_response(200, body, request);
 }
 
 HttpResponse RequestHandler::metrics(const HttpRequest& request) const {
@@ -193,7 +238,8 @@ HttpResponse RequestHandler::metrics(const HttpRequest& request) const {
   response.set(http::field::server, "alplan");
   response.set(http::field::content_type, "text/plain; version=0.0.4; charset=utf-8");
   response.keep_alive(request.keep_alive());
-  response.body() = metrics_.render_prometheus(ingest_.counters(), ingest_.missing_by_device(), events_.dropped());
+  response.body() = metrics_.render_prometheus(ingest_.counters(), ingest_.missing_by_device(), events_.dropped(),
+                                               limits_.detailed_metrics);
   response.prepare_payload();
   return response;
 }

@@ -34,7 +34,7 @@ double ServiceMetrics::uptime_seconds() const {
 
 std::string ServiceMetrics::render_prometheus(const IngestCounters& ingest,
                                               const std::map<std::string, std::uint64_t>& missing,
-                                              std::uint64_t events_dropped) const {
+                                              std::uint64_t events_dropped, bool detailed) const {
   std::ostringstream out;
   out.precision(9);
   family(out, "alplan_readings_stored_total", "counter", "Readings stored on first arrival.");
@@ -44,10 +44,18 @@ std::string ServiceMetrics::render_prometheus(const IngestCounters& ingest,
   family(out, "alplan_readings_late_total", "counter", "Readings stored but older than the senior's newest voted one.");
   out << "alplan_readings_late_total " << ingest.late << '\n';
   family(out, "alplan_readings_missing", "gauge", "Sequence numbers below a device's highest that are not stored.");
-  for (const auto& [device, count] : missing) out << "alplan_readings_missing{device=\"" << device << "\"} " << count << '\n';
-  family(out, "alplan_stress_events_total", "counter", "Stress decisions that flipped, by the new state.");
-  out << "alplan_stress_events_total{state=\"stressed\"} " << ingest.became_stressed << '\n';
-  out << "alplan_stress_events_total{state=\"calm\"} " << ingest.became_calm << '\n';
+  if (detailed) {
+    for (const auto& [device, count] : missing) {
+      out << "alplan_readings_missing{device=\"" << device << "\"} " << count << '\n';
+    }
+    family(out, "alplan_stress_events_total", "counter", "Stress decisions that flipped, by the new state.");
+    out << "alplan_stress_events_total{state=\"stressed\"} " << ingest.became_stressed << '\n';
+    out << "alplan_stress_events_total{state=\"calm\"} " << ingest.became_calm << '\n';
+  } else {
+    std::uint64_t total = 0;
+    for (const auto& entry : missing) total += entry.second;
+    out << "alplan_readings_missing " << total << '\n';
+  }
   family(out, "alplan_stress_events_dropped_total", "counter", "Events dropped from the full in-process queue.");
   out << "alplan_stress_events_dropped_total " << events_dropped << '\n';
   family(out, "alplan_commits_total", "counter", "SQLite transactions committed (one per group of batches).");

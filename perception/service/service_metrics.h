@@ -39,8 +39,11 @@ class ServiceMetrics {
   double uptime_seconds() const;
 
   // The whole exposition; `missing` is the ingest's missing_by_device().
+  // Without `detailed`, nothing per device or senior: missing readings are
+  // one total, and stress transitions (with one senior, that senior's state)
+  // are left out.
   std::string render_prometheus(const IngestCounters& ingest, const std::map<std::string, std::uint64_t>& missing,
-                                std::uint64_t events_dropped) const;
+                                std::uint64_t events_dropped, bool detailed = false) const;
 
  private:
   std::chrono::steady_clock::time_point started_;

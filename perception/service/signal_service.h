@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -25,6 +26,7 @@
 #include "perception/service/reading_ingest.h"
 #include "perception/service/reading_store.h"
 #include "perception/service/request_handler.h"
+#include "perception/service/retention_sweeper.h"
 #include "perception/service/service_metrics.h"
 #include "perception/service/stress_event_queue.h"
 #include "perception/stress_classifier.h"
@@ -35,13 +37,27 @@ namespace alplan::perception::service {
 struct SignalServiceOptions {
   std::filesystem::path database;
   Durability durability = Durability::Full;
+  // The wristbands' listener. On a loopback address it serves the admin
+  // endpoints too (nobody off the machine reaches either); otherwise only
+  // POST /v1/readings.
   ServerOptions server{};
+  // The operator's listener for GET /healthz and /metrics, loopback by
+  // default, on its own port (0: any free one, see admin_port()).
+  ServerOptions admin{};
+  bool admin_listener = true;
   HandlerLimits limits{};
   StressSmoothing smoothing{};
   std::size_t event_queue_capacity = 1024;
   // Per device, the latest stored readings replayed into the detector at
   // start-up: four smoothing windows, so the hysteresis settles where it was.
   std::size_t priming_readings = 24;
+  // Fault injection (tests, the soak benchmark): asked at every COMMIT of
+  // readings, true fails it (SqliteDatabase::set_commit_veto). Called on the
+  // committing thread only. Empty in production.
+  std::function<bool()> commit_veto;
+  ErrorLog error_log = log_to_stderr;
+  // Readings older than this are deleted in the background (days 0: never).
+  RetentionOptions retention{};
 };
 
 class SignalService {
@@ -62,7 +78,10 @@ class SignalService {
   void stop();
 
   std::uint16_t port() const { return server_->port(); }
-  std::string url() const;  // http://<bind address>:<port>
+  std::string url() const;  // http[s]://<bind address>:<port>
+  // The admin listener's port and URL (0 and empty without one).
+  std::uint16_t admin_port() const { return admin_server_ ? admin_server_->port() : 0; }
+  std::string admin_url() const;
 
   StressEventQueue& events() { return events_; }
   IngestCounters counters() const { return ingest_->counters(); }
@@ -79,6 +98,8 @@ class SignalService {
   std::unique_ptr<ReadingIngest> ingest_;
   ServiceMetrics metrics_;
   std::unique_ptr<RequestHandler> handler_;
+  std::unique_ptr<RetentionSweeper> retention_;
+  std::unique_ptr<HttpServer> admin_server_;
   std::unique_ptr<HttpServer> server_;  // last: stopped and destroyed first
 };
 

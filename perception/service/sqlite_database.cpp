@@ -2,6 +2,8 @@
 
 #include <sqlite3.h>
 
+#include "perception/service/private_file.h"
+
 namespace alplan::perception::service {
 namespace {
 
@@ -81,6 +83,20 @@ std::string SqliteStatement::column_text(int index) const {
 }
 
 SqliteDatabase::SqliteDatabase(const std::filesystem::path& file, bool read_only) : file_(file) {
+  // Readings are health data: the database is its owner's only. SQLite
+  // creates the -wal and -shm files with the database's mode, so a new
+  // database made 0600 here keeps them 0600 too; an older one is tightened.
+  if (!read_only && file != ":memory:") {
+    try {
+      make_private_file(file);
+      for (const char* suffix : {"-wal", "-shm"}) {
+        const std::filesystem::path companion = file.string() + suffix;
+        if (std::filesystem::exists(companion)) make_private_file(companion);
+      }
+    } catch (const PrivateFileError& e) {
+      throw SqliteError(std::string("sqlite: cannot open ") + file.string() + ": " + e.what());
+    }
+  }
   const int flags = read_only ? SQLITE_OPEN_READONLY : (SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
   // NOMUTEX: each connection is used by one thread at a time (the callers say so).
   if (sqlite3_open_v2(file.c_str(), &db_, flags | SQLITE_OPEN_NOMUTEX, nullptr) != SQLITE_OK) {
@@ -107,5 +123,27 @@ void SqliteDatabase::execute(std::string_view sql) {
 SqliteStatement SqliteDatabase::prepare(std::string_view sql) { return SqliteStatement(db_, sql); }
 
 int SqliteDatabase::changes() const { return sqlite3_changes(db_); }
+
+bool SqliteDatabase::in_transaction() const { return sqlite3_get_autocommit(db_) == 0; }
+
+void SqliteDatabase::set_commit_veto(std::function<bool()> veto) {
+  commit_veto_ = std::move(veto);
+  if (!commit_veto_) {
+    sqlite3_commit_hook(db_, nullptr, nullptr);
+    return;
+  }
+  // SQLite's commit hook: non-zero turns the COMMIT into a ROLLBACK. No
+  // exception may cross SQLite's C frames: a throwing veto vetoes.
+  sqlite3_commit_hook(
+      db_,
+      [](void* self) {
+        try {
+          return static_cast<SqliteDatabase*>(self)->commit_veto_() ? 1 : 0;
+        } catch (...) {
+          return 1;
+        }
+      },
+      this);
+}
 
 }  // namespace alplan::perception::service

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -65,11 +66,19 @@ class SqliteDatabase {
   SqliteStatement prepare(std::string_view sql);
   // Rows changed by the last INSERT/UPDATE/DELETE.
   int changes() const;
+  // True between BEGIN and the COMMIT or ROLLBACK that ends it (a failed
+  // COMMIT may or may not have ended the transaction, depending on why).
+  bool in_transaction() const;
+  // Fault injection: `veto` is asked at every COMMIT; when it returns true
+  // SQLite turns the COMMIT into a rollback and the COMMIT fails, exactly as
+  // a failed write would. Empty: no veto. Lives as long as the connection.
+  void set_commit_veto(std::function<bool()> veto);
   const std::filesystem::path& file() const { return file_; }
 
  private:
   std::filesystem::path file_;
   sqlite3* db_ = nullptr;
+  std::function<bool()> commit_veto_;
 };
 
 }  // namespace alplan::perception::service

@@ -55,9 +55,15 @@ WristbandFleet::WristbandFleet(const DeviceRegistry& registry, const FleetOption
   check_options(options_, registry.size());
   endpoint_ = parse_http_url(options_.url);
   path_ = endpoint_.path.empty() || endpoint_.path == "/" ? "/v1/readings" : endpoint_.path;
+  // A CA file that cannot be loaded is found here, not in a worker thread.
+  if (endpoint_.tls) ReadingsClient(endpoint_, options_.http_timeout, options_.ca_file);
   if (options_.connections == 0) options_.connections = std::min<std::size_t>(options_.devices, 8);
   options_.connections = std::min(options_.connections, options_.devices);
-  const std::uint64_t start_ms = options_.start_time_ms != 0 ? options_.start_time_ms : unix_ms_now();
+  // Faster than real time, the signal starts in the past so that it ends
+  // now: no reading is ever stamped ahead of the wall clock, which the
+  // service refuses beyond its allowed skew.
+  const auto ahead_ms = static_cast<std::uint64_t>(options_.duration_s * 1000.0 * (1.0 - 1.0 / std::max(1.0, options_.speed)));
+  const std::uint64_t start_ms = options_.start_time_ms != 0 ? options_.start_time_ms : unix_ms_now() - ahead_ms;
   for (std::size_t i = 0; i < options_.devices; ++i) {
     const Device& device = registry.devices()[i];
     WristbandSpec spec;
@@ -87,7 +93,7 @@ WristbandFleet::WorkerSpan WristbandFleet::play(std::size_t worker, std::size_t 
   using clock = std::chrono::steady_clock;
   WorkerSpan span;
   const auto since_start = [start] { return std::chrono::duration<double>(clock::now() - start).count(); };
-  ReadingsClient client(endpoint_, options_.http_timeout);
+  ReadingsClient client(endpoint_, options_.http_timeout, options_.ca_file);
   std::vector<SimulatedWristband*> mine;
   for (std::size_t i = worker; i < wristbands_.size(); i += workers) mine.push_back(wristbands_[i].get());
   std::optional<clock::time_point> drain_until;

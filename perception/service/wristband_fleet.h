@@ -28,7 +28,8 @@
 namespace alplan::perception::service {
 
 struct FleetOptions {
-  std::string url;  // http://host:port; the path /v1/readings is added when the URL has none
+  std::string url;  // http[s]://host:port; the path /v1/readings is added when the URL has none
+  std::string ca_file;  // for https: the CA to check the service's certificate with (empty: the system's)
   std::size_t devices = 4;
   double rate_hz = 0.2;  // readings per wristband per second of signal: 1/hop, 1/window .. 1 Hz
   double duration_s = 120.0;
@@ -45,7 +46,7 @@ struct FleetOptions {
   std::uint32_t retry_initial_ms = 250;
   std::uint32_t retry_max_ms = 5000;
   double drain_timeout_s = 30.0;
-  std::uint64_t start_time_ms = 0;  // Unix ms of the first sample; 0: now
+  std::uint64_t start_time_ms = 0;  // Unix ms of the first sample; 0: now, or as far back as needed to end now
 };
 
 struct DeviceOutcome {

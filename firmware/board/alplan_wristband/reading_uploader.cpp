@@ -30,6 +30,8 @@ void ReadingUploader::drain_sampler() {
 }
 
 int ReadingUploader::post(char* body, size_t length) {
+  // With a CA set the handshake requires a certificate chaining to it and
+  // naming the URL's host (firmware/README.md); never setInsecure().
   WiFiClientSecure tls;
   tls.setCACert(ALPLAN_SERVICE_CA_PEM);
   HTTPClient http;

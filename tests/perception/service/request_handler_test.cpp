@@ -36,7 +36,8 @@ struct HandlerBench {
   StressEventQueue events{64};
   ReadingIngest ingest{store, nullptr, events, registry, 0};
   ServiceMetrics metrics;
-  RequestHandler handler{registry, ingest, metrics, events, HandlerLimits{}};
+  // Detailed: the health and metrics test checks the per-device lines too.
+  RequestHandler handler{registry, ingest, metrics, events, HandlerLimits{64 * 1024, 12, kDefaultMaxClockSkewMs, true}};
 
   const std::string& token(std::size_t device) const { return registry.devices()[device].token; }
 

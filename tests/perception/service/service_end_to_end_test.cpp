@@ -93,7 +93,9 @@ TEST_CASE("end to end: wristbands' readings stored once each, stress events for 
 TEST_CASE("end to end: injected duplicate and out-of-order batches change nothing but the duplicate count") {
   test::ScratchDir dir("e2e-duplicates");
   const DeviceRegistry registry = test::test_registry(4);
-  auto service = test::start_service(registry, test::test_options(dir / "d.db"));
+  SignalServiceOptions options = test::test_options(dir / "d.db");
+  options.limits.detailed_metrics = true;  // the per-device gaps are checked below
+  auto service = test::start_service(registry, options);
   WristbandFleet fleet(registry, fast_fleet(service->url(), 3, 1));
   const FleetSummary summary = fleet.run();
   REQUIRE(summary.complete());

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <functional>
 #include <random>
+#include <stdexcept>
 #include <system_error>
 
 #include <boost/asio/connect.hpp>
@@ -82,6 +83,16 @@ std::string exchange_raw(std::uint16_t port, const std::string& bytes, std::chro
   });
   io.run();
   return received;
+}
+
+TestCertificate make_test_certificate(const ScratchDir& dir, const std::string& name) {
+  TestCertificate made{dir / (name + "-cert.pem"), dir / (name + "-key.pem")};
+  const std::string command = "openssl req -x509 -newkey ec -pkeyopt ec_paramgen_curve:prime256v1 -nodes -days 2"
+                              " -subj /CN=localhost -addext subjectAltName=DNS:localhost,IP:127.0.0.1 -keyout '" +
+                              made.key.string() + "' -out '" + made.certificate.string() + "' 2>/dev/null";
+  if (std::system(command.c_str()) != 0) throw std::runtime_error("cannot make a certificate: " + command);
+  std::filesystem::permissions(made.key, std::filesystem::perms::owner_read | std::filesystem::perms::owner_write);
+  return made;
 }
 
 int status_of(const std::string& raw) {

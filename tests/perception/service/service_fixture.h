@@ -46,6 +46,15 @@ std::unique_ptr<perception::service::SignalService> start_service(
     const perception::service::DeviceRegistry& registry, const perception::service::SignalServiceOptions& options,
     bool detect_stress = true);
 
+// A self-signed certificate (EC P-256, valid two days) naming localhost and
+// 127.0.0.1, and its key, made with the openssl command line as
+// <dir>/<name>-cert.pem and <dir>/<name>-key.pem (mode 0600).
+struct TestCertificate {
+  std::filesystem::path certificate;
+  std::filesystem::path key;
+};
+TestCertificate make_test_certificate(const ScratchDir& dir, const std::string& name);
+
 // Sends `bytes` on a new connection to 127.0.0.1:port and returns all that
 // comes back until the server closes the connection or `timeout` passes.
 std::string exchange_raw(std::uint16_t port, const std::string& bytes,

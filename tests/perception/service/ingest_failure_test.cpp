@@ -1,0 +1,130 @@
+// The ingest when things go wrong: a COMMIT that fails (SQLite's commit hook
+// vetoes it, which fails the COMMIT exactly as a failed write does), an
+// exception after the commit, and a reading from far in the future.
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <future>
+#include <stdexcept>
+
+#include "perception/service/reading_ingest.h"
+#include "service_fixture.h"
+
+using namespace alplan;
+using namespace alplan::perception::service;
+
+namespace {
+
+std::int64_t now_ms() {
+  return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+// The simulator's typical calm or stressed window, 5 s apart, ending an hour ago.
+ReceivedReading window(const std::string& device, std::uint32_t seq, bool stressed) {
+  ReceivedReading r;
+  r.device = device;
+  r.seq = seq;
+  r.t_ms = static_cast<std::uint64_t>(now_ms() - 3600000 + 5000 * static_cast<std::int64_t>(seq));
+  r.window_ms = 30000;
+  r.hr_bpm = stressed ? 85.0 : 70.0;
+  r.ibi_ms = 60000.0 / *r.hr_bpm;
+  r.sdnn_ms = stressed ? 25.0 : 48.0;
+  r.rmssd_ms = stressed ? 18.0 : 40.0;
+  r.beats = stressed ? 42 : 35;
+  return r;
+}
+
+std::unique_ptr<perception::ClassifierStressDetector> detector() {
+  return std::make_unique<perception::ClassifierStressDetector>(test::test_classifier(), perception::StressSmoothing{});
+}
+
+}  // namespace
+
+TEST_CASE("ingest: after a failed COMMIT the re-sent batch is stored once and its stress event published once") {
+  test::ScratchDir dir("ingest-commit-fails");
+  ReadingStore store(dir / "s.db", Durability::Normal);
+  StressEventQueue events(16);
+  const DeviceRegistry registry = test::test_registry(1);
+  auto stress = detector();
+  ReadingIngest ingest(store, stress.get(), events, registry, 24);
+  std::uint32_t seq = 0;
+  for (int i = 0; i < 4; ++i) ingest.ingest("senior-00", {window("wb-00", seq++, false)});
+  // The batch that flips the senior to stressed fails to commit.
+  std::vector<ReceivedReading> flip;
+  for (int i = 0; i < 6; ++i) flip.push_back(window("wb-00", seq++, true));
+  bool fail = true;
+  store.set_commit_veto([&fail] { return fail; });
+  CHECK_THROWS_AS(ingest.ingest("senior-00", flip), SqliteError);
+  CHECK(store.count_readings() == 4);
+  CHECK(store.stress_events().empty());
+  CHECK_FALSE(events.try_pop());
+  CHECK(ingest.counters().failed_commits == 1);
+  // The wristband re-sends the same batch once the disk is back.
+  fail = false;
+  CHECK(ingest.ingest("senior-00", flip) == std::vector<bool>(6, true));
+  CHECK(store.count_readings() == 10);
+  CHECK(ingest.counters().late == 0);
+  const auto published = events.try_pop();
+  REQUIRE(published);
+  CHECK(published->stressed);
+  CHECK_FALSE(events.try_pop());
+  REQUIRE(store.stress_events().size() == 1);
+  CHECK(store.stress_events()[0].t_ms == published->t_ms);
+  // Sent a third time: duplicates, no second event.
+  CHECK(ingest.ingest("senior-00", flip) == std::vector<bool>(6, false));
+  CHECK_FALSE(events.try_pop());
+  CHECK(store.stress_events().size() == 1);
+}
+
+TEST_CASE("ingest: a failure after the commit leaves no leader behind; later batches are committed") {
+  test::ScratchDir dir("ingest-publish-throws");
+  ReadingStore store(dir / "s.db", Durability::Normal);
+  StressEventQueue events(16);
+  const DeviceRegistry registry = test::test_registry(1);
+  auto stress = detector();
+  bool publish_fails = true;
+  IngestOptions options;
+  options.publish = [&](const StressEvent& e) {
+    if (publish_fails) throw std::runtime_error("publishing failed");
+    events.push(e);
+  };
+  ReadingIngest ingest(store, stress.get(), events, registry, options);
+  std::vector<ReceivedReading> stressed;
+  for (std::uint32_t s = 0; s < 6; ++s) stressed.push_back(window("wb-00", s, true));
+  CHECK_THROWS_WITH(ingest.ingest("senior-00", stressed), "publishing failed");
+  CHECK(store.count_readings() == 6);  // committed before publishing failed
+  publish_fails = false;
+  // Before the fix the failed leader kept the flag and this waited forever.
+  auto next = std::async(std::launch::async, [&] { return ingest.ingest("senior-00", {window("wb-00", 6, true)}); });
+  REQUIRE(next.wait_for(std::chrono::seconds(5)) == std::future_status::ready);
+  CHECK(next.get() == std::vector<bool>{true});
+}
+
+TEST_CASE("ingest: a reading far in the future neither votes nor primes; later readings still raise events") {
+  test::ScratchDir dir("ingest-future");
+  const DeviceRegistry registry = test::test_registry(1);
+  ReceivedReading future = window("wb-00", 1000, false);
+  future.t_ms = 9223372036854775807ULL;  // the largest t_ms the message allows
+  {
+    // A database holding such a reading, as one written before readings were checked against the clock.
+    ReadingStore store(dir / "s.db", Durability::Normal);
+    store.begin();
+    store.insert_reading(future, now_ms());
+    store.commit();
+  }
+  ReadingStore store(dir / "s.db", Durability::Normal);
+  StressEventQueue events(16);
+  auto stress = detector();
+  ReadingIngest ingest(store, stress.get(), events, registry, 24);
+  CHECK_FALSE(stress->state("senior-00"));  // not primed with it
+  ReceivedReading another = future;
+  another.seq = 1001;
+  ingest.ingest("senior-00", {another});
+  CHECK(ingest.counters().ahead == 1);
+  for (std::uint32_t s = 0; s < 6; ++s) ingest.ingest("senior-00", {window("wb-00", s, true)});
+  CHECK(ingest.counters().late == 0);
+  const auto e = events.try_pop();
+  REQUIRE(e);
+  CHECK(e->stressed);
+}
