@@ -23,12 +23,15 @@ class CMakeExtension(Extension):
 
 class CMakeBuild(build_ext):
     def build_extension(self, ext):
-        build = os.environ.get("ALPLAN_BUILD_DIR") or os.path.join(os.path.abspath(self.build_temp), "cmake")
-        configure = ["cmake", "-S", ROOT, "-B", build, "-DCMAKE_BUILD_TYPE=Release",
-                     "-DALPLAN_PYTHON=" + sys.executable]
-        if not os.environ.get("ALPLAN_BUILD_DIR"):
-            configure += ["-DALPLAN_BUILD_TESTS=OFF", "-DALPLAN_BUILD_BENCHMARKS=OFF"]
-        subprocess.check_call(configure)
+        reused = os.environ.get("ALPLAN_BUILD_DIR")
+        build = reused or os.path.join(os.path.abspath(self.build_temp), "cmake")
+        if not reused:
+            # A build tree of its own, for the interpreter pip runs under.
+            subprocess.check_call(["cmake", "-S", ROOT, "-B", build, "-DCMAKE_BUILD_TYPE=Release",
+                                   "-DALPLAN_PYTHON=" + sys.executable, "-DALPLAN_BUILD_TESTS=OFF",
+                                   "-DALPLAN_BUILD_BENCHMARKS=OFF"])
+        # A reused tree keeps its configuration (ALPLAN_PYTHON among it): the
+        # module is built for that interpreter, which must be pip's or its venv's base.
         subprocess.check_call(["cmake", "--build", build, "--target", "alplan_python", "-j", str(os.cpu_count() or 2)])
         built = [f for f in os.listdir(os.path.join(build, "python")) if f.startswith("alplan") and f.endswith(".so")]
         if not built:
