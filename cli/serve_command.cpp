@@ -274,7 +274,7 @@ void add_serve_command(CLI::App& app, int& exit_code) {
       ->check(CLI::PositiveNumber);
   s->add_option("--retention-days", o->retention_days,
                 "Delete readings and stress events older than this many days, in the background (0: keep all)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0.0, 36500.0));
   s->add_option("--admin-bind", o->admin_bind, "Address of the /healthz and /metrics listener (keep it loopback)");
   s->add_option("--admin-port", o->admin_port, "Port of the /healthz and /metrics listener (0: any free one, printed)");
   s->add_flag("--detailed-metrics", o->detailed_metrics,

@@ -17,7 +17,10 @@ std::int64_t unix_ms_now() {
 RetentionSweeper::RetentionSweeper(std::filesystem::path database, const RetentionOptions& options,
                                    ErrorLog error_log)
     : database_(std::move(database)), options_(options), error_log_(std::move(error_log)) {
-  if (!(options_.days >= 0.0)) throw std::invalid_argument("--retention-days must not be negative");
+  // Bounded so that the cutoff (now minus the period, in ms) stays an int64.
+  if (!(options_.days >= 0.0 && options_.days <= 36500.0)) {
+    throw std::invalid_argument("--retention-days must be between 0 and 36500");
+  }
   if (options_.chunk == 0) throw std::invalid_argument("the retention chunk must be at least one row");
 }
 

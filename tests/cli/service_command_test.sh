@@ -153,6 +153,7 @@ stored=$(sqlite3 k.db 'SELECT COUNT(*) FROM readings')
 [ "$stored" -eq "$made" ] || fail "after the kill: $made readings made, $stored stored"
 [ "$(sqlite3 k.db 'SELECT COUNT(*) FROM stress_events')" -eq 2 ] || fail "events: $(sqlite3 k.db 'SELECT * FROM stress_events')"
 [ "$(sqlite3 k.db 'SELECT COUNT(DISTINCT senior) FROM stress_events WHERE stressed = 1')" -eq 2 ] || fail "events"
+[ "$(stat -c %a events.jsonl)" = 600 ] || fail "events.jsonl has mode $(stat -c %a events.jsonl), expected 600"
 # Printed events: never one twice (one may be missing if the kill fell between commit and print).
 [ "$(sort events.jsonl | uniq -d | wc -l)" -eq 0 ] || fail "an event printed twice: $(cat events.jsonl)"
 

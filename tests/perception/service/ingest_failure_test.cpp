@@ -77,7 +77,7 @@ TEST_CASE("ingest: after a failed COMMIT the re-sent batch is stored once and it
   CHECK(store.stress_events().size() == 1);
 }
 
-TEST_CASE("ingest: a failure after the commit leaves no leader behind, later batches are committed") {
+TEST_CASE("ingest: a failure after the commit leaves no leader behind - later batches are committed") {
   test::ScratchDir dir("ingest-publish-throws");
   ReadingStore store(dir / "s.db", Durability::Normal);
   StressEventQueue events(16);
@@ -101,7 +101,7 @@ TEST_CASE("ingest: a failure after the commit leaves no leader behind, later bat
   CHECK(next.get() == std::vector<bool>{true});
 }
 
-TEST_CASE("ingest: a reading far in the future neither votes nor primes, later readings still raise events") {
+TEST_CASE("ingest: a reading far in the future neither votes nor primes - later readings still raise events") {
   test::ScratchDir dir("ingest-future");
   const DeviceRegistry registry = test::test_registry(1);
   ReceivedReading future = window("wb-00", 1000, false);

@@ -56,7 +56,7 @@ TEST_CASE("admin: a loopback service serves both on its port too, as before") {
   CHECK(client.get("/metrics").status == 200);
 }
 
-TEST_CASE("admin: by default no device id or stress transition in /metrics, none in /healthz, detailed on request") {
+TEST_CASE("admin: by default no device id or stress transition in /metrics, none in /healthz - detailed on request") {
   test::ScratchDir dir("admin-detail");
   const DeviceRegistry registry = test::test_registry(1);
   SignalServiceOptions options = test::test_options(dir / "a.db");

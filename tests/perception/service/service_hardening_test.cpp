@@ -105,7 +105,7 @@ TEST_CASE("handler: a token over the maximum length is refused before any compar
   CHECK(b.registry.authenticate(std::string(129, 'a')) == nullptr);
 }
 
-TEST_CASE("handler: 503 and 500 bodies name no file, SQL or exception, the error log has them") {
+TEST_CASE("handler: 503 and 500 bodies name no file, SQL or exception - the error log has them") {
   SECTION("a failed commit") {
     Bench b;
     b.store.set_commit_veto([] { return true; });
@@ -157,7 +157,7 @@ TEST_CASE("files: the database and its WAL are created 0600, an older open one i
   ::umask(before);
 }
 
-TEST_CASE("files: a tokens file others can read is named with the fix, private files are not overwritten") {
+TEST_CASE("files: a tokens file others can read is named with the fix - private files are not overwritten") {
   test::ScratchDir dir("private-tokens");
   const std::filesystem::path tokens = dir / "tokens.txt";
   const int fd = create_private_file(tokens, false);

@@ -45,7 +45,7 @@ TEST_CASE("limits: the connection limiter counts per client and frees a slot wit
   CHECK_THROWS_AS(ConnectionLimiter(0), std::invalid_argument);
 }
 
-TEST_CASE("limits: one client cannot hold every connection, another client is still served") {
+TEST_CASE("limits: one client cannot hold every connection - another client is still served") {
   test::ScratchDir dir("per-client");
   const DeviceRegistry registry = test::test_registry(1);
   SignalServiceOptions options = test::test_options(dir / "c.db");

@@ -68,4 +68,5 @@ TEST_CASE("retention: readings older than the period are deleted in chunks while
   // A sweep with nothing old deletes nothing.
   CHECK(sweeper.sweep(now_ms()) == 0);
   CHECK_THROWS_AS(RetentionSweeper(dir / "r.db", RetentionOptions{-1.0}, log_to_stderr), std::invalid_argument);
+  CHECK_THROWS_AS(RetentionSweeper(dir / "r.db", RetentionOptions{1e300}, log_to_stderr), std::invalid_argument);
 }

@@ -14,7 +14,7 @@ using namespace alplan;
 using namespace alplan::perception::service;
 using namespace std::chrono_literals;
 
-TEST_CASE("shutdown: a batch committing while the service stops is answered 200 and stored, later ones get 503") {
+TEST_CASE("shutdown: a batch committing while the service stops is answered 200 and stored - later ones get 503") {
   test::ScratchDir dir("shutdown");
   const DeviceRegistry registry = test::test_registry(1);
   SignalServiceOptions options = test::test_options(dir / "s.db");
