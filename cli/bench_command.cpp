@@ -8,6 +8,7 @@
 #include "benchmarks/harness/planner_bench.h"
 #include "benchmarks/harness/process_runner.h"
 #include "cli/commands.h"
+#include "cli/slurm_options.h"
 
 namespace alplan::cli {
 namespace {
@@ -45,6 +46,7 @@ struct BenchPlannersOptions {
   int first = 0;
   bool anytime = false;
   std::string search = "ehc";
+  SlurmFlags slurm;
 };
 
 int run_planners(const BenchPlannersOptions& options) {
@@ -58,6 +60,11 @@ int run_planners(const BenchPlannersOptions& options) {
   o.first = options.first;
   o.anytime = options.anytime;
   o.search = options.search;
+  std::string error;
+  if (!array_run(options.slurm, options.out, o.array, error)) {
+    std::cerr << "error: " << error << "\n";
+    return kExitInputError;
+  }
   try {
     return bench::run_planner_bench(o, std::cout, std::cerr) == 0 ? kExitOk : kExitInvalid;
   } catch (const std::exception& e) {
@@ -94,9 +101,11 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   p->add_option("--first", planners->first, "Only the first N problems of each domain");
   p->add_flag("--anytime", planners->anytime, "Let each run improve its plan until the time limit");
   p->add_option("--search", planners->search, "ehc, gbfs or wastar")->check(CLI::IsMember({"ehc", "gbfs", "wastar"}));
+  add_slurm_options(p, planners->slurm);
   p->callback([planners, &exit_code] { exit_code = run_planners(*planners); });
 
   add_bench_repair_command(bench, exit_code);
+  add_bench_merge_command(bench, exit_code);
 }
 
 }  // namespace alplan::cli

@@ -14,6 +14,7 @@
 #include "benchmarks/harness/repair_bench.h"
 #include "cli/commands.h"
 #include "cli/perception_module.h"
+#include "cli/slurm_options.h"
 #include "domains/pddl_files.h"
 #include "repair/observation.h"
 #include "repair/random_events.h"
@@ -28,6 +29,7 @@ struct BenchRepairOptions {
   std::string events = "arrival,iot,sibling,moves,emotion,overrun,two";
   std::string observe = "iot";
   std::string recognizer = "cnn";
+  SlurmFlags slurm;
 };
 
 // "all", or a comma-separated list of random event kinds.
@@ -76,8 +78,14 @@ int run_repair(BenchRepairOptions options) {
     std::cerr << "error: --out is required\n";
     return kExitInputError;
   }
-  if (options.recognizer == "cnn") {
-    std::string error;
+  std::string error;
+  if (!array_run(options.slurm, options.bench.out_dir, options.bench.array, error)) {
+    std::cerr << "error: " << error << "\n";
+    return kExitInputError;
+  }
+  // Submitting and merging run nothing: the tasks train their own camera.
+  const bool runs = options.bench.array.role == bench::ArrayRole::local || options.bench.array.role == bench::ArrayRole::task;
+  if (options.recognizer == "cnn" && runs) {
     if (!load_drawing_camera(options.bench.assisted_living_dir + "/types.ttl", options.bench.camera,
                              options.bench.camera_info, error)) {
       std::cerr << "error: --recognizer cnn: " << error << "\n";
@@ -145,6 +153,12 @@ void add_bench_repair_command(CLI::App* bench, int& exit_code) {
   r->add_option("--domains-dir", o->bench.assisted_living_dir, "Folder with domain.pddl and types.ttl");
   r->add_option("--epsilon", o->bench.epsilon, "Separation of dependent happenings")->check(CLI::PositiveNumber);
   r->add_option("--planning-time", o->bench.planning_time, "Seconds per planner call")->check(CLI::PositiveNumber);
+  r->add_option("--initial-time", o->bench.initial_planning_time, "Seconds of anytime search for each home's first plan")
+      ->check(CLI::PositiveNumber);
+  r->add_option("--initial-expansions", o->bench.initial_expansions,
+                "Cap each weight of that search at so many expansions (0: by time alone; set, the first plans do "
+                "not depend on the machine's speed)");
+  add_slurm_options(r, o->slurm);
   r->callback([o, &exit_code] { exit_code = run_repair(*o); });
 }
 

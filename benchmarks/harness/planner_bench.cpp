@@ -13,6 +13,7 @@
 
 #include "benchmarks/harness/baseline.h"
 #include "benchmarks/harness/run_status.h"
+#include "benchmarks/harness/slurm_array.h"
 #include "benchmarks/harness/suite.h"
 #include "benchmarks/harness/table.h"
 
@@ -63,6 +64,115 @@ Run run_one(const SuiteProblem& p, const PlannerBenchOptions& options, const std
   return run;
 }
 
+nlohmann::json to_json(const Run& run) {
+  return {{"domain_file", run.problem.domain_file}, {"problem_file", run.problem.problem_file},
+          {"domain", run.problem.domain}, {"number", run.problem.number}, {"status", run.status},
+          {"seconds", run.seconds}, {"first_plan", run.first_plan}, {"max_rss_kib", run.max_rss_kib},
+          {"makespan", run.makespan}, {"value", run.value}, {"message", run.message}};
+}
+
+Run run_from_json(const nlohmann::json& j) {
+  Run run;
+  run.problem.domain_file = j.at("domain_file");
+  run.problem.problem_file = j.at("problem_file");
+  run.problem.domain = j.at("domain");
+  run.problem.number = j.at("number");
+  run.status = j.at("status");
+  run.seconds = j.at("seconds");
+  run.first_plan = j.at("first_plan");
+  run.max_rss_kib = j.at("max_rss_kib");
+  run.makespan = j.at("makespan");
+  run.value = j.at("value");
+  run.message = j.at("message");
+  return run;
+}
+
+std::string plans_dir(const PlannerBenchOptions& options) {
+  return options.out_dir.empty() ? std::filesystem::temp_directory_path().string() + "/alplan-plans"
+                                 : options.out_dir + "/plans";
+}
+
+void print_progress(const Run& run, std::size_t done, std::size_t total, std::ostream& progress) {
+  progress << "[" << done << "/" << total << "] " << run.problem.domain << " "
+           << std::filesystem::path(run.problem.problem_file).filename().string() << ": " << run.status;
+  if (run.status == "solved") progress << " value " << run.value << " in " << fixed(run.first_plan, 2) << " s";
+  progress << "\n" << std::flush;
+}
+
+// Every run here, `jobs` at a time.
+std::vector<Run> run_locally(const std::vector<SuiteProblem>& suite, const PlannerBenchOptions& options,
+                             std::ostream& progress) {
+  std::vector<Run> runs(suite.size());
+  std::atomic<std::size_t> next{0};
+  std::atomic<std::size_t> done{0};
+  std::mutex print;
+  auto worker = [&] {
+    for (std::size_t i = next++; i < suite.size(); i = next++) {
+      runs[i] = run_one(suite[i], options, plans_dir(options) + "/" + std::to_string(i) + ".plan");
+      const std::lock_guard<std::mutex> lock(print);
+      print_progress(runs[i], ++done, suite.size(), progress);
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int j = 0; j < std::max(1, options.jobs); ++j) threads.emplace_back(worker);
+  for (std::thread& t : threads) t.join();
+  return runs;
+}
+
+std::string problem_name(const SuiteProblem& p) {
+  return p.domain + "/" + std::filesystem::path(p.problem_file).filename().string();
+}
+
+void submit(const std::vector<SuiteProblem>& suite, const PlannerBenchOptions& options, std::ostream& out) {
+  ArrayManifest m;
+  m.kind = "planners";
+  m.working_dir = std::filesystem::current_path().string();
+  m.command = options.array.command;
+  m.slurm = options.array.slurm;
+  const int n = static_cast<int>(suite.size());
+  for (int t = 0; t < array_tasks(n, m.slurm.batch); ++t) {
+    const auto [first, last] = task_items(t, n, m.slurm.batch);
+    std::string name = problem_name(suite[static_cast<std::size_t>(first)]);
+    if (last - first > 1) name += " .. " + problem_name(suite[static_cast<std::size_t>(last - 1)]);
+    m.tasks.push_back(name);
+  }
+  submit_array(options.array.dir, m, out);
+}
+
+// One array task: its share of the suite, one run at a time.
+void run_task(const std::vector<SuiteProblem>& suite, const PlannerBenchOptions& options, std::ostream& progress) {
+  const ArrayManifest m = read_manifest(options.array.dir);
+  const int n = static_cast<int>(suite.size());
+  if (options.array.task < 0 || options.array.task >= array_tasks(n, m.slurm.batch)) {
+    throw std::runtime_error("no array task " + std::to_string(options.array.task) + " in " + options.array.dir);
+  }
+  const auto [first, last] = task_items(options.array.task, n, m.slurm.batch);
+  nlohmann::json runs = nlohmann::json::array();
+  for (int i = first; i < last; ++i) {
+    const Run run = run_one(suite[static_cast<std::size_t>(i)], options,
+                            plans_dir(options) + "/" + std::to_string(i) + ".plan");
+    print_progress(run, static_cast<std::size_t>(i - first + 1), static_cast<std::size_t>(last - first), progress);
+    runs.push_back(to_json(run));
+  }
+  write_task_result(options.array.dir, options.array.task, runs);
+}
+
+// The finished tasks' runs, in the suite's order.
+std::vector<Run> merged_runs(const std::vector<SuiteProblem>& suite, const PlannerBenchOptions& options) {
+  const ArrayManifest m = read_manifest(options.array.dir);
+  const CollectedTasks tasks = collect_tasks(options.array.dir, m);
+  if (!tasks.complete()) throw std::runtime_error("not every task has finished: run `alplan bench merge`");
+  std::vector<Run> runs;
+  for (const auto& [t, result] : tasks.results) {
+    for (const nlohmann::json& j : result) runs.push_back(run_from_json(j));
+  }
+  if (runs.size() != suite.size()) {
+    throw std::runtime_error(std::to_string(runs.size()) + " runs in " + options.array.dir + " for a suite of " +
+                             std::to_string(suite.size()) + " problems: the suite changed since it was submitted");
+  }
+  return runs;
+}
+
 double time_score(double seconds, double limit) {
   if (seconds <= 1.0) return 1.0;
   return std::max(0.0, 1.0 - std::log(seconds) / std::log(limit));
@@ -73,34 +183,32 @@ struct Scores {
   double quality = 0, time = 0;
 };
 
+int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions& options, std::ostream& out);
+
 }  // namespace
 
 int run_planner_bench(const PlannerBenchOptions& options, std::ostream& out, std::ostream& progress) {
   const std::vector<SuiteProblem> suite = first_problems(load_suite(options.suite), options.first);
+  std::filesystem::create_directories(plans_dir(options));
+  switch (options.array.role) {
+    case ArrayRole::submit:
+      submit(suite, options, out);
+      return 0;
+    case ArrayRole::task:
+      run_task(suite, options, progress);
+      return 0;
+    case ArrayRole::merge:
+      return report_planner_bench(merged_runs(suite, options), options, out);
+    case ArrayRole::local:
+      break;
+  }
+  return report_planner_bench(run_locally(suite, options, progress), options, out);
+}
+
+namespace {
+
+int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions& options, std::ostream& out) {
   const Baseline baseline = options.baseline.empty() ? Baseline{} : Baseline::load(options.baseline);
-  const std::string plans_dir = options.out_dir.empty() ? std::filesystem::temp_directory_path().string() + "/alplan-plans"
-                                                        : options.out_dir + "/plans";
-  std::filesystem::create_directories(plans_dir);
-
-  std::vector<Run> runs(suite.size());
-  std::atomic<std::size_t> next{0};
-  std::atomic<std::size_t> done{0};
-  std::mutex print;
-  auto worker = [&] {
-    for (std::size_t i = next++; i < suite.size(); i = next++) {
-      const std::string plan_file = plans_dir + "/" + std::to_string(i) + ".plan";
-      runs[i] = run_one(suite[i], options, plan_file);
-      const std::lock_guard<std::mutex> lock(print);
-      progress << "[" << ++done << "/" << suite.size() << "] " << suite[i].domain << " "
-               << std::filesystem::path(suite[i].problem_file).filename().string() << ": " << runs[i].status;
-      if (runs[i].status == "solved") progress << " value " << runs[i].value << " in " << fixed(runs[i].first_plan, 2) << " s";
-      progress << "\n" << std::flush;
-    }
-  };
-  std::vector<std::thread> threads;
-  for (int j = 0; j < std::max(1, options.jobs); ++j) threads.emplace_back(worker);
-  for (std::thread& t : threads) t.join();
-
   // Scores per domain, ours and the references' on the same problems.
   const std::vector<std::string> planners{"ours", "optic", "popf"};
   std::map<std::string, std::map<std::string, Scores>> scores;
@@ -194,4 +302,5 @@ int run_planner_bench(const PlannerBenchOptions& options, std::ostream& out, std
   return invalid;
 }
 
+}  // namespace
 }  // namespace alplan::bench

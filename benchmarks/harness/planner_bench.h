@@ -13,6 +13,7 @@
 #include <string>
 
 #include "benchmarks/harness/process_runner.h"
+#include "benchmarks/harness/slurm_array.h"
 
 namespace alplan::bench {
 
@@ -26,9 +27,14 @@ struct PlannerBenchOptions {
   int first = 0;           // only the first N problems of each domain (0: all)
   bool anytime = false;
   std::string search = "ehc";
+  // Local, or one role of a Slurm job array (slurm_array.h): the tasks
+  // write their runs' plans to out_dir/plans as a local run does.
+  ArrayRun array;
 };
 
-// Returns the number of invalid plans (the harness's own failure count).
+// Returns the number of invalid plans (the harness's own failure count);
+// 0 after submitting or running an array task. Throws std::runtime_error on
+// an unreadable suite or array folder.
 int run_planner_bench(const PlannerBenchOptions& options, std::ostream& out, std::ostream& progress);
 
 }  // namespace alplan::bench

@@ -13,6 +13,7 @@
 #include <chrono>
 #include <climits>
 #include <cstring>
+#include <fstream>
 #include <stdexcept>
 
 namespace alplan::bench {
@@ -96,6 +97,20 @@ std::string self_executable() {
   const ssize_t n = readlink("/proc/self/exe", path, sizeof path - 1);
   if (n <= 0) throw std::runtime_error("cannot read /proc/self/exe");
   return std::string(path, static_cast<std::size_t>(n));
+}
+
+}  // namespace alplan::bench
+
+namespace alplan::bench {
+
+std::vector<std::string> own_command_line() {
+  std::ifstream in("/proc/self/cmdline", std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read /proc/self/cmdline");
+  std::vector<std::string> argv;
+  for (std::string arg; std::getline(in, arg, '\0');) argv.push_back(arg);
+  if (argv.empty()) throw std::runtime_error("/proc/self/cmdline is empty");
+  argv.front() = self_executable();
+  return argv;
 }
 
 }  // namespace alplan::bench

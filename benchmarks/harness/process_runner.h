@@ -30,4 +30,9 @@ RunResult run_process(const std::vector<std::string>& argv, const RunLimits& lim
 // start `alplan` subcommands as child processes.
 std::string self_executable();
 
+// This process's own argv (/proc/self/cmdline), the first made absolute
+// (self_executable), so the command can be run again elsewhere: what a
+// Slurm array task runs (slurm_array.h).
+std::vector<std::string> own_command_line();
+
 }  // namespace alplan::bench

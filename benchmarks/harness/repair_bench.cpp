@@ -141,6 +141,38 @@ std::vector<StudyRun> study_runs(const std::vector<RunRecord>& records) {
   return out;
 }
 
+nlohmann::json to_json(const RunRecord& r) {
+  return {{"home", r.home}, {"run", r.run}, {"kind", r.kind}, {"strategy", r.strategy}, {"comforted", r.reached},
+          {"repairs", r.repairs}, {"latency_ms", r.latencies_ms}, {"perception_ms", r.perception_ms},
+          {"reused_grounding", r.reused_grounding}, {"preparation_ms", r.preparation_ms},
+          {"stability", r.stability}, {"planner_calls", r.planner_calls},
+          {"delay", r.delay ? nlohmann::json(*r.delay) : nlohmann::json()}, {"makespan", r.makespan},
+          {"cost", r.cost}, {"sightings", r.sightings}, {"failures", r.failures}, {"outcome", r.outcome}};
+}
+
+RunRecord record_from_json(const nlohmann::json& j) {
+  RunRecord r;
+  r.home = j.at("home");
+  r.run = j.at("run");
+  r.kind = j.at("kind");
+  r.strategy = j.at("strategy");
+  r.reached = j.at("comforted");
+  r.repairs = j.at("repairs");
+  r.latencies_ms = j.at("latency_ms").get<std::vector<double>>();
+  r.perception_ms = j.at("perception_ms");
+  r.reused_grounding = j.at("reused_grounding").get<std::vector<bool>>();
+  r.preparation_ms = j.at("preparation_ms");
+  r.stability = j.at("stability");
+  r.planner_calls = j.at("planner_calls");
+  if (!j.at("delay").is_null()) r.delay = j.at("delay").get<double>();
+  r.makespan = j.at("makespan");
+  r.cost = j.at("cost");
+  r.sightings = j.at("sightings");
+  r.failures = j.at("failures");
+  r.outcome = j.at("outcome");
+  return r;
+}
+
 void write_runs(const RepairBenchOptions& o, const std::vector<RunRecord>& records) {
   Table runs({"home", "run", "kind", "strategy", "comforted", "repairs", "latency_ms", "perception_ms", "stability",
               "planner_calls", "delay", "makespan", "cost", "sightings", "failures", "outcome"});
@@ -152,13 +184,7 @@ void write_runs(const RepairBenchOptions& o, const std::vector<RunRecord>& recor
               latencies, fixed(r.perception_ms, 3), std::to_string(r.stability), std::to_string(r.planner_calls),
               r.delay ? fixed(*r.delay, 3) : "", fixed(r.makespan, 3), fixed(r.cost, 1), std::to_string(r.sightings),
               r.failures, r.outcome});
-    runs_json.push_back({{"home", r.home}, {"run", r.run}, {"kind", r.kind}, {"strategy", r.strategy},
-                         {"comforted", r.reached}, {"repairs", r.repairs}, {"latency_ms", r.latencies_ms},
-                         {"perception_ms", r.perception_ms}, {"reused_grounding", r.reused_grounding},
-                         {"preparation_ms", r.preparation_ms}, {"stability", r.stability},
-                         {"planner_calls", r.planner_calls},
-                         {"delay", r.delay ? nlohmann::json(*r.delay) : nlohmann::json()}, {"makespan", r.makespan},
-                         {"cost", r.cost}, {"sightings", r.sightings}, {"failures", r.failures}, {"outcome", r.outcome}});
+    runs_json.push_back(to_json(r));
   }
   std::ofstream(fs::path(o.out_dir) / "runs.csv") << [&] { std::ostringstream s; runs.write_csv(s); return s.str(); }();
   std::ofstream(fs::path(o.out_dir) / "runs.json") << runs_json.dump(2) << "\n";
@@ -226,13 +252,21 @@ nlohmann::json paper_home_latencies(const RepairBenchOptions& o) {
   return medians;
 }
 
-}  // namespace
+// What every home's executions share: the domain with the ontology's
+// types, and the strategies, built once.
+struct StudySetup {
+  domains::LoadedFiles paper;
+  repair::TypeOntology ontology;
+  pddl::Domain domain;
+  std::vector<std::unique_ptr<repair::RepairStrategy>> strategies;
+  std::vector<std::string> order;
+};
 
-int run_repair_bench(const RepairBenchOptions& o, std::ostream& out, std::ostream& progress) {
-  const domains::LoadedFiles paper = domains::load_pddl(o.assisted_living_dir + "/domain.pddl",
-                                                        o.assisted_living_dir + "/paper-scenario-1.pddl");
-  const repair::TypeOntology ontology = repair::TypeOntology::from_file(o.assisted_living_dir + "/types.ttl");
-  const pddl::Domain domain = repair::augment_domain(*paper.domain, ontology);
+std::unique_ptr<StudySetup> prepare_study(const RepairBenchOptions& o, const std::string& external_dir) {
+  auto setup = std::make_unique<StudySetup>(StudySetup{
+      domains::load_pddl(o.assisted_living_dir + "/domain.pddl", o.assisted_living_dir + "/paper-scenario-1.pddl"),
+      repair::TypeOntology::from_file(o.assisted_living_dir + "/types.ttl"), pddl::Domain{}, {}, {}});
+  setup->domain = repair::augment_domain(*setup->paper.domain, setup->ontology);
   repair::StrategyOptions strategy_options = o.strategy_options;
   strategy_options.planner.epsilon = o.epsilon;
   strategy_options.planner.time_limit = o.planning_time;
@@ -242,54 +276,64 @@ int run_repair_bench(const RepairBenchOptions& o, std::ostream& out, std::ostrea
   strategy_options.planner.anytime = o.repair_anytime;
   strategy_options.planner.anytime_min_weight = o.repair_min_weight;
   strategy_options.planner.anytime_expansions = o.repair_expansions;
-  std::vector<std::unique_ptr<repair::RepairStrategy>> strategies;
-  std::vector<std::string> order;
   for (const std::string& name : o.strategies) {
-    strategies.push_back(repair::make_strategy(name, strategy_options));
-    order.push_back(name);
+    setup->strategies.push_back(repair::make_strategy(name, strategy_options));
+    setup->order.push_back(name);
   }
   if (o.external) {
-    fs::create_directories(fs::path(o.out_dir) / "external");
-    strategies.push_back(std::make_unique<ExternalReplan>(
-        ExternalPlannerOptions{o.alplan, (fs::path(o.out_dir) / "external").string(), o.epsilon, o.planning_time}));
-    order.push_back("replan-external");
+    fs::create_directories(external_dir);
+    setup->strategies.push_back(std::make_unique<ExternalReplan>(
+        ExternalPlannerOptions{o.alplan, external_dir, o.epsilon, o.planning_time}));
+    setup->order.push_back("replan-external");
   }
+  return setup;
+}
+
+// Home number h's executions: its runs, each met by every strategy.
+std::vector<RunRecord> run_home(StudySetup& setup, int h, const RepairBenchOptions& o, std::ostream& progress) {
+  domains::HomeOptions home_options = o.home;
+  home_options.seed = o.seed + static_cast<std::uint64_t>(h);
+  const domains::GeneratedHome home = domains::generate_home(home_options);
+  const std::string name = "home-" + std::to_string(home_options.seed);
+  const domains::LoadedFiles files =
+      domains::load_pddl_text(pddl::write_domain(*setup.paper.domain), "domain.pddl", home.problem, name + ".pddl");
+  // As a mission plans (domains/mission_run.h): the best plan found in a
+  // short anytime search, since the metric penalises suggestions and the
+  // first plan found often suggests.
+  PlannerOptions initial;
+  initial.epsilon = o.epsilon;
+  initial.anytime = true;
+  initial.anytime_expansions = o.initial_expansions;
+  initial.time_limit = std::min(o.planning_time, o.initial_planning_time);
+  const repair::PlanningOutcome planned = repair::plan_in_process(setup.domain, *files.problem, 0.0, initial);
   std::vector<RunRecord> records;
-  for (int h = 0; h < o.homes; ++h) {
-    domains::HomeOptions home_options = o.home;
-    home_options.seed = o.seed + static_cast<std::uint64_t>(h);
-    const domains::GeneratedHome home = domains::generate_home(home_options);
-    const std::string name = "home-" + std::to_string(home_options.seed);
-    const domains::LoadedFiles files =
-        domains::load_pddl_text(pddl::write_domain(*paper.domain), "domain.pddl", home.problem, name + ".pddl");
-    // As a mission plans (domains/mission_run.h): the best plan found in a
-    // short anytime search, since the metric penalises suggestions and the
-    // first plan found often suggests.
-    PlannerOptions initial;
-    initial.epsilon = o.epsilon;
-    initial.anytime = true;
-    initial.time_limit = std::min(o.planning_time, o.initial_planning_time);
-    const repair::PlanningOutcome planned = repair::plan_in_process(domain, *files.problem, 0.0, initial);
-    if (!planned.plan) {
-      progress << name << ": no initial plan (" << planned.message << "), skipped\n";
-      continue;
-    }
-    const repair::Mission mission = mission_for(domain, *files.problem, home);
-    for (int run = 0; run < o.runs_per_home; ++run) {
-      const DrawnFailures drawn = draw_failures(o, home_options.seed * 1000003u + static_cast<std::uint64_t>(run),
-                                                *planned.plan, *files.problem, ontology);
-      for (auto& strategy : strategies) {
-        records.push_back(execute(name, run, mission, *files.problem, *planned.plan, drawn, *strategy, ontology, o));
-      }
-      progress << "[" << name << " run " << run << ", " << drawn.kind << "]";
-      for (std::size_t k = records.size() - strategies.size(); k < records.size(); ++k) {
-        progress << " " << records[k].strategy << ":" << (records[k].reached ? "comforted" : "not");
-      }
-      progress << "\n";
-    }
+  if (!planned.plan) {
+    progress << name << ": no initial plan (" << planned.message << "), skipped\n";
+    return records;
   }
+  const repair::Mission mission = mission_for(setup.domain, *files.problem, home);
+  for (int run = 0; run < o.runs_per_home; ++run) {
+    const DrawnFailures drawn = draw_failures(o, home_options.seed * 1000003u + static_cast<std::uint64_t>(run),
+                                              *planned.plan, *files.problem, setup.ontology);
+    progress << "[" << name << " run " << run << ", " << drawn.kind << "]";
+    for (auto& strategy : setup.strategies) {
+      records.push_back(
+          execute(name, run, mission, *files.problem, *planned.plan, drawn, *strategy, setup.ontology, o));
+      progress << " " << records.back().strategy << ":" << (records.back().reached ? "comforted" : "not");
+    }
+    progress << "\n";
+  }
+  return records;
+}
+
+nlohmann::json camera_description(const RepairBenchOptions& o) {
+  return o.camera ? o.camera_info : nlohmann::json("the simulator names what it made (no perception)");
+}
+
+nlohmann::json summary_extra(const RepairBenchOptions& o, const std::vector<RunRecord>& records,
+                             const nlohmann::json& paper_home, const nlohmann::json& camera) {
   nlohmann::json extra = nlohmann::json::object();
-  extra["camera"] = o.camera ? o.camera_info : nlohmann::json("the simulator names what it made (no perception)");
+  extra["camera"] = camera;
   std::size_t repairs = 0, reused = 0;
   for (const RunRecord& r : records) {
     repairs += r.reused_grounding.size();
@@ -297,7 +341,7 @@ int run_repair_bench(const RepairBenchOptions& o, std::ostream& out, std::ostrea
   }
   extra["repairs"] = repairs;
   extra["repairs_reusing_grounding"] = reused;
-  if (o.paper_home) extra["paper_home_latency_median_ms"] = paper_home_latencies(o);
+  if (o.paper_home) extra["paper_home_latency_median_ms"] = paper_home;
   if (o.external) {
     std::vector<double> inside, outside;
     for (const RunRecord& r : records) {
@@ -306,12 +350,100 @@ int run_repair_bench(const RepairBenchOptions& o, std::ostream& out, std::ostrea
     }
     extra["external_over_in_process_latency_ratio"] = percentile(outside, 0.5) / percentile(inside, 0.5);
   }
+  return extra;
+}
+
+int write_study(const RepairBenchOptions& o, const std::vector<RunRecord>& records, const std::vector<std::string>& order,
+                const nlohmann::json& paper_home, const nlohmann::json& camera, std::ostream& out,
+                std::ostream& progress) {
   if (records.empty()) {
     progress << "error: no home had an initial plan\n";
     return 2;
   }
-  write_outputs(o, records, order, extra, out);
+  write_outputs(o, records, order, summary_extra(o, records, paper_home, camera), out);
   return 0;
+}
+
+// Array items: the homes, then the paper's home when it is timed.
+int study_items(const RepairBenchOptions& o) { return o.homes + (o.paper_home ? 1 : 0); }
+
+void submit_study(const RepairBenchOptions& o, std::ostream& out) {
+  ArrayManifest m;
+  m.kind = "repair";
+  m.working_dir = fs::current_path().string();
+  m.command = o.array.command;
+  m.slurm = o.array.slurm;
+  auto item_name = [&](int i) {
+    return i < o.homes ? "home-" + std::to_string(o.seed + static_cast<std::uint64_t>(i)) : std::string("paper-home");
+  };
+  const int n = study_items(o);
+  for (int t = 0; t < array_tasks(n, m.slurm.batch); ++t) {
+    const auto [first, last] = task_items(t, n, m.slurm.batch);
+    m.tasks.push_back(item_name(first) + (last - first > 1 ? " .. " + item_name(last - 1) : ""));
+  }
+  submit_array(o.array.dir, m, out);
+}
+
+void run_study_task(const RepairBenchOptions& o, std::ostream& progress) {
+  const ArrayManifest m = read_manifest(o.array.dir);
+  const int n = study_items(o);
+  if (o.array.task < 0 || o.array.task >= array_tasks(n, m.slurm.batch)) {
+    throw std::runtime_error("no array task " + std::to_string(o.array.task) + " in " + o.array.dir);
+  }
+  // Concurrent tasks must not share the external planner's files.
+  const std::unique_ptr<StudySetup> setup =
+      prepare_study(o, (fs::path(o.out_dir) / "external" / ("task-" + std::to_string(o.array.task))).string());
+  const auto [first, last] = task_items(o.array.task, n, m.slurm.batch);
+  nlohmann::json result{{"records", nlohmann::json::array()}, {"camera", camera_description(o)}};
+  for (int i = first; i < last; ++i) {
+    if (i == o.homes) {
+      result["paper_home"] = paper_home_latencies(o);
+      continue;
+    }
+    for (const RunRecord& r : run_home(*setup, i, o, progress)) result["records"].push_back(to_json(r));
+  }
+  write_task_result(o.array.dir, o.array.task, result);
+}
+
+int merge_study(const RepairBenchOptions& o, std::ostream& out, std::ostream& progress) {
+  const ArrayManifest m = read_manifest(o.array.dir);
+  const CollectedTasks tasks = collect_tasks(o.array.dir, m);
+  if (!tasks.complete()) throw std::runtime_error("not every task has finished: run `alplan bench merge`");
+  std::vector<RunRecord> records;
+  nlohmann::json paper_home, camera;
+  for (const auto& [t, result] : tasks.results) {
+    for (const nlohmann::json& j : result.at("records")) records.push_back(record_from_json(j));
+    if (result.contains("paper_home")) paper_home = result["paper_home"];
+    camera = result.at("camera");  // every task trained the same camera; the last one's figures
+  }
+  std::vector<std::string> order = o.strategies;
+  if (o.external) order.push_back("replan-external");
+  return write_study(o, records, order, paper_home, camera, out, progress);
+}
+
+}  // namespace
+
+int run_repair_bench(const RepairBenchOptions& o, std::ostream& out, std::ostream& progress) {
+  switch (o.array.role) {
+    case ArrayRole::submit:
+      submit_study(o, out);
+      return 0;
+    case ArrayRole::task:
+      run_study_task(o, progress);
+      return 0;
+    case ArrayRole::merge:
+      return merge_study(o, out, progress);
+    case ArrayRole::local:
+      break;
+  }
+  const std::unique_ptr<StudySetup> setup = prepare_study(o, (fs::path(o.out_dir) / "external").string());
+  std::vector<RunRecord> records;
+  for (int h = 0; h < o.homes; ++h) {
+    std::vector<RunRecord> home = run_home(*setup, h, o, progress);
+    records.insert(records.end(), home.begin(), home.end());
+  }
+  const nlohmann::json paper_home = o.paper_home ? paper_home_latencies(o) : nlohmann::json();
+  return write_study(o, records, setup->order, paper_home, camera_description(o), out, progress);
 }
 
 }  // namespace alplan::bench

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "benchmarks/harness/paired_statistics.h"
+#include "benchmarks/harness/slurm_array.h"
 #include "domains/home_generator.h"
 #include <nlohmann/json.hpp>
 
@@ -42,6 +43,9 @@ struct RepairBenchOptions {
   double epsilon = 0.001;
   double planning_time = 10.0;
   double initial_planning_time = 1.0;  // anytime, for each home's first plan
+  // Each weight of that anytime search capped at so many expansions (0: by
+  // time alone); set, the first plans do not depend on the machine's speed.
+  std::uint64_t initial_expansions = 0;
   // The repairs' planner: anytime down to this weight, each weight capped
   // at so many expansions (PlannerOptions), for every strategy alike.
   bool repair_anytime = true;
@@ -64,6 +68,9 @@ struct RepairBenchOptions {
   // the summary.
   std::function<std::unique_ptr<repair::ObjectRecognizer>(repair::ObjectRecognizer& truth)> camera;
   nlohmann::json camera_info;
+  // Local, or one role of a Slurm job array (slurm_array.h): a task runs
+  // a batch of homes (the paper's home is the last item when timed).
+  ArrayRun array;
 };
 
 // Returns the exit code: 0, or 2 for bad options or unwritable output.
