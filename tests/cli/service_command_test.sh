@@ -119,6 +119,9 @@ expect 0 "complete: every reading acknowledged" "$alplan" wristband simulate --d
   --cacert cert.pem --tokens tokens.txt --duration 40 --speed 20
 kill -TERM "$pid"
 wait "$pid" || fail "serve --tls-cert exited $? after SIGTERM"
+# bench service over HTTPS: its wristbands trust the certificate it serves with; zero loss.
+expect 0 "| yes |" "$alplan" bench service --devices 3 --rate 0.2 --duration 40 --speed 20 \
+  --tls-cert cert.pem --tls-key key.pem --work-dir bench-tls
 
 # Killed (SIGKILL) while wristbands post, then started again on the same port
 # and database: every reading acknowledged, none lost, none stored twice, and
