@@ -207,10 +207,42 @@ int run_planner_bench(const PlannerBenchOptions& options, std::ostream& out, std
 
 namespace {
 
+// Coverage, quality and time per domain and in total, ours beside the references'.
+Table summary_table(const std::map<std::string, std::map<std::string, Scores>>& scores) {
+  const std::vector<std::string> planners{"ours", "optic", "popf"};
+  Table summary({"domain", "coverage ours", "OPTIC", "POPF", "quality ours", "OPTIC", "POPF", "time ours", "OPTIC", "POPF"});
+  std::map<std::string, Scores> total;
+  for (const auto& [domain, by_planner] : scores) {
+    std::vector<std::string> row{domain};
+    auto cell = [&](const std::string& planner, auto field) {
+      auto it = by_planner.find(planner);
+      if (it == by_planner.end()) return std::string("-");
+      return field(it->second);
+    };
+    for (const std::string& p : planners) {
+      row.push_back(cell(p, [](const Scores& s) { return std::to_string(s.solved) + "/" + std::to_string(s.attempted); }));
+    }
+    for (const std::string& p : planners) row.push_back(cell(p, [](const Scores& s) { return fixed(s.quality, 2); }));
+    for (const std::string& p : planners) row.push_back(cell(p, [](const Scores& s) { return fixed(s.time, 2); }));
+    summary.add(row);
+    for (const auto& [planner, s] : by_planner) {
+      total[planner].solved += s.solved;
+      total[planner].attempted += s.attempted;
+      total[planner].quality += s.quality;
+      total[planner].time += s.time;
+    }
+  }
+  std::vector<std::string> row{"total"};
+  for (const std::string& p : planners) row.push_back(std::to_string(total[p].solved) + "/" + std::to_string(total[p].attempted));
+  for (const std::string& p : planners) row.push_back(fixed(total[p].quality, 2));
+  for (const std::string& p : planners) row.push_back(fixed(total[p].time, 2));
+  summary.add(row);
+  return summary;
+}
+
 int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions& options, std::ostream& out) {
   const Baseline baseline = options.baseline.empty() ? Baseline{} : Baseline::load(options.baseline);
   // Scores per domain, ours and the references' on the same problems.
-  const std::vector<std::string> planners{"ours", "optic", "popf"};
   std::map<std::string, std::map<std::string, Scores>> scores;
   int invalid = 0;
   nlohmann::json rows = nlohmann::json::array();
@@ -257,33 +289,7 @@ int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions
                     {"reference", std::isfinite(reference) ? nlohmann::json(reference) : nlohmann::json()},
                     {"message", run.message}});
   }
-  Table summary({"domain", "coverage ours", "OPTIC", "POPF", "quality ours", "OPTIC", "POPF", "time ours", "OPTIC", "POPF"});
-  std::map<std::string, Scores> total;
-  for (const auto& [domain, by_planner] : scores) {
-    std::vector<std::string> row{domain};
-    auto cell = [&](const std::string& planner, auto field) {
-      auto it = by_planner.find(planner);
-      if (it == by_planner.end()) return std::string("-");
-      return field(it->second);
-    };
-    for (const std::string& p : planners) {
-      row.push_back(cell(p, [](const Scores& s) { return std::to_string(s.solved) + "/" + std::to_string(s.attempted); }));
-    }
-    for (const std::string& p : planners) row.push_back(cell(p, [](const Scores& s) { return fixed(s.quality, 2); }));
-    for (const std::string& p : planners) row.push_back(cell(p, [](const Scores& s) { return fixed(s.time, 2); }));
-    summary.add(row);
-    for (const auto& [planner, s] : by_planner) {
-      total[planner].solved += s.solved;
-      total[planner].attempted += s.attempted;
-      total[planner].quality += s.quality;
-      total[planner].time += s.time;
-    }
-  }
-  std::vector<std::string> row{"total"};
-  for (const std::string& p : planners) row.push_back(std::to_string(total[p].solved) + "/" + std::to_string(total[p].attempted));
-  for (const std::string& p : planners) row.push_back(fixed(total[p].quality, 2));
-  for (const std::string& p : planners) row.push_back(fixed(total[p].time, 2));
-  summary.add(row);
+  const Table summary = summary_table(scores);
   summary.print(out);
   out << "\ninvalid plans: " << invalid << "\n";
   if (!options.out_dir.empty()) {
