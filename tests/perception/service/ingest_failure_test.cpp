@@ -63,6 +63,21 @@ struct FileSizeLimit {
   }
 };
 
+// After a commit failed: the same batch sent again is stored once and its
+// stress event published once.
+void check_resent_once(ReadingIngest& ingest, ReadingStore& store, StressEventQueue& events,
+                       const std::vector<ReceivedReading>& flip) {
+  CHECK(ingest.ingest("senior-00", flip) == std::vector<bool>(flip.size(), true));
+  CHECK(store.count_readings() == 10);
+  CHECK(ingest.counters().late == 0);
+  const auto published = events.try_pop();
+  REQUIRE(published);
+  CHECK(published->stressed);
+  CHECK_FALSE(events.try_pop());
+  REQUIRE(store.stress_events().size() == 1);
+  CHECK(store.stress_events()[0].t_ms == published->t_ms);
+}
+
 }  // namespace
 
 TEST_CASE("ingest: after a failed COMMIT the re-sent batch is stored once and its stress event published once") {
@@ -86,15 +101,7 @@ TEST_CASE("ingest: after a failed COMMIT the re-sent batch is stored once and it
   CHECK(ingest.counters().failed_commits == 1);
   // The wristband re-sends the same batch once the disk is back.
   fail = false;
-  CHECK(ingest.ingest("senior-00", flip) == std::vector<bool>(6, true));
-  CHECK(store.count_readings() == 10);
-  CHECK(ingest.counters().late == 0);
-  const auto published = events.try_pop();
-  REQUIRE(published);
-  CHECK(published->stressed);
-  CHECK_FALSE(events.try_pop());
-  REQUIRE(store.stress_events().size() == 1);
-  CHECK(store.stress_events()[0].t_ms == published->t_ms);
+  check_resent_once(ingest, store, events, flip);
   // Sent a third time: duplicates, no second event.
   CHECK(ingest.ingest("senior-00", flip) == std::vector<bool>(6, false));
   CHECK_FALSE(events.try_pop());
@@ -123,14 +130,7 @@ TEST_CASE("ingest: a COMMIT whose WAL cannot grow fails - the re-sent batch is s
   CHECK(store.stress_events().empty());
   CHECK_FALSE(events.try_pop());
   // Space again: the wristband re-sends the batch.
-  CHECK(ingest.ingest("senior-00", flip) == std::vector<bool>(6, true));
-  CHECK(store.count_readings() == 10);
-  CHECK(ingest.counters().late == 0);
-  const auto published = events.try_pop();
-  REQUIRE(published);
-  CHECK(published->stressed);
-  CHECK_FALSE(events.try_pop());
-  CHECK(store.stress_events().size() == 1);
+  check_resent_once(ingest, store, events, flip);
 }
 
 TEST_CASE("ingest: a failure after the commit leaves no leader behind - later batches are committed") {
