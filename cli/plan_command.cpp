@@ -129,7 +129,8 @@ int limit_reached(const PlanOptions& options, const std::string& message) {
 // Loads, grounds and plans; `phase` names the step under way, so that a
 // limit reached anywhere can say where. `task` receives the grounded task,
 // for the caller to decide when it is freed.
-int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<const GroundTask>& task) {
+int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<const GroundTask>& task,
+               std::shared_ptr<void>& search_memory) {
   const auto began = std::chrono::steady_clock::now();
   phase = "loading the files";
   const auto files = load_task_files(options.domain, options.problem, std::cerr, {!options.quiet});
@@ -164,6 +165,7 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
               << p.text << std::flush;
   };
   const PlannerResult result = Planner(task, planner_options).plan(on_plan);
+  search_memory = result.search_memory;
   phase = "writing the result";
   if (result.best() && !options.out.empty()) std::ofstream(options.out) << result.best()->text;
   if (options.json) {
@@ -209,11 +211,13 @@ int run(const PlanOptions& options) {
   // the handler reports it.
   const char* phase = "starting";
   std::shared_ptr<const GroundTask> task;
+  std::shared_ptr<void> search_memory;
   int code = kExitOk;
   try {
-    code = plan_files(options, phase, task);
+    code = plan_files(options, phase, task, search_memory);
   } catch (const std::bad_alloc&) {
     task.reset();
+    search_memory.reset();
     std::cerr << "error: memory limit reached while " << phase << "\n";
     code = limit_reached(options, std::string("the memory limit was reached while ") + phase);
   } catch (const GroundingTimeout& e) {
@@ -221,8 +225,8 @@ int run(const PlanOptions& options) {
   }
   // The process ends here. Freeing a large grounded task piece by piece
   // takes a good part of a second (0.2 s for driver-log's 134,000 actions),
-  // which a time limit would have to count; the operating system reclaims
-  // it at once.
+  // a search the limit stopped seconds (planner.h), which a time limit
+  // would have to count; the operating system reclaims them at once.
   std::cout.flush();
   std::cerr.flush();
   std::_Exit(code);

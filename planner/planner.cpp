@@ -139,6 +139,13 @@ struct PhaseOutcome {
   std::optional<Solution> solution;
   std::string engine;
   SearchStatistics statistics;
+  std::shared_ptr<void> memory;  // the spaces and engines, when the deadline stopped them
+};
+
+// Engines refer to their spaces: declared after them, destroyed before.
+struct StoppedSearch {
+  std::vector<std::unique_ptr<SearchSpace>> spaces;
+  std::vector<std::unique_ptr<SearchEngine>> engines;
 };
 
 void add(SearchStatistics& into, const SearchStatistics& s) {
@@ -164,9 +171,13 @@ PhaseOutcome run_phase(const Phase& phase, const TaskIndex& index, const SearchS
   PhaseOutcome outcome;
   std::vector<bool> exhausted(engines.size(), false);
   std::size_t left = engines.size();
+  bool stopped = false;
   for (std::size_t steps = 0; left > 0; ++steps) {
     // Every step: a step cut short by the deadline has dropped children.
-    if (passed(base.deadline)) break;
+    if (passed(base.deadline)) {
+      stopped = true;
+      break;
+    }
     if ((steps & 15) == 0) {
       std::size_t nodes = 0;
       std::uint64_t expanded = 0;
@@ -197,6 +208,7 @@ PhaseOutcome run_phase(const Phase& phase, const TaskIndex& index, const SearchS
   if (left == 0) outcome.status = SearchStatus::Exhausted;
   outcome.root_dead_end = spaces.front()->node(spaces.front()->root()).h == std::numeric_limits<double>::infinity();
   for (const auto& engine : engines) add(outcome.statistics, engine->statistics());
+  if (stopped) outcome.memory = std::make_shared<StoppedSearch>(StoppedSearch{std::move(spaces), std::move(engines)});
   return outcome;
 }
 
@@ -344,6 +356,7 @@ PlannerResult Planner::plan_from(const PlanningStart& start, const std::function
     // and the next one tries.
     if (outcome.budget_spent) continue;
     if (outcome.status == SearchStatus::InProgress) {
+      result.search_memory = outcome.memory;
       exhausted_all = false;
       break;  // a limit was reached
     }

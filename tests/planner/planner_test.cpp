@@ -344,3 +344,23 @@ TEST_CASE("IPC problems with deadlines and required concurrency are solved with 
     CHECK(result.best()->validation.valid);
   }
 }
+
+TEST_CASE("a search the time limit stops is handed over, not freed, so the limit holds") {
+  // Pathways 2 is not solved in a second: the search is stopped with
+  // thousands of nodes, whose freeing would count against the limit.
+  const std::string dir = test::benchmarks_dir() + "/ipc/ipc-2006/pathways-metric-time/";
+  auto task = ground(test::load_task(dir + "domain.pddl", dir + "instances/instance-2.pddl").normalized);
+  PlannerOptions options;
+  options.time_limit = 0.5;
+  PlannerResult stopped = Planner(task, options).plan();
+  REQUIRE(stopped.status == Status::LimitReached);
+  CHECK(stopped.search_memory != nullptr);
+  CHECK(stopped.statistics.expanded > 0);
+  // A search that ends by itself frees its memory as it goes.
+  const PlannerResult solved = solve(ground_text(kMatch, kMatchProblem));
+  REQUIRE(solved.status == Status::Solved);
+  CHECK(solved.search_memory == nullptr);
+  // The memory goes with the result.
+  stopped = PlannerResult{};
+  CHECK(stopped.search_memory == nullptr);
+}
