@@ -251,7 +251,7 @@ void add_plan_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--weight", options->weight, "Weight of h in wastar")->check(CLI::PositiveNumber);
   cmd->add_option("--order", options->order,
                   "How wastar (and anytime search) orders nodes: metric (cost and makespan so far and to come, "
-                  "for a minimised metric that only grows) or steps")
+                  "for a minimised metric that only grows) or steps (default)")
       ->check(CLI::IsMember({"metric", "steps"}));
   cmd->add_option("--out", options->out, "Write the best plan to this file");
   cmd->add_flag("--json", options->json, "Print the result as JSON");
