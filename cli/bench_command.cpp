@@ -46,6 +46,7 @@ struct BenchPlannersOptions {
   int first = 0;
   bool anytime = false;
   std::string search = "ehc";
+  std::string order;  // "": the planner's default
   SlurmFlags slurm;
 };
 
@@ -60,6 +61,7 @@ int run_planners(const BenchPlannersOptions& options) {
   o.first = options.first;
   o.anytime = options.anytime;
   o.search = options.search;
+  o.order = options.order;
   std::string error;
   if (!array_run(options.slurm, options.out, o.array, error)) {
     std::cerr << "error: " << error << "\n";
@@ -101,6 +103,8 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   p->add_option("--first", planners->first, "Only the first N problems of each domain");
   p->add_flag("--anytime", planners->anytime, "Let each run improve its plan until the time limit");
   p->add_option("--search", planners->search, "ehc, gbfs or wastar")->check(CLI::IsMember({"ehc", "gbfs", "wastar"}));
+  p->add_option("--order", planners->order, "How wastar orders nodes: metric or steps")
+      ->check(CLI::IsMember({"metric", "steps"}));
   add_slurm_options(p, planners->slurm);
   p->callback([planners, &exit_code] { exit_code = run_planners(*planners); });
 

@@ -1,5 +1,5 @@
 // alplan plan DOMAIN PROBLEM [--time-limit S] [--memory-limit MiB] [--anytime]
-//   [--search ehc|gbfs|wastar] [--heuristic trpg|trpg-nohelpful] [--out PLAN] [--json]
+//   [--search ehc|gbfs|wastar] [--heuristic trpg|trpg-nohelpful] [--order metric|steps] [--out PLAN] [--json]
 // Exit 0 with a plan, 10 proven unsolvable, 11 limits reached, 12 search
 // exhausted without proof, 2 input error, 70 internal error (an invalid plan).
 #include <CLI/CLI.hpp>
@@ -37,6 +37,7 @@ struct PlanOptions {
   std::string search = "ehc";
   std::string heuristic = "trpg";
   double weight = 3.0;
+  std::string order = PlannerOptions{}.order;
   std::string out;
   bool json = false;
   bool quiet = false;
@@ -154,6 +155,7 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
   planner_options.search = options.search;
   planner_options.heuristic = options.heuristic;
   planner_options.weight = options.weight;
+  planner_options.order = options.order;
   planner_options.anytime = options.anytime;
   planner_options.epsilon = options.epsilon;
   planner_options.reserve_planning_time = options.reserve_planning_time;
@@ -251,6 +253,10 @@ void add_plan_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--heuristic", options->heuristic, "trpg (temporal relaxed planning graph) or trpg-nohelpful")
       ->check(CLI::IsMember({"trpg", "trpg-nohelpful"}));
   cmd->add_option("--weight", options->weight, "Weight of h in wastar")->check(CLI::PositiveNumber);
+  cmd->add_option("--order", options->order,
+                  "How wastar (and anytime search) orders nodes: metric (cost and makespan so far and to come, "
+                  "for a minimised metric that only grows) or steps (default)")
+      ->check(CLI::IsMember({"metric", "steps"}));
   cmd->add_option("--out", options->out, "Write the best plan to this file");
   cmd->add_flag("--json", options->json, "Print the result as JSON");
   cmd->add_flag("-q,--quiet", options->quiet, "Do not print warnings about the input");

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <queue>
+#include <unordered_map>
 
 #include "planner/search_engine.h"
 
@@ -25,7 +26,8 @@ class BestFirstSearch : public SearchEngine {
       : space_(space), heuristic_(heuristic), options_(std::move(options)) {}
 
   std::string name() const override {
-    return options_.weight == 0 ? "gbfs" : "wastar (w=" + std::to_string(options_.weight) + ")";
+    if (options_.weight == 0) return "gbfs";
+    return "wastar (w=" + std::to_string(options_.weight) + (options_.metric ? ", metric" : "") + ")";
   }
 
   SearchStatus step() override {
@@ -41,6 +43,10 @@ class BestFirstSearch : public SearchEngine {
     }
     std::optional<NodeId> id = pop();
     if (!id) return SearchStatus::Exhausted;
+    if (auto goal = goals_.find(*id); goal != goals_.end()) {
+      solution_ = std::move(goal->second);
+      return SearchStatus::Solved;
+    }
     ++stats_.expanded;
     const PartialPlan plan = space_.partial_plan(*id);
     std::vector<Child> children = space_.children(*id, plan, stats_);
@@ -54,8 +60,20 @@ class BestFirstSearch : public SearchEngine {
       PartialPlan child_plan = child.plan;
       std::optional<NodeId> stored = space_.insert(std::move(child), stats_);
       if (!stored) continue;
-      if (space_.node(*stored).h == 0 && (solution_ = space_.goal_reached(*stored, child_plan))) {
-        return SearchStatus::Solved;
+      if (space_.node(*stored).h == 0) {
+        if (std::optional<Solution> goal = space_.goal_reached(*stored, child_plan)) {
+          if (!by_metric()) {
+            solution_ = std::move(goal);
+            return SearchStatus::Solved;
+          }
+          // Ordered by the metric, a goal is a solution when it leaves the
+          // main open list (A*'s test at expansion): one found at generation
+          // may cost more than a plan through a node still open. Not from
+          // the helpful queue, which would hand it out whatever its f.
+          goals_.emplace(*stored, std::move(*goal));
+          push(*stored, false);
+          continue;
+        }
       }
       push(*stored, preferred);
     }
@@ -63,9 +81,19 @@ class BestFirstSearch : public SearchEngine {
   }
 
  private:
+  bool by_metric() const { return options_.weight != 0 && options_.metric; }
+
   void push(NodeId id, bool preferred) {
     const SearchNode& n = space_.node(id);
-    const double f = options_.weight == 0 ? n.h : n.depth + options_.weight * n.h;
+    // Metric and step counts are never mixed in f: their units differ (a
+    // cost of 1000 against 3 steps), so any sum would let one drown the other.
+    double f = n.h;
+    if (by_metric()) {
+      f = options_.metric->value(n.state, n.makespan) +
+          options_.weight * options_.metric->remaining(n.relaxed_cost, n.makespan, n.makespan_bound);
+    } else if (options_.weight != 0) {
+      f = n.depth + options_.weight * n.h;
+    }
     const Entry entry{f, n.h, order_++, id};
     open_.push(entry);
     if (preferred && options_.preferred_queue) preferred_.push(entry);
@@ -93,6 +121,7 @@ class BestFirstSearch : public SearchEngine {
   bool started_ = false;
   OpenList open_, preferred_;
   std::vector<bool> expanded_;
+  std::unordered_map<NodeId, Solution> goals_;  // goals generated, not yet popped (metric order)
   std::uint64_t order_ = 0;
   std::uint64_t turn_ = 0;
 };

@@ -30,6 +30,15 @@ struct PlannerOptions {
   std::string search = "ehc";      // ehc (falls back to gbfs + wastar), gbfs, wastar
   std::string heuristic = "trpg";  // trpg, or trpg-nohelpful
   double weight = 3.0;             // for wastar, and wastar's turns in the ehc fallback
+  // How weighted A* (search "wastar", and the anytime phases) orders its
+  // nodes: "metric" (g = the metric so far, h = the metric still to come,
+  // for a minimised metric that only grows; other tasks fall back to steps)
+  // or "steps" (g = snaps, h = relaxed plan length). GBFS, EHC and the
+  // weighted A* taking turns in EHC's fallback are on steps either way.
+  // Steps by default: on the baseline suite (20 s, anytime) the metric
+  // order improved one first plan, steps ended better on 20 problems and
+  // worse on none (benchmarks/README.md).
+  std::string order = "steps";
   // EHC gives up after this many expansions (it is incomplete and can wander
   // on plateaus); GBFS and weighted A* then take turns.
   std::uint64_t ehc_expansions = 20000;

@@ -45,6 +45,11 @@ struct BestFirstOptions {
   // f = g + weight * h with g the number of snaps; weight 0 means greedy
   // (f = h, ties broken by g).
   double weight = 0.0;
+  // Set (weighted A* only): g is the metric's value at the node and h the
+  // heuristic's estimate of the metric still to come, in the metric's units;
+  // step counts only break ties. The heuristic must have been built with the
+  // same metric, or h_metric is the makespan part alone.
+  std::shared_ptr<const LinearMetric> metric;
   // Expand helpful children from their own queue, alternating with the
   // main one (Richter & Helmert's preferred operators).
   bool preferred_queue = true;

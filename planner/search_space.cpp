@@ -92,6 +92,7 @@ bool SearchSpace::evaluate(Child& child, TemporalRpg& heuristic, SearchStatistic
   // The relaxed graph may separate happenings by epsilon where a real plan
   // need not; the bound gives that back.
   child.node.makespan_bound = std::max(child.node.makespan, value.relaxed_makespan - epsilon_);
+  child.node.relaxed_cost = value.cost;
   if (value.dead_end()) ++stats.dead_ends;
   return !value.dead_end();
 }
@@ -101,6 +102,8 @@ void SearchSpace::set_root_heuristic(TemporalRpg& heuristic, SearchStatistics& s
   HeuristicValue value = heuristic.evaluate(nodes_[0].state, partial_plan(0));
   nodes_[0].h = value.h;
   nodes_[0].helpful = std::move(value.helpful);
+  nodes_[0].makespan_bound = std::max(nodes_[0].makespan, value.relaxed_makespan - epsilon_);
+  nodes_[0].relaxed_cost = value.cost;
 }
 
 std::optional<NodeId> SearchSpace::insert(Child child, SearchStatistics& stats) {

@@ -42,6 +42,7 @@ struct SearchNode {
   // makespan, or when the goals are reached in the relaxation (known once
   // evaluated). Anytime search prunes on it.
   double makespan_bound = 0.0;
+  double relaxed_cost = 0.0;  // the heuristic's estimate of the metric still to come
   TemporalSignature signature;
   std::vector<Snap> helpful;
 };

@@ -529,10 +529,13 @@ HeuristicValue TemporalRpg::Exploration::extract(const SearchState& state, doubl
     }
   };
   need_numeric(rpg_.goal_numeric_);
+  const LinearMetric* metric = rpg_.options_.metric.get();
+  // A start commits the plan to its end, so it costs both.
   auto count_start = [&](ActionId a) {
     if (counted_start_.at(a, generation_)) return;
     counted_start_.at(a, generation_) = 1;
     count += 1.0;
+    if (metric) value.cost += metric->start_cost[a] + metric->end_cost[a];
     const RelaxedAction& r = rpg_.actions_[a];
     open.insert(open.end(), r.start_pre.begin(), r.start_pre.end());
     need_numeric(r.start_numeric);
@@ -577,6 +580,7 @@ HeuristicValue TemporalRpg::Exploration::extract(const SearchState& state, doubl
   // Every running action still owes its end.
   for (const RunningAction& r : state.running()) {
     if (!counted_end_.at(r.action, generation_)) count += 1.0;
+    if (metric) value.cost += metric->end_cost[r.action];
   }
   value.h = count;
   if (rpg_.options_.helpful_actions) {

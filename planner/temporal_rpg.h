@@ -13,6 +13,7 @@
 #include <memory>
 #include <vector>
 
+#include "planner/linear_metric.h"
 #include "planner/partial_plan.h"
 #include "planner/search_state.h"
 #include "planner/task_index.h"
@@ -22,12 +23,18 @@ namespace alplan {
 struct HeuristicValue {
   double h = std::numeric_limits<double>::infinity();  // infinite: a dead end
   double relaxed_makespan = 0.0;                       // when the goals are reached in the relaxation
+  // With a metric in the options: what the relaxed plan's actions, and the
+  // ends running actions still owe, add to it.
+  double cost = 0.0;
   std::vector<Snap> helpful;
   bool dead_end() const { return h == std::numeric_limits<double>::infinity(); }
 };
 
 struct TemporalRpgOptions {
   bool helpful_actions = true;
+  // Set: each evaluation also estimates the metric still to come
+  // (HeuristicValue::cost), for a search ordered by the metric.
+  std::shared_ptr<const LinearMetric> metric;
 };
 
 class TemporalRpg {

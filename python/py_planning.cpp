@@ -83,6 +83,7 @@ PlannerOptions planner_options(double time_limit, const py::kwargs& options) {
     else if (k == "search") o.search = value.cast<std::string>();
     else if (k == "heuristic") o.heuristic = value.cast<std::string>();
     else if (k == "weight") o.weight = value.cast<double>();
+    else if (k == "order") o.order = value.cast<std::string>();
     else if (k == "epsilon") o.epsilon = value.cast<double>();
     else if (k == "reserve_planning_time") o.reserve_planning_time = value.cast<bool>();
     else if (k == "anytime_min_weight") o.anytime_min_weight = value.cast<double>();
@@ -92,6 +93,9 @@ PlannerOptions planner_options(double time_limit, const py::kwargs& options) {
   }
   if (o.search != "ehc" && o.search != "gbfs" && o.search != "wastar") {
     throw py::value_error("search must be ehc, gbfs or wastar, not '" + o.search + "'");
+  }
+  if (o.order != "metric" && o.order != "steps") {
+    throw py::value_error("order must be metric or steps, not '" + o.order + "'");
   }
   if (o.heuristic != "trpg" && o.heuristic != "trpg-nohelpful") {
     throw py::value_error("heuristic must be trpg or trpg-nohelpful, not '" + o.heuristic + "'");
@@ -296,7 +300,7 @@ void add_planning(py::module_& m) {
 
   m.def("plan", &plan, py::arg("domain"), py::arg("problem"), py::arg("time_limit") = 60.0,
         "Plans a problem (files or parsed objects) in process. Options as keywords: anytime, search (ehc, gbfs, "
-        "wastar), heuristic, weight, epsilon, reserve_planning_time, anytime_min_weight, anytime_expansions, "
+        "wastar), heuristic, weight, order (metric, steps), epsilon, reserve_planning_time, anytime_min_weight, anytime_expansions, "
         "ehc_expansions. Releases the GIL while it grounds and searches.");
   m.def("validate", &validate, py::arg("domain"), py::arg("problem"), py::arg("plan"), py::arg("epsilon") = 0.001,
         "Validates a plan (a PlanResult, plan text or a plan file) with VAL's semantics");

@@ -27,6 +27,7 @@ struct PlannerBenchOptions {
   int first = 0;           // only the first N problems of each domain (0: all)
   bool anytime = false;
   std::string search = "ehc";
+  std::string order;       // wastar's ordering, metric or steps ("": the planner's default)
   // Local, or one role of a Slurm job array (slurm_array.h): the tasks
   // write their runs' plans to out_dir/plans as a local run does.
   ArrayRun array;

@@ -21,6 +21,12 @@ expect_run(11 "limit" ${ALPLAN} plan --time-limit 0.3 ${floor}/domain.pddl ${flo
 expect_run(2 "#t" ${ALPLAN} plan ${data}/tank-continuous.pddl ${data}/tank-problem.pddl)
 expect_run(2 "no-such-file.pddl" ${ALPLAN} plan ${data}/no-such-file.pddl ${data}/tank-problem.pddl)
 expect_run(2 "search" ${ALPLAN} plan --search dfs ${data}/mixed-domain.pddl ${data}/mixed-problem.pddl)
+# --order: weighted A* by the metric or by steps; both solve, anything else is refused.
+foreach(order metric steps)
+  expect_run(0 "\"status\": \"solved\"" ${ALPLAN} plan --json --search wastar --order ${order}
+    ${data}/mixed-domain.pddl ${data}/mixed-problem.pddl)
+endforeach()
+expect_run(2 "order" ${ALPLAN} plan --order cost ${data}/mixed-domain.pddl ${data}/mixed-problem.pddl)
 
 # Limits bound the whole run, whichever phase reaches them: memory running
 # out while loading or grounding is exit 11 with a message, never an abort,

@@ -107,6 +107,9 @@ def test_options_are_checked():
     with pytest.raises(ValueError, match="search must be"):
         alplan.plan(os.path.join(MATCH, "domain.pddl"), os.path.join(MATCH, "instances", "instance-1.pddl"),
                     search="dfs")
+    with pytest.raises(ValueError, match="order must be"):
+        alplan.plan(os.path.join(MATCH, "domain.pddl"), os.path.join(MATCH, "instances", "instance-1.pddl"),
+                    order="cost")
 
 
 def test_an_invalid_plan_gives_a_typed_violation():
