@@ -63,74 +63,74 @@ struct FileSizeLimit {
   }
 };
 
-// After a commit failed: the same batch sent again is stored once and its
-// stress event published once.
-void check_resent_once(ReadingIngest& ingest, ReadingStore& store, StressEventQueue& events,
-                       const std::vector<ReceivedReading>& flip) {
-  CHECK(ingest.ingest("senior-00", flip) == std::vector<bool>(flip.size(), true));
-  CHECK(store.count_readings() == 10);
-  CHECK(ingest.counters().late == 0);
-  const auto published = events.try_pop();
-  REQUIRE(published);
-  CHECK(published->stressed);
-  CHECK_FALSE(events.try_pop());
-  REQUIRE(store.stress_events().size() == 1);
-  CHECK(store.stress_events()[0].t_ms == published->t_ms);
-}
+// A senior calm for four windows, and the batch of six that would make
+// them stressed, whose COMMIT the test makes fail.
+struct FlipRig {
+  test::ScratchDir dir;
+  ReadingStore store;
+  StressEventQueue events{16};
+  const DeviceRegistry registry = test::test_registry(1);
+  decltype(detector()) stress = detector();
+  ReadingIngest ingest;
+  std::vector<ReceivedReading> flip;
+
+  FlipRig(const std::string& name, Durability durability)
+      : dir(name), store(dir / "s.db", durability), ingest(store, stress.get(), events, registry, 24) {
+    std::uint32_t seq = 0;
+    for (int i = 0; i < 4; ++i) ingest.ingest("senior-00", {window("wb-00", seq++, false)});
+    for (int i = 0; i < 6; ++i) flip.push_back(window("wb-00", seq++, true));
+  }
+
+  // The failed batch left nothing behind.
+  void check_nothing_kept() {
+    CHECK(ingest.counters().failed_commits == 1);
+    CHECK(store.count_readings() == 4);
+    CHECK(store.stress_events().empty());
+    CHECK_FALSE(events.try_pop());
+  }
+
+  // The same batch sent again is stored once and its stress event published once.
+  void check_resent_once() {
+    CHECK(ingest.ingest("senior-00", flip) == std::vector<bool>(flip.size(), true));
+    CHECK(store.count_readings() == 10);
+    CHECK(ingest.counters().late == 0);
+    const auto published = events.try_pop();
+    REQUIRE(published);
+    CHECK(published->stressed);
+    CHECK_FALSE(events.try_pop());
+    REQUIRE(store.stress_events().size() == 1);
+    CHECK(store.stress_events()[0].t_ms == published->t_ms);
+  }
+};
 
 }  // namespace
 
 TEST_CASE("ingest: after a failed COMMIT the re-sent batch is stored once and its stress event published once") {
-  test::ScratchDir dir("ingest-commit-fails");
-  ReadingStore store(dir / "s.db", Durability::Normal);
-  StressEventQueue events(16);
-  const DeviceRegistry registry = test::test_registry(1);
-  auto stress = detector();
-  ReadingIngest ingest(store, stress.get(), events, registry, 24);
-  std::uint32_t seq = 0;
-  for (int i = 0; i < 4; ++i) ingest.ingest("senior-00", {window("wb-00", seq++, false)});
-  // The batch that flips the senior to stressed fails to commit.
-  std::vector<ReceivedReading> flip;
-  for (int i = 0; i < 6; ++i) flip.push_back(window("wb-00", seq++, true));
+  FlipRig rig("ingest-commit-fails", Durability::Normal);
   bool fail = true;
-  store.set_commit_veto([&fail] { return fail; });
-  CHECK_THROWS_AS(ingest.ingest("senior-00", flip), SqliteError);
-  CHECK(store.count_readings() == 4);
-  CHECK(store.stress_events().empty());
-  CHECK_FALSE(events.try_pop());
-  CHECK(ingest.counters().failed_commits == 1);
+  rig.store.set_commit_veto([&fail] { return fail; });
+  CHECK_THROWS_AS(rig.ingest.ingest("senior-00", rig.flip), SqliteError);
+  rig.check_nothing_kept();
   // The wristband re-sends the same batch once the disk is back.
   fail = false;
-  check_resent_once(ingest, store, events, flip);
+  rig.check_resent_once();
   // Sent a third time: duplicates, no second event.
-  CHECK(ingest.ingest("senior-00", flip) == std::vector<bool>(6, false));
-  CHECK_FALSE(events.try_pop());
-  CHECK(store.stress_events().size() == 1);
+  CHECK(rig.ingest.ingest("senior-00", rig.flip) == std::vector<bool>(6, false));
+  CHECK_FALSE(rig.events.try_pop());
+  CHECK(rig.store.stress_events().size() == 1);
 }
 
 // The same with a real write failure instead of the commit hook: the COMMIT
 // cannot append the batch's pages to the WAL, which cannot grow.
 TEST_CASE("ingest: a COMMIT whose WAL cannot grow fails - the re-sent batch is stored once, its event published once") {
-  test::ScratchDir dir("ingest-write-fails");
-  ReadingStore store(dir / "s.db", Durability::Full);
-  StressEventQueue events(16);
-  const DeviceRegistry registry = test::test_registry(1);
-  auto stress = detector();
-  ReadingIngest ingest(store, stress.get(), events, registry, 24);
-  std::uint32_t seq = 0;
-  for (int i = 0; i < 4; ++i) ingest.ingest("senior-00", {window("wb-00", seq++, false)});
-  std::vector<ReceivedReading> flip;
-  for (int i = 0; i < 6; ++i) flip.push_back(window("wb-00", seq++, true));
+  FlipRig rig("ingest-write-fails", Durability::Full);
   {
-    const FileSizeLimit full(std::filesystem::file_size(dir / "s.db-wal"));
-    CHECK_THROWS_AS(ingest.ingest("senior-00", flip), SqliteError);
+    const FileSizeLimit full(std::filesystem::file_size(rig.dir / "s.db-wal"));
+    CHECK_THROWS_AS(rig.ingest.ingest("senior-00", rig.flip), SqliteError);
   }
-  CHECK(ingest.counters().failed_commits == 1);
-  CHECK(store.count_readings() == 4);
-  CHECK(store.stress_events().empty());
-  CHECK_FALSE(events.try_pop());
+  rig.check_nothing_kept();
   // Space again: the wristband re-sends the batch.
-  check_resent_once(ingest, store, events, flip);
+  rig.check_resent_once();
 }
 
 TEST_CASE("ingest: a failure after the commit leaves no leader behind - later batches are committed") {
