@@ -67,18 +67,6 @@ nlohmann::json plan_json(const FoundPlan& p, std::size_t index) {
           {"text", p.text}};
 }
 
-const char* status_name(PlannerResult::Status s) {
-  switch (s) {
-    case PlannerResult::Status::Solved: return "solved";
-    case PlannerResult::Status::Unsolvable: return "unsolvable";
-    case PlannerResult::Status::Exhausted: return "exhausted";
-    case PlannerResult::Status::LimitReached: return "limit_reached";
-    case PlannerResult::Status::Unsupported: return "unsupported";
-    case PlannerResult::Status::InternalError: return "internal_error";
-  }
-  return "?";
-}
-
 // Ten significant digits: enough for times on the 0.001 grid, without the
 // binary noise of a sum (15.001000000000001).
 std::string readable(double x) {

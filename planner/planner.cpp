@@ -400,4 +400,16 @@ PlannerResult Planner::plan_from(const PlanningStart& start, const std::function
   return result;
 }
 
+const char* status_name(PlannerResult::Status status) {
+  switch (status) {
+    case PlannerResult::Status::Solved: return "solved";
+    case PlannerResult::Status::Unsolvable: return "unsolvable";
+    case PlannerResult::Status::Exhausted: return "exhausted";
+    case PlannerResult::Status::LimitReached: return "limit_reached";
+    case PlannerResult::Status::Unsupported: return "unsupported";
+    case PlannerResult::Status::InternalError: return "internal_error";
+  }
+  return "unknown";
+}
+
 }  // namespace alplan

@@ -94,6 +94,10 @@ struct PlannerResult {
   const FoundPlan* best() const { return plans.empty() ? nullptr : &plans.back(); }
 };
 
+// The status as `alplan plan --json` and the Python module name it
+// (solved, unsolvable, exhausted, limit_reached, unsupported, internal_error).
+const char* status_name(PlannerResult::Status status);
+
 // Where to plan from: the task's initial state, or a state observed at time
 // `now` with actions still running (the monitor passes these). Time stays
 // the task's time: new steps come at or after `now`, timed literals from

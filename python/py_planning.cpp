@@ -45,18 +45,6 @@ struct PyGroundTask {
   std::shared_ptr<const GroundTask> task;
 };
 
-const char* status_name(PlannerResult::Status s) {
-  switch (s) {
-    case PlannerResult::Status::Solved: return "solved";
-    case PlannerResult::Status::Unsolvable: return "unsolvable";
-    case PlannerResult::Status::Exhausted: return "exhausted";
-    case PlannerResult::Status::LimitReached: return "limit_reached";
-    case PlannerResult::Status::Unsupported: return "unsupported";
-    case PlannerResult::Status::InternalError: return "internal_error";
-  }
-  return "?";
-}
-
 PyFoundPlan found_plan(const FoundPlan& p) {
   PyFoundPlan out;
   for (const PlanStep& s : p.plan.steps) {
