@@ -25,24 +25,12 @@ std::int64_t now_ms() {
       .count();
 }
 
-// The simulator's typical calm or stressed window, 5 s apart, ending an hour ago.
+// Typical windows starting an hour ago, so that the server's clock accepts them.
 ReceivedReading window(const std::string& device, std::uint32_t seq, bool stressed) {
-  ReceivedReading r;
-  r.device = device;
-  r.seq = seq;
-  r.t_ms = static_cast<std::uint64_t>(now_ms() - 3600000 + 5000 * static_cast<std::int64_t>(seq));
-  r.window_ms = 30000;
-  r.hr_bpm = stressed ? 85.0 : 70.0;
-  r.ibi_ms = 60000.0 / *r.hr_bpm;
-  r.sdnn_ms = stressed ? 25.0 : 48.0;
-  r.rmssd_ms = stressed ? 18.0 : 40.0;
-  r.beats = stressed ? 42 : 35;
-  return r;
+  return test::typical_window(device, seq, stressed, static_cast<std::uint64_t>(now_ms() - 3600000));
 }
 
-std::unique_ptr<perception::ClassifierStressDetector> detector() {
-  return std::make_unique<perception::ClassifierStressDetector>(test::test_classifier(), perception::StressSmoothing{});
-}
+std::unique_ptr<perception::ClassifierStressDetector> detector() { return test::test_stress_detector(); }
 
 // While it lives, no file of this process may grow past `bytes` (RLIMIT_FSIZE;
 // SIGXFSZ ignored, so a write past it fails with EFBIG as one on a full disk

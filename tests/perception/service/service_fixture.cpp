@@ -47,6 +47,25 @@ const perception::StressClassifier& test_classifier() {
   return classifier;
 }
 
+service::ReceivedReading typical_window(const std::string& device, std::uint32_t seq, bool stressed,
+                                        std::uint64_t first_t_ms) {
+  service::ReceivedReading r;
+  r.device = device;
+  r.seq = seq;
+  r.t_ms = first_t_ms + 5000ULL * seq;
+  r.window_ms = 30000;
+  r.hr_bpm = stressed ? 85.0 : 70.0;
+  r.ibi_ms = 60000.0 / *r.hr_bpm;
+  r.sdnn_ms = stressed ? 25.0 : 48.0;
+  r.rmssd_ms = stressed ? 18.0 : 40.0;
+  r.beats = stressed ? 42 : 35;
+  return r;
+}
+
+std::unique_ptr<perception::ClassifierStressDetector> test_stress_detector() {
+  return std::make_unique<perception::ClassifierStressDetector>(test_classifier(), perception::StressSmoothing{});
+}
+
 service::SignalServiceOptions test_options(const std::filesystem::path& database) {
   service::SignalServiceOptions options;
   options.database = database;

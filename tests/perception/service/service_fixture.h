@@ -11,8 +11,10 @@
 #include <string>
 
 #include "perception/service/device_registry.h"
+#include "perception/service/reading_message.h"
 #include "perception/service/signal_service.h"
 #include "perception/stress_classifier.h"
+#include "perception/stress_detector.h"
 
 namespace alplan::test {
 
@@ -37,6 +39,15 @@ perception::service::DeviceRegistry test_registry(std::size_t devices);
 
 // Trained on first use, the same for every test of the run (immutable).
 const perception::StressClassifier& test_classifier();
+
+// The simulator's typical subject's calm or stressed window as the wristband
+// core reports it (70 vs 85 bpm, HRV about halved), number `seq` of a series
+// 5 s apart from `first_t_ms`.
+perception::service::ReceivedReading typical_window(const std::string& device, std::uint32_t seq, bool stressed,
+                                                    std::uint64_t first_t_ms);
+
+// The stress detector over test_classifier(), with default smoothing.
+std::unique_ptr<perception::ClassifierStressDetector> test_stress_detector();
 
 // Options for a test service on 127.0.0.1, a free port, this database.
 perception::service::SignalServiceOptions test_options(const std::filesystem::path& database);

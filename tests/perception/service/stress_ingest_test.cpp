@@ -12,25 +12,12 @@ using namespace alplan::perception::service;
 
 namespace {
 
-// Typical calm and stressed windows of the simulator's typical subject, as
-// the wristband core reports them (70 vs 85 bpm, HRV about halved).
+// Typical windows from a fixed time in 2023.
 ReceivedReading window(const std::string& device, std::uint32_t seq, bool stressed) {
-  ReceivedReading r;
-  r.device = device;
-  r.seq = seq;
-  r.t_ms = 1700000000000ULL + 5000ULL * seq;
-  r.window_ms = 30000;
-  r.hr_bpm = stressed ? 85.0 : 70.0;
-  r.ibi_ms = 60000.0 / *r.hr_bpm;
-  r.sdnn_ms = stressed ? 25.0 : 48.0;
-  r.rmssd_ms = stressed ? 18.0 : 40.0;
-  r.beats = stressed ? 42 : 35;
-  return r;
+  return test::typical_window(device, seq, stressed, 1700000000000ULL);
 }
 
-std::unique_ptr<perception::ClassifierStressDetector> detector() {
-  return std::make_unique<perception::ClassifierStressDetector>(test::test_classifier(), perception::StressSmoothing{});
-}
+std::unique_ptr<perception::ClassifierStressDetector> detector() { return test::test_stress_detector(); }
 
 }  // namespace
 
