@@ -196,7 +196,7 @@ int run_planner_bench(const PlannerBenchOptions& options, std::ostream& out, std
       submit(suite, options, out);
       return 0;
     case ArrayRole::task:
-      run_task(suite, options, progress);
+      run_array_task(options.array.dir, options.array.task, [&] { run_task(suite, options, progress); });
       return 0;
     case ArrayRole::merge:
       return report_planner_bench(merged_runs(suite, options), options, out);

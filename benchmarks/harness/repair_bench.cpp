@@ -429,7 +429,7 @@ int run_repair_bench(const RepairBenchOptions& o, std::ostream& out, std::ostrea
       submit_study(o, out);
       return 0;
     case ArrayRole::task:
-      run_study_task(o, progress);
+      run_array_task(o.array.dir, o.array.task, [&] { run_study_task(o, progress); });
       return 0;
     case ArrayRole::merge:
       return merge_study(o, out, progress);

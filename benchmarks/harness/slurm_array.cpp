@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -113,7 +114,8 @@ std::set<int> queued_tasks(const ArrayManifest& m) {
   if (r.exit_code != 0) return queued;  // no squeue here, or the jobs are long gone
   std::istringstream in(r.out);
   for (std::string line; std::getline(in, line);) {
-    if (!line.empty() && std::all_of(line.begin(), line.end(), ::isdigit)) queued.insert(std::stoi(line));
+    const bool number = !line.empty() && std::all_of(line.begin(), line.end(), [](unsigned char c) { return std::isdigit(c); });
+    if (number) queued.insert(std::stoi(line));
   }
   return queued;
 }
@@ -208,6 +210,15 @@ void write_task_failure(const std::string& dir, int task, const std::string& err
   fs::create_directories(path.parent_path());
   std::ofstream(path.string() + ".new") << nlohmann::json{{"task", task}, {"status", "failed"}, {"error", error}}.dump();
   fs::rename(path.string() + ".new", path);
+}
+
+void run_array_task(const std::string& dir, int task, const std::function<void()>& body) {
+  try {
+    body();
+  } catch (const std::exception& e) {
+    write_task_failure(dir, task, e.what());
+    throw;
+  }
 }
 
 CollectedTasks collect_tasks(const std::string& dir, const ArrayManifest& m) {

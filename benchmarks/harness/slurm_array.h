@@ -12,6 +12,7 @@
 // logs/task-N.out and tasks/N.json.
 #pragma once
 
+#include <functional>
 #include <iosfwd>
 #include <map>
 #include <string>
@@ -76,6 +77,10 @@ std::pair<int, int> task_items(int task, int items, int batch);
 // no half file), and its failure, written when the task's own code throws.
 void write_task_result(const std::string& dir, int task, const nlohmann::json& result);
 void write_task_failure(const std::string& dir, int task, const std::string& error);
+
+// Runs a task's body; when it throws, records why (write_task_failure), so
+// that merge names the error, and throws on.
+void run_array_task(const std::string& dir, int task, const std::function<void()>& body);
 
 struct CollectedTasks {
   std::map<int, nlohmann::json> results;    // finished

@@ -130,3 +130,17 @@ TEST_CASE("a folder that --slurm did not write is refused by name") {
   CHECK_THROWS_WITH(read_manifest(dir.string()), Catch::Contains("not a manifest"));
   fs::remove_all(dir);
 }
+
+TEST_CASE("a task whose code throws leaves its error for merge and throws on") {
+  const fs::path dir = fresh_dir("throws");
+  std::ostringstream out;
+  submit_array(dir.string(), three_tasks(dir), out);
+  CHECK_THROWS_WITH(run_array_task(dir.string(), 1, [] { throw std::runtime_error("cannot read instance-2.pddl"); }),
+                    "cannot read instance-2.pddl");
+  const CollectedTasks c = collect_tasks(dir.string(), read_manifest(dir.string()));
+  REQUIRE(c.failed.count(1) == 1);
+  CHECK(c.failed.at(1) == "cannot read instance-2.pddl");
+  run_array_task(dir.string(), 0, [&] { write_task_result(dir.string(), 0, nlohmann::json::array()); });
+  CHECK(collect_tasks(dir.string(), read_manifest(dir.string())).results.count(0) == 1);
+  fs::remove_all(dir);
+}
