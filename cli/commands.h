@@ -32,5 +32,6 @@ void add_bench_service_command(CLI::App* bench, int& exit_code);
 void add_bench_soak_command(CLI::App* bench, int& exit_code);
 void add_serve_command(CLI::App& app, int& exit_code);
 void add_wristband_command(CLI::App& app, int& exit_code);
+void add_home_command(CLI::App& app, int& exit_code);  // home and replay
 
 }  // namespace alplan::cli

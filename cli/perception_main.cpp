@@ -23,6 +23,7 @@ extern "C" __attribute__((visibility("default"))) int alplan_perception_main(int
   alplan::cli::add_deliberate_command(app, exit_code);
   alplan::cli::add_serve_command(app, exit_code);
   alplan::cli::add_wristband_command(app, exit_code);
+  alplan::cli::add_home_command(app, exit_code);
   CLI::App* bench = app.add_subcommand("bench", "Benchmarks");
   bench->require_subcommand(1);
   alplan::cli::add_bench_service_command(bench, exit_code);

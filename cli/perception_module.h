@@ -32,7 +32,11 @@ inline constexpr ModuleCommand kPerceptionCommands[] = {
     {"deliberate", "One senior end to end: stress, emotion, goal, plan, act, monitor, repair"},
     {"serve", "The signal service: wristband readings in, stress events out (HTTP/JSON, SQLite)"},
     {"wristband", "Simulated wristbands against the signal service; device tokens"},
+    {"home", "The running home: seniors over time, goals, plans, failures, repairs, an event log"},
+    {"replay", "Runs a home's log again from its settings and checks it reaches the same events"},
 };
+inline constexpr const char* kHomeHelp = kPerceptionCommands[4].help;
+inline constexpr const char* kReplayHelp = kPerceptionCommands[5].help;
 
 // True for the module's commands, and for `bench service` and `bench soak`
 // (the signal service's benchmarks; the others run in alplan itself).

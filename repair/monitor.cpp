@@ -32,6 +32,14 @@ struct Progress {
   explicit Progress(std::size_t n) : started(n, false), ended(n, false) {}
 };
 
+MonitorEvent snap_event(MonitorEvent::Kind kind, double t, const std::string& action) {
+  MonitorEvent event;
+  event.kind = kind;
+  event.time = t;
+  event.action = action;
+  return event;
+}
+
 // An action a replaced plan had started: the new plan takes it as given
 // (it was compiled into the problem), but its end must still be dispatched.
 struct CommittedEnd {
@@ -122,10 +130,11 @@ class Execution {
   }
 
   ExecutionReport run() {
-    double t = plan_.steps.empty() ? 0.0 : std::min(0.0, plan_.steps.front().start);
+    double t = plan_.steps.empty() ? mission_.start_time : std::min(mission_.start_time, plan_.steps.front().start);
     for (int guard = 0; guard < 1000000; ++guard) {
       world_.advance(t);
       if (belief_.observe(world_.observe())) ++news_;
+      if (take_arrivals(t)) continue;  // look again at the same time, with the merged plan
       const WorldState observed = belief_.state();
       const ExplicitState state = mapping_->to_explicit(observed);
       std::optional<Violation> failure = timeline_->check_due(t, state);
@@ -270,6 +279,8 @@ class Execution {
       std::string& how = report_.repairs.back().explanation.how;
       how = *new_goal + "; " + how;
     }
+    tell({MonitorEvent::Kind::Failure, t, failure.action, {}, nullptr, &report_.repairs.back()});
+    tell({MonitorEvent::Kind::Repair, t, failure.action, {}, nullptr, &report_.repairs.back()});
     if (!result.repaired && foreseen && options_.defer_foreseen) {
       // Not due yet: carry on and look again when something new is seen.
       RepairRecord& record = report_.repairs.back();
@@ -290,6 +301,7 @@ class Execution {
     for (const RecognizedObject& o : result.integrated) belief_.know(o.name);
     problem_ = std::move(result.problem);
     adopt(with_all_conditions(*result.plan));
+    tell({MonitorEvent::Kind::Plan, t, {}, "repair", &plan_, nullptr, result.seconds});
     return Attempt::Repaired;
   }
 
@@ -341,6 +353,53 @@ class Execution {
     for (const RecognizedObject& o : result.integrated) belief_.know(o.name);
     problem_ = std::move(result.problem);
     adopt(with_all_conditions(*result.plan));
+    tell({MonitorEvent::Kind::Plan, t, {}, "proactive", &plan_, nullptr, result.seconds});
+    return true;
+  }
+
+  void tell(const MonitorEvent& event) const {
+    if (mission_.on_event) mission_.on_event(event);
+  }
+
+  // New goals from the home's deliberation: told to the belief at once, and
+  // planned with the old goal from what the robot believes now. Returns
+  // true when the plan changed.
+  bool take_arrivals(double t) {
+    if (!mission_.arrivals) return false;
+    const std::optional<GoalArrival> arrival = mission_.arrivals(t, belief_.state());
+    if (!arrival) return false;
+    world_.advance(t);  // what the deliberation scheduled for now
+    if (belief_.observe(world_.observe())) ++news_;
+    for (const auto& [fact, value] : arrival->facts) belief_.told(fact, value);
+    for (const pddl::TimedInitialLiteral& l : arrival->timed_literals) belief_.expect(l);
+    pddl::Problem merged = problem_;
+    pddl::Condition all;
+    all.kind = pddl::Condition::Kind::And;
+    if (merged.goal) all.children.push_back(*merged.goal);
+    all.children.insert(all.children.end(), arrival->goals.begin(), arrival->goals.end());
+    merged.goal = all;
+    merged.timed_literals.insert(merged.timed_literals.end(), arrival->timed_literals.begin(),
+                                 arrival->timed_literals.end());
+    Violation none;
+    none.kind = Violation::Kind::Unsupported;
+    none.time = t;
+    none.condition = "new goals: " + arrival->motivation;
+    const RepairRequest r = request(none, belief_.state(), t);
+    PlannerOptions planner = options_.planner;
+    planner.epsilon = plan_.epsilon;
+    const RepairResult result = replan_from(r, *mission_.domain, merged, planner);
+    if (!result.repaired) {
+      // The goals in force stay; the caller decides what becomes of the new.
+      problem_.timed_literals = merged.timed_literals;
+      tell({MonitorEvent::Kind::MergeFailed, t, {}, result.how, nullptr, nullptr, result.seconds});
+      return false;
+    }
+    report_.events.push_back(time_text(t) + ": new goals merged: " + arrival->motivation);
+    problem_ = result.problem;
+    motivation_ += "; " + arrival->motivation;
+    goal_ = pddl::write_condition(*merged.goal);
+    adopt(with_all_conditions(*result.plan));
+    tell({MonitorEvent::Kind::Plan, t, {}, "merge", &plan_, nullptr, result.seconds});
     return true;
   }
 
@@ -352,6 +411,7 @@ class Execution {
         continue;
       }
       if (world_.end_action(*c->task, c->action, t)) belief_.act(*c->task, c->action, false, c->duration);
+      tell(snap_event(MonitorEvent::Kind::ActionEnd, t, c->task->action_name(c->task->actions[c->action])));
       c = committed_.erase(c);
     }
     for (std::size_t s = 0; s < plan_.steps.size(); ++s) {
@@ -364,6 +424,7 @@ class Execution {
           report_.events.push_back(time_text(t) + ": " + a.name + " has not finished as planned");
         }
         progress_.ended[s] = true;
+        tell(snap_event(MonitorEvent::Kind::ActionEnd, t, a.name));
       }
     }
     for (std::size_t s = 0; s < plan_.steps.size(); ++s) {
@@ -374,6 +435,7 @@ class Execution {
       progress_.started[s] = true;
       if (!plan_.task->actions[a.action].durative) progress_.ended[s] = true;
       report_.events.push_back(time_text(t) + ": start " + a.name);
+      tell(snap_event(MonitorEvent::Kind::ActionStart, t, a.name));
     }
   }
 

@@ -48,6 +48,36 @@ struct MonitorOptions {
   bool defer_foreseen = true;
 };
 
+struct RepairRecord;
+
+// What the monitor does, as it does it, for a log (the home's event log):
+// plans adopted, snaps dispatched, failures and repairs, goals merged.
+struct MonitorEvent {
+  enum class Kind : unsigned char { Plan, ActionStart, ActionEnd, Failure, Repair, MergeFailed };
+  Kind kind = Kind::Plan;
+  double time = 0.0;
+  std::string action;  // ActionStart, ActionEnd, Failure: the ground action
+  // Plan: why it was adopted ("initial", "repair", "merge", "proactive");
+  // MergeFailed: why the merged goals have no plan.
+  std::string reason;
+  const ExecutingPlan* plan = nullptr;   // Plan
+  const RepairRecord* repair = nullptr;  // Failure (the failure part), Repair
+  double planning_seconds = 0.0;         // Plan
+};
+
+// New goals that arrive while a plan runs (a home with many seniors): what
+// the problem gains. The monitor plans the old goal and the new together
+// from the observed state, committing to what is underway, and switches
+// only when that plan exists.
+struct GoalArrival {
+  std::vector<pddl::Condition> goals;
+  // Told, not seen: the senior is sad (true), no longer soothed (false), a
+  // window is open.
+  std::vector<std::pair<AtomKey, bool>> facts;
+  std::vector<pddl::TimedInitialLiteral> timed_literals;  // windows closing
+  std::string motivation;
+};
+
 // What the deliberation is about: the domain (with the ontology's types),
 // what the problem knows, and why the goal matters.
 struct Mission {
@@ -63,6 +93,13 @@ struct Mission {
   // goal the observed state calls for and the reason, or nothing to keep
   // the current goal. Optional.
   std::function<std::optional<std::pair<pddl::Condition, std::string>>(const WorldState&)> goal_generator;
+  // When the robot starts: the first observation is at the earlier of this
+  // and the plan's first step.
+  double start_time = 0.0;
+  // Told of every MonitorEvent, in order. Optional.
+  std::function<void(const MonitorEvent&)> on_event;
+  // Asked at every observation, with what the robot believes then. Optional.
+  std::function<std::optional<GoalArrival>(double t, const WorldState& observed)> arrivals;
 };
 
 struct RepairRecord {

@@ -146,6 +146,15 @@ bool Belief::observe(const WorldState& truth) {
   return changed;
 }
 
+void Belief::told(const AtomKey& key, bool value) { state_.set(key, value); }
+
+void Belief::expect(const pddl::TimedInitialLiteral& literal) {
+  const auto later = std::upper_bound(
+      timed_literals_.begin(), timed_literals_.end(), literal.time,
+      [](double t, const pddl::TimedInitialLiteral& l) { return t < l.time; });
+  timed_literals_.insert(later, literal);
+}
+
 void Belief::act(const GroundTask& task, ActionId action, bool start, double duration) {
   apply_snap_effects(task, action, start, duration, state_);
 }

@@ -73,6 +73,11 @@ class Belief {
   void act(const GroundTask& task, ActionId action, bool start, double duration);
   // New objects integrated into the problem are known from now on.
   void know(const std::string& object);
+  // What the deliberation was told, not what the robot saw: a senior's
+  // emotion from the home's perception, a comfort window it opened and the
+  // literal that will close it.
+  void told(const AtomKey& key, bool value);
+  void expect(const pddl::TimedInitialLiteral& literal);
 
   const WorldState& state() const { return state_; }
   // Things the problem does not name that the camera has seen, the latest

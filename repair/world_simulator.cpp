@@ -86,6 +86,26 @@ WorldSimulator::WorldSimulator(WorldState initial, std::vector<ExogenousEvent> e
                    [](const ExogenousEvent& a, const ExogenousEvent& b) { return a.time < b.time; });
 }
 
+void WorldSimulator::schedule(const std::vector<ExogenousEvent>& events) {
+  pending_.insert(pending_.end(), events.begin(), events.end());
+  std::stable_sort(pending_.begin(), pending_.end(),
+                   [](const ExogenousEvent& a, const ExogenousEvent& b) { return a.time < b.time; });
+}
+
+double WorldSimulator::finish_running(double now) {
+  double last = now;
+  for (const auto& [name, a] : running_) {
+    last = std::max(last, a.expected_end);
+    for (const AtomKey& d : a.dels) world_.set(d, false);
+    for (const AtomKey& k : a.adds) world_.set(k, true);
+  }
+  running_.clear();
+  durations_.clear();
+  overrunning_.clear();
+  world_.time = std::max(world_.time, last);
+  return last;
+}
+
 void WorldSimulator::apply(const ExogenousEvent& e) {
   switch (e.kind) {
     case ExogenousEvent::Kind::SetAtom: world_.set(e.atom, e.value); break;

@@ -58,6 +58,15 @@ class WorldSimulator : public World, public ObjectRecognizer {
   // The simulator plays a perfect classifier: each thing's type as it made it.
   std::vector<RecognizedObject> recognize_sightings(const std::vector<Sighting>& sightings) override;
 
+  // More events, from now on (a home's deliberation opens comfort windows
+  // and draws failures against each new plan).
+  void schedule(const std::vector<ExogenousEvent>& events);
+
+  // Lets every running action end as expected (a mission given up leaves
+  // a robot mid-move, and it still arrives); returns when the last ends,
+  // or `now` when none runs.
+  double finish_running(double now);
+
   // Events applied so far, in order, for reports.
   const std::vector<ExogenousEvent>& applied() const { return applied_; }
 

@@ -1,0 +1,142 @@
+// `alplan home` (the running home, home/home_run.h) and `alplan replay`
+// (the same run again from its log's first line, compared event by event).
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "cli/commands.h"
+#include "cli/perceive_common.h"
+#include "cli/perception_module.h"
+#include "home/event_log.h"
+#include "home/home_run.h"
+
+namespace alplan::cli {
+namespace {
+
+struct HomeCommandOptions {
+  home::HomeSettings settings = home::default_home_settings(ALPLAN_ASSISTED_LIVING_DIR);
+  std::string home_file;
+  std::string log;
+  bool quiet = false;
+};
+
+std::string one_line(const std::string& text) {
+  std::string out;
+  for (char c : text) out += c == '\n' ? ' ' : c;
+  return out;
+}
+
+// What a person watching the home wants to read, one line an event; the
+// snaps and readings are in the log.
+void narrate(const home::LogEvent& e) {
+  const nlohmann::json& p = e.payload;
+  const auto line = [&](const std::string& text) { std::printf("[%8.1f s] %s\n", e.time, text.c_str()); };
+  if (e.type == "stress" && p.value("stressed", false)) line("stress: " + e.senior + "'s wristband says stressed");
+  if (e.type == "goal") {
+    line("goal " + p.value("goal", "") + ": " + p.value("motivation", "") + " (" + p.value("decided_by", "") +
+         "), window until " + std::to_string(static_cast<long>(p.value("window_end", 0.0))) + " s");
+  }
+  if (e.type == "plan") {
+    line("plan " + std::to_string(p.value("plan_id", 0)) + " (" + p.value("reason", "") + "):");
+    std::printf("%s", p.value("plan", "").c_str());
+  }
+  if (e.type == "failure") line("failure: " + p.value("action", "") + ": " + p.value("condition", ""));
+  if (e.type == "repair") {
+    line(std::string("repair by ") + p.value("strategy", "") + (p.value("repaired", false) ? ": " : " failed: ") +
+         one_line(p.value("how", "")));
+  }
+  if (e.type == "explanation") {
+    line("explanation: why: " + one_line(p.value("why", "")) + " | what: " + one_line(p.value("what", "")) +
+         " | how: " + one_line(p.value("how", "")));
+  }
+  if (e.type == "comforted") {
+    line(e.senior + " comforted: " + p.value("goal", "") + (p.value("within_window", false) ? ", within the window" : ", too late"));
+  }
+  if (e.type == "window_missed") line(e.senior + "'s window closed before " + p.value("goal", "") + ": looking again");
+}
+
+void print_summary(const home::HomeSummary& s) {
+  std::printf("\nsummary: %zu goals, %zu comforted (%zu within their windows), %zu windows missed\n", s.goals,
+              s.comforted, s.within_window, s.windows_missed);
+  std::printf("         %zu plans (%zu merges), %zu failures, repairs:", s.plans, s.merges, s.failures);
+  for (const auto& [strategy, n] : s.repairs) std::printf(" %s %zu", strategy.c_str(), n);
+  std::printf(", %zu failed\n", s.repairs_failed);
+  const nlohmann::json j = s.json();
+  std::printf("         planning p50 %.3f s, p95 %.3f s; %zu stress episodes, %zu false alarms (scored against the simulation)\n",
+              j["planning_p50_s"].get<double>(), j["planning_p95_s"].get<double>(), s.episodes, s.false_alarms);
+}
+
+int run_home_command(HomeCommandOptions& o) {
+  if (!o.home_file.empty()) {
+    o.settings.home_file = o.home_file;
+    o.settings.script.clear();  // the default home's script names its seniors
+  }
+  if (o.settings.generate_seniors > 0) o.settings.script.clear();
+  std::ofstream file;
+  if (!o.log.empty()) {
+    file.open(o.log, std::ios::binary | std::ios::trunc);
+    if (!file) throw std::invalid_argument(o.log + ": cannot write the log");
+  }
+  home::EventLog log(o.log.empty() ? nullptr : &file, o.quiet ? home::EventLog::Echo{} : narrate);
+  const home::HomeSummary summary = home::run_home(o.settings, log);
+  print_summary(summary);
+  if (!o.log.empty()) std::printf("log: %s (%zu events)\n", o.log.c_str(), log.events().size());
+  return kExitOk;
+}
+
+int run_replay(const std::string& path) {
+  const home::LogReading logged = home::read_event_log(path);
+  for (const std::string& w : logged.warnings) std::cerr << "warning: " << w << "\n";
+  const nlohmann::json& first = logged.events.front();
+  if (first.value("type", "") != "observation" || first.value("what", "") != "home" || !first.contains("settings")) {
+    throw std::invalid_argument(path + ":" + std::to_string(logged.lines.front()) +
+                                ": the first event is not the home's observation with the run's settings");
+  }
+  const home::HomeSettings settings = home::HomeSettings::from_json(first["settings"]);
+  home::EventLog replayed;
+  home::run_home(settings, replayed);
+  if (const auto difference = home::first_difference(logged, replayed.events())) {
+    std::printf("replay differs from %s: %s\n", path.c_str(), difference->c_str());
+    return kExitInvalid;
+  }
+  std::printf("replay of %s: the same %zu events (goals, plans, actions, failures, repairs, outcomes)\n", path.c_str(),
+              replayed.events().size());
+  return logged.warnings.empty() ? kExitOk : kExitInvalid;
+}
+
+}  // namespace
+
+void add_home_command(CLI::App& app, int& exit_code) {
+  auto o = std::make_shared<HomeCommandOptions>();
+  CLI::App* cmd = app.add_subcommand("home", kHomeHelp);
+  home::HomeSettings& s = o->settings;
+  cmd->add_option("--home", o->home_file, "A home's problem file for domains/assisted_living/domain.pddl (its goal is ignored)");
+  cmd->add_option("--seniors", s.generate_seniors, "Generate a home with this many seniors (alplan gen home)")
+      ->check(CLI::Range(1, 1000));
+  cmd->add_option("--robots", s.generate_robots, "Robots of the generated home")->check(CLI::Range(1, 100));
+  cmd->add_option("--rooms", s.generate_rooms, "Rooms of the generated home")->check(CLI::Range(4, 1000));
+  cmd->add_option("--objects", s.generate_objects, "Portable objects of the generated home")->check(CLI::Range(1, 10000));
+  cmd->add_option("--strategy", s.strategy, "Repair strategy: replan, substitute, suggest, patch, adapt");
+  cmd->add_option("--observe", s.observe, "What the robots see: full, iot, camera (repair/observation.h)");
+  cmd->add_option("--until", s.until, "Simulated seconds to run")->check(CLI::Range(0.0, 7.0 * 24 * 3600));
+  cmd->add_option("--seed", s.seed, "Seed of the seniors, the failures and a generated home");
+  cmd->add_option("--episodes-per-hour", s.seniors.episodes_per_hour, "Stress episodes per senior and hour (drawn homes)")
+      ->check(CLI::Range(0.0, 60.0));
+  cmd->add_option("--failure-chance", s.failure_chance, "Chance that a new plan meets a drawn failure")
+      ->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--planner-expansions", s.planner_expansions,
+                  "Anytime improvement: expansions per weight (deterministic); 0: the first plan");
+  cmd->add_option("--log", o->log, "Write the event log here (JSON Lines)");
+  cmd->add_flag("--quiet", o->quiet, "Print the summary only");
+  cmd->callback([o, &exit_code] { exit_code = guarded([&] { return run_home_command(*o); }, "the home"); });
+
+  auto log = std::make_shared<std::string>();
+  CLI::App* replay = app.add_subcommand("replay", kReplayHelp);
+  replay->add_option("LOG", *log, "The event log of alplan home --log")->required();
+  replay->callback([log, &exit_code] { exit_code = guarded([&] { return run_replay(*log); }, *log); });
+}
+
+}  // namespace alplan::cli

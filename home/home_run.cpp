@@ -1,0 +1,422 @@
+#include "home/home_run.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+
+#include "domains/emotion_goals.h"
+#include "domains/home_generator.h"
+#include "domains/mission_run.h"
+#include "home/home_perception.h"
+#include "pddl_parser/writer.h"
+#include "repair/monitor.h"
+#include "repair/observation.h"
+#include "repair/random_events.h"
+#include "repair/reformulation.h"
+#include "repair/world_simulator.h"
+
+namespace alplan::home {
+namespace {
+
+struct LoadedRun {
+  domains::LoadedHome home;
+  HomeMap map;
+};
+
+LoadedRun load(const HomeSettings& s) {
+  if (s.generate_seniors > 0) {
+    domains::HomeOptions options;
+    options.seniors = s.generate_seniors;
+    options.robots = s.generate_robots;
+    if (s.generate_rooms > 0) options.rooms = s.generate_rooms;
+    if (s.generate_objects > 0) options.objects = s.generate_objects;
+    options.stressed = 0;
+    options.seed = s.seed;
+    const domains::GeneratedHome generated = domains::generate_home(options);
+    domains::LoadedHome paper = domains::load_home(s.domains_dir, "home.pddl");
+    domains::LoadedFiles files = domains::load_pddl_text(pddl::write_domain(*paper.files.domain), "domain.pddl",
+                                                         generated.problem, "generated-home.pddl");
+    domains::LoadedHome home{std::move(files), std::move(paper.ontology), std::move(paper.domain)};
+    HomeMap map = read_home_map(*home.files.problem);
+    return {std::move(home), std::move(map)};
+  }
+  const std::string file = s.home_file.empty() ? s.domains_dir + "/home.pddl" : s.home_file;
+  domains::LoadedHome home = domains::load_home(s.domains_dir, "home.pddl");
+  if (file != s.domains_dir + "/home.pddl") {
+    domains::LoadedFiles files = domains::load_pddl(s.domains_dir + "/domain.pddl", file);
+    home.files.problem = files.problem;
+  }
+  HomeMap map = read_home_map(*home.files.problem);
+  return {std::move(home), std::move(map)};
+}
+
+// The home's problem with nothing to do: no emotion, window or goal yet.
+pddl::Problem calm_problem(const pddl::Problem& problem) {
+  pddl::Problem out = problem;
+  const auto about_moods = [](const pddl::Atom& a) {
+    for (const char* p : {"terrified", "sad", "bored", "hydration_time", "comfort_time", "soothed", "cheerful",
+                          "entertained"}) {
+      if (a.name == p) return true;
+    }
+    return false;
+  };
+  out.init.erase(std::remove_if(out.init.begin(), out.init.end(), about_moods), out.init.end());
+  out.timed_literals.clear();
+  pddl::Condition none;
+  none.kind = pddl::Condition::Kind::And;
+  out.goal = none;
+  return out;
+}
+
+nlohmann::json steps_json(const repair::ExecutingPlan& plan, const HomeMap& map) {
+  nlohmann::json steps = nlohmann::json::array();
+  for (const repair::ScheduledAction& s : plan.steps) {
+    std::string robot;
+    std::istringstream words(s.name.substr(1, s.name.size() - 2));
+    for (std::string w; words >> w;) {
+      if (map.has_robot(w)) {
+        robot = w;
+        break;
+      }
+    }
+    steps.push_back({{"start", s.start}, {"duration", s.duration}, {"action", s.name}, {"robot", robot}});
+  }
+  return steps;
+}
+
+std::string robot_of(const std::string& action, const HomeMap& map) {
+  std::istringstream words(action.size() > 2 ? action.substr(1, action.size() - 2) : action);
+  for (std::string w; words >> w;) {
+    if (map.has_robot(w)) return w;
+  }
+  return {};
+}
+
+class HomeRun {
+ public:
+  HomeRun(const HomeSettings& settings, EventLog& log)
+      : settings_(settings), log_(log), loaded_(load(settings)), base_(calm_problem(*loaded_.home.files.problem)),
+        perception_(loaded_.map, settings, log),
+        world_(repair::initial_world(base_), {}),
+        belief_(base_, observation_options()),
+        events_(event_options()) {
+    planner_.anytime = settings.planner_expansions > 0;
+    planner_.anytime_expansions = settings.planner_expansions;
+    planner_.anytime_min_weight = 3.0;
+    planner_.time_limit = settings.planning_time;
+    planner_.epsilon = 0.002;
+    repair::StrategyOptions strategy;
+    strategy.planner = planner_;
+    strategy_ = repair::make_strategy(settings.strategy, strategy);
+  }
+
+  HomeSummary run() {
+    LogEvent home{"observation", 0.0, {}, {}, {}};
+    home.payload = {{"what", "home"}, {"home", loaded_.map.json()}, {"settings", settings_.json()}};
+    log_.write(home);
+    for (double t = 0.0; t <= settings_.until + 1e-9;) {
+      world_.advance(t);
+      belief_.observe(world_.observe());
+      for (PerceivedGoal& g : perception_.sense(t)) pending_.push_back(std::move(g));
+      settle(t, belief_.state());
+      if (!pending_.empty() || replan_) {
+        t = std::max(t, mission(t));
+        continue;
+      }
+      t += settings_.step_s;
+    }
+    summary_.episodes = perception_.episodes_begun(settings_.until);
+    summary_.false_alarms = perception_.false_alarms();
+    summary_.end_time = settings_.until;
+    return summary_;
+  }
+
+ private:
+  repair::ObservationOptions observation_options() const {
+    repair::ObservationOptions o;
+    const auto model = repair::observation_model(settings_.observe);
+    if (!model) throw std::invalid_argument("--observe " + settings_.observe + ": not full, iot or camera");
+    o.model = *model;
+    return o;
+  }
+
+  repair::RandomEventOptions event_options() const {
+    repair::RandomEventOptions o;
+    o.seed = settings_.seed * 7919 + 17;
+    o.kinds.clear();
+    for (const std::string& k : settings_.failure_kinds) {
+      const auto kind = repair::random_event_kind(k);
+      if (!kind) throw std::invalid_argument("failure kind " + k + ": not one of the repair study's kinds");
+      o.kinds.push_back(*kind);
+    }
+    return o;
+  }
+
+  double coin() { return static_cast<double>(events_random_() >> 11) * 0x1.0p-53; }
+
+  // The facts a new goal tells the world and the robot: the emotion read,
+  // the goal not yet reached, the window open until its literal closes it.
+  void tell(const PerceivedGoal& g, double t, repair::GoalArrival& arrival) {
+    std::vector<repair::ExogenousEvent> now;
+    const auto set = [&](const std::string& predicate, bool value) {
+      repair::ExogenousEvent e;
+      e.time = t;
+      e.atom = {predicate, g.senior};
+      e.value = value;
+      e.description = g.senior + ": " + predicate + (value ? "" : " no more");
+      now.push_back(e);
+      arrival.facts.push_back({e.atom, value});
+    };
+    for (const char* e : {"terrified", "sad", "bored"}) set(e, g.emotion == e);
+    for (const char* p : {"soothed", "cheerful", "entertained"}) set(p, false);
+    set(g.window, true);
+    repair::ExogenousEvent close;
+    close.time = g.window_end;
+    close.atom = {g.window, g.senior};
+    close.value = false;
+    close.description = g.senior + "'s window closes";
+    now.push_back(close);
+    world_.schedule(now);
+    pddl::TimedInitialLiteral til;
+    til.time = g.window_end;
+    til.positive = false;
+    til.atom = domains::senior_atom(g.window, g.senior);
+    arrival.timed_literals.push_back(til);
+    arrival.goals.push_back(g.goal);
+    arrival.motivation += (arrival.motivation.empty() ? "" : "; ") + g.motivation;
+  }
+
+  repair::GoalArrival take_pending(double t) {
+    repair::GoalArrival arrival;
+    for (PerceivedGoal& g : pending_) {
+      tell(g, t, arrival);
+      active_.push_back(std::move(g));
+      ++summary_.goals;
+    }
+    pending_.clear();
+    return arrival;
+  }
+
+  // Goals reached or out of time, as the robot believes.
+  void settle(double t, const repair::WorldState& believed) {
+    settle(t, believed, active_);
+    settle(t, believed, unplannable_);
+  }
+
+  void settle(double t, const repair::WorldState& believed, std::vector<PerceivedGoal>& goals) {
+    for (auto g = goals.begin(); g != goals.end();) {
+      if (believed.holds({g->predicate, g->senior})) {
+        const bool within = t <= g->window_end + 1e-6;
+        LogEvent e{"comforted", t, g->senior, {}, {}};
+        e.payload = {{"goal", "(" + g->predicate + " " + g->senior + ")"}, {"window_end", g->window_end},
+                     {"within_window", within}};
+        log_.write(e);
+        ++summary_.comforted;
+        summary_.within_window += within;
+        perception_.comforted(*g, t);
+        g = goals.erase(g);
+      } else if (t > g->window_end + 1e-6) {
+        LogEvent e{"window_missed", t, g->senior, {}, {}};
+        e.payload = {{"goal", "(" + g->predicate + " " + g->senior + ")"}, {"window_end", g->window_end}};
+        log_.write(e);
+        ++summary_.windows_missed;
+        perception_.missed(*g, t);
+        g = goals.erase(g);
+      } else {
+        ++g;
+      }
+    }
+  }
+
+  void log_plan(double t, const repair::ExecutingPlan& plan, const std::string& reason, double seconds) {
+    LogEvent e{"plan", t, {}, {}, {}};
+    const int id = ++plans_;
+    e.payload = {{"plan_id", id}, {"reason", reason}, {"plan", repair::plan_text(plan)},
+                 {"steps", steps_json(plan, loaded_.map)}, {"planning_seconds", seconds}};
+    e.payload["supersedes"] = current_plan_ ? nlohmann::json(current_plan_) : nlohmann::json(nullptr);
+    log_.write(e);
+    current_plan_ = id;
+    ++summary_.plans;
+    summary_.merges += reason == "merge";
+    summary_.planning_seconds.push_back(seconds);
+    // The world changes against the plans the deliberation makes for new
+    // goals; a repair's plan meets what the world does next, not a draw of
+    // its own (else failures would beget failures without end).
+    if (reason != "repair" && settings_.failure_chance > 0 && coin() < settings_.failure_chance) {
+      const std::vector<repair::ExogenousEvent> failure =
+          events_.draw(plan, current_problem_, &loaded_.home.ontology, ++serial_);
+      world_.schedule(failure);
+    }
+  }
+
+  void on_monitor_event(const repair::MonitorEvent& m) {
+    using Kind = repair::MonitorEvent::Kind;
+    switch (m.kind) {
+      case Kind::Plan: log_plan(m.time, *m.plan, m.reason, m.planning_seconds); return;
+      case Kind::ActionStart:
+      case Kind::ActionEnd: {
+        LogEvent e{m.kind == Kind::ActionStart ? "action_start" : "action_end", m.time, {},
+                   robot_of(m.action, loaded_.map), {}};
+        e.payload = {{"action", m.action}, {"plan_id", current_plan_}};
+        log_.write(e);
+        return;
+      }
+      case Kind::Failure: {
+        const Violation& v = m.repair->failure;
+        LogEvent e{"failure", m.time, {}, robot_of(m.action, loaded_.map), {}};
+        e.payload = {{"action", v.action}, {"condition", v.condition}, {"kind", std::string(alplan::to_string(v.kind))},
+                     {"foreseen", m.repair->foreseen}};
+        log_.write(e);
+        ++summary_.failures;
+        return;
+      }
+      case Kind::Repair: {
+        const repair::RepairRecord& r = *m.repair;
+        LogEvent e{"repair", m.time, {}, {}, {}};
+        e.payload = {{"strategy", r.strategy}, {"repaired", r.repaired}, {"deferred", r.deferred},
+                     {"seconds", r.seconds}, {"how", r.explanation.how},
+                     {"plan_id", r.repaired ? nlohmann::json(plans_ + 1) : nlohmann::json(nullptr)}};
+        log_.write(e);
+        if (r.repaired) ++summary_.repairs[r.strategy];
+        else if (!r.deferred) ++summary_.repairs_failed;
+        explain(m.time, r.explanation.why, r.explanation.what, r.explanation.how);
+        return;
+      }
+      case Kind::MergeFailed:
+        explain(m.time, "new goals arrived while a plan ran", "no plan serves them with the goals in force",
+                m.reason + "; they wait until the plan in force ends");
+        merge_blocked_ = true;
+        return;
+    }
+  }
+
+  void explain(double t, const std::string& why, const std::string& what, const std::string& how) {
+    LogEvent e{"explanation", t, {}, {}, {}};
+    e.payload = {{"why", why}, {"what", what}, {"how", how}};
+    log_.write(e);
+  }
+
+  // What the monitor asks at every observation while a plan runs.
+  std::optional<repair::GoalArrival> arrivals(double t, const repair::WorldState& believed) {
+    for (PerceivedGoal& g : perception_.sense(t)) pending_.push_back(std::move(g));
+    settle(t, believed);
+    if (pending_.empty() || merge_blocked_) return std::nullopt;
+    return take_pending(t);
+  }
+
+  // Plans every goal in course from what the robots believe at t, then
+  // executes under the monitor until the plan ends; returns the time then.
+  double mission(double t) {
+    replan_ = false;
+    repair::GoalArrival arrival = take_pending(t);
+    std::string motivation;
+    for (const PerceivedGoal& g : active_) motivation += (motivation.empty() ? "" : "; ") + g.motivation;
+    world_.advance(t);
+    belief_.observe(world_.observe());
+    for (const auto& [fact, value] : arrival.facts) belief_.told(fact, value);
+    for (const pddl::TimedInitialLiteral& l : arrival.timed_literals) {
+      belief_.expect(l);
+      base_.timed_literals.push_back(l);
+    }
+    pddl::Condition all;
+    all.kind = pddl::Condition::Kind::And;
+    for (const PerceivedGoal& g : active_) all.children.push_back(g.goal);
+    pddl::Problem goal_problem = base_;
+    goal_problem.goal = all;
+    current_problem_ = repair::reformulate(loaded_.home.domain, goal_problem, belief_.state(), {}, t, 0.0);
+    const repair::PlanningOutcome planned =
+        repair::plan_in_process(loaded_.home.domain, current_problem_, t, planner_);
+    if (!planned.plan) {
+      if (const char* dump = std::getenv("ALPLAN_HOME_DUMP")) {
+        std::ofstream(dump) << pddl::write_problem(current_problem_);
+      }
+      explain(t, motivation, "no plan reaches the goals in course in time",
+              planned.message + "; the seniors are looked at again when their windows close");
+      summary_.planning_seconds.push_back(planned.seconds);
+      for (PerceivedGoal& g : active_) unplannable_.push_back(std::move(g));
+      active_.clear();
+      return t + settings_.step_s;
+    }
+    current_plan_ = 0;
+    log_plan(t, *planned.plan, "initial", planned.seconds);
+    repair::Mission m;
+    m.domain = &loaded_.home.domain;
+    m.problem = current_problem_;
+    m.motivation = motivation;
+    m.robot = loaded_.map.robots.front().name;
+    m.exogenous_predicates = domains::exogenous_predicates();
+    m.start_time = t;
+    m.on_event = [this](const repair::MonitorEvent& e) { on_monitor_event(e); };
+    m.arrivals = [this](double now, const repair::WorldState& b) { return arrivals(now, b); };
+    repair::MonitorOptions options;
+    options.step_size = settings_.step_s;
+    // A home's plan runs long and meets many changes; a repair each is fine.
+    options.max_repairs = 50;
+    options.planner = planner_;
+    options.observation = observation_options();
+    merge_blocked_ = false;
+    const repair::Monitor monitor(options);
+    const repair::ExecutionReport report =
+        monitor.run(m, *planned.plan, world_, *strategy_, &world_, &loaded_.home.ontology);
+    const double end = world_.finish_running(std::max(t + settings_.step_s, report.end_time));
+    world_.advance(end);
+    belief_.observe(world_.observe());
+    settle(end, world_.observe());
+    if (!report.goal_reached) {
+      explain(end, m.motivation, report.outcome, "the goals not reached are planned again while their windows last");
+    }
+    merge_blocked_ = false;
+    // Goals still in course (a failed repair, a merge that found no plan)
+    // are planned again from here.
+    replan_ = !active_.empty();
+    return end;
+  }
+
+  const HomeSettings& settings_;
+  EventLog& log_;
+  LoadedRun loaded_;
+  pddl::Problem base_;
+  HomePerception perception_;
+  repair::WorldSimulator world_;
+  repair::Belief belief_;
+  repair::RandomEventGenerator events_;
+  std::mt19937_64 events_random_{settings_.seed * 104729 + 3};
+  PlannerOptions planner_;
+  std::unique_ptr<repair::RepairStrategy> strategy_;
+  std::vector<PerceivedGoal> pending_, active_;
+  std::vector<PerceivedGoal> unplannable_;  // no plan found: they wait for their windows to close
+  bool replan_ = false;
+  pddl::Problem current_problem_;
+  bool merge_blocked_ = false;
+  int plans_ = 0, current_plan_ = 0, serial_ = 0;
+  HomeSummary summary_;
+};
+
+}  // namespace
+
+nlohmann::json HomeSummary::json() const {
+  std::vector<double> sorted = planning_seconds;
+  std::sort(sorted.begin(), sorted.end());
+  const auto quantile = [&](double q) {
+    return sorted.empty() ? 0.0 : sorted[std::min(sorted.size() - 1, static_cast<std::size_t>(q * static_cast<double>(sorted.size())))];
+  };
+  return {{"goals", goals},         {"comforted", comforted},     {"within_window", within_window},
+          {"windows_missed", windows_missed}, {"failures", failures}, {"plans", plans},
+          {"merges", merges},       {"repairs", repairs},         {"repairs_failed", repairs_failed},
+          {"planning_p50_s", quantile(0.5)}, {"planning_p95_s", quantile(0.95)},
+          {"episodes", episodes},   {"false_alarms", false_alarms}, {"end_time", end_time}};
+}
+
+HomeMap home_map_of(const HomeSettings& settings) { return load(settings).map; }
+
+HomeSummary run_home(const HomeSettings& settings, EventLog& log) {
+  HomeRun run(settings, log);
+  return run.run();
+}
+
+}  // namespace alplan::home

@@ -1,0 +1,41 @@
+// The running home (issue 16; the paper's Fig. 3 over a whole home): the
+// seniors' stress and emotions come in over simulated time, goals are
+// generated, the robots plan, act under the monitor and repair, and every
+// step is written to the event log. Several seniors at once: each goal has
+// its window by urgency; a goal arriving while a plan runs is merged by
+// planning from the current state, committed to what is underway; a senior
+// not comforted by the end of their window is seen as stressed again and
+// the process restarts for them.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "home/event_log.h"
+#include "home/home_map.h"
+#include "home/home_settings.h"
+
+namespace alplan::home {
+
+struct HomeSummary {
+  std::size_t goals = 0, comforted = 0, within_window = 0, windows_missed = 0;
+  std::size_t failures = 0, plans = 0, merges = 0;
+  std::map<std::string, std::size_t> repairs;  // by strategy, repaired
+  std::size_t repairs_failed = 0;
+  std::vector<double> planning_seconds;  // every plan made: initial, merged, repaired
+  // Scored against the simulation's truth.
+  std::size_t episodes = 0, false_alarms = 0;
+  double end_time = 0.0;
+
+  nlohmann::json json() const;
+};
+
+// Throws std::invalid_argument (bad settings: an unknown strategy, senior,
+// observation model) or the loaders' errors naming the file.
+HomeSummary run_home(const HomeSettings& settings, EventLog& log);
+
+// The home the settings describe, as its map (for checking names early).
+HomeMap home_map_of(const HomeSettings& settings);
+
+}  // namespace alplan::home

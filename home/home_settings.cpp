@@ -1,0 +1,90 @@
+#include "home/home_settings.h"
+
+#include <stdexcept>
+
+namespace alplan::home {
+
+nlohmann::json HomeSettings::json() const {
+  nlohmann::json script_json = nlohmann::json::array();
+  for (const ScriptedEpisode& e : script) {
+    script_json.push_back({{"senior", e.senior}, {"start", e.start}, {"emotion", e.emotion}});
+  }
+  return {{"domains_dir", domains_dir},
+          {"home_file", home_file},
+          {"generate", {{"seniors", generate_seniors}, {"robots", generate_robots}, {"rooms", generate_rooms},
+                        {"objects", generate_objects}}},
+          {"strategy", strategy},
+          {"observe", observe},
+          {"until", until},
+          {"seed", seed},
+          {"seniors_model",
+           {{"episodes_per_hour", seniors.episodes_per_hour}, {"calm_start_s", seniors.calm_start_s},
+            {"face_accuracy", seniors.face_accuracy}, {"recovery_s", seniors.recovery_s},
+            {"terrified_share", seniors.terrified_share}, {"sad_share", seniors.sad_share}}},
+          {"script", script_json},
+          {"failure_chance", failure_chance},
+          {"failure_kinds", failure_kinds},
+          {"step_s", step_s},
+          {"look_interval_s", look_interval_s},
+          {"grace_s", grace_s},
+          {"windows", {{"terrified_s", terrified_window_s}, {"other_s", other_window_s}}},
+          {"planner_expansions", planner_expansions},
+          {"planning_time", planning_time}};
+}
+
+HomeSettings HomeSettings::from_json(const nlohmann::json& j) {
+  HomeSettings s;
+  try {
+    s.domains_dir = j.at("domains_dir").get<std::string>();
+    s.home_file = j.at("home_file").get<std::string>();
+    const nlohmann::json& g = j.at("generate");
+    s.generate_seniors = g.at("seniors").get<int>();
+    s.generate_robots = g.at("robots").get<int>();
+    s.generate_rooms = g.at("rooms").get<int>();
+    s.generate_objects = g.at("objects").get<int>();
+    s.strategy = j.at("strategy").get<std::string>();
+    s.observe = j.at("observe").get<std::string>();
+    s.until = j.at("until").get<double>();
+    s.seed = j.at("seed").get<std::uint64_t>();
+    const nlohmann::json& m = j.at("seniors_model");
+    s.seniors.episodes_per_hour = m.at("episodes_per_hour").get<double>();
+    s.seniors.calm_start_s = m.at("calm_start_s").get<double>();
+    s.seniors.face_accuracy = m.at("face_accuracy").get<double>();
+    s.seniors.recovery_s = m.at("recovery_s").get<double>();
+    s.seniors.terrified_share = m.at("terrified_share").get<double>();
+    s.seniors.sad_share = m.at("sad_share").get<double>();
+    for (const nlohmann::json& e : j.at("script")) {
+      s.script.push_back({e.at("senior").get<std::string>(), e.at("start").get<double>(),
+                          e.at("emotion").get<std::string>()});
+    }
+    s.failure_chance = j.at("failure_chance").get<double>();
+    s.failure_kinds = j.at("failure_kinds").get<std::vector<std::string>>();
+    s.step_s = j.at("step_s").get<double>();
+    s.look_interval_s = j.at("look_interval_s").get<double>();
+    s.grace_s = j.at("grace_s").get<double>();
+    s.terrified_window_s = j.at("windows").at("terrified_s").get<double>();
+    s.other_window_s = j.at("windows").at("other_s").get<double>();
+    s.planner_expansions = j.at("planner_expansions").get<std::uint64_t>();
+    s.planning_time = j.at("planning_time").get<double>();
+  } catch (const nlohmann::json::exception& e) {
+    throw std::invalid_argument(std::string("the run's settings: ") + e.what());
+  }
+  return s;
+}
+
+HomeSettings default_home_settings(const std::string& domains_dir) {
+  HomeSettings s;
+  s.domains_dir = domains_dir;
+  s.home_file = domains_dir + "/home.pddl";
+  s.until = 3600.0;
+  s.script = {{"senior1", 300.0, "terrified"},
+              {"senior3", 1200.0, "sad"},
+              {"senior5", 1260.0, "bored"},
+              {"senior7", 2400.0, "sad"},
+              {"senior2", 2460.0, "terrified"}};
+  s.failure_chance = 0.8;
+  s.failure_kinds = {"sibling", "arrival", "moves"};
+  return s;
+}
+
+}  // namespace alplan::home

@@ -1,0 +1,63 @@
+// What a run of the home is made of: which home, how its seniors behave,
+// how the robot plans and repairs, how long, and the seed. Written into the
+// log's first line, so that `alplan replay` runs the same home again.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "home/simulated_senior.h"
+
+namespace alplan::home {
+
+// An episode the run is told to have (the default home's script).
+struct ScriptedEpisode {
+  std::string senior;
+  double start = 0.0;
+  std::string emotion;  // terrified, sad, bored
+};
+
+struct HomeSettings {
+  std::string domains_dir;  // domain.pddl and types.ttl
+  // The home: a problem file (its goal and emotions are ignored: the run
+  // makes its own), or, with `generate_seniors` > 0, a generated home.
+  std::string home_file;
+  int generate_seniors = 0, generate_robots = 1, generate_rooms = 0, generate_objects = 0;
+  std::string strategy = "substitute";
+  std::string observe = "iot";  // repair/observation.h: full, iot, camera
+  double until = 3600.0;
+  std::uint64_t seed = 1;
+  SeniorModelOptions seniors;
+  std::vector<ScriptedEpisode> script;  // with these, no episode is drawn
+  // Each new plan meets, with this chance, one failure of the repair
+  // study's kinds drawn against it (repair/random_events.h).
+  double failure_chance = 0.5;
+  std::vector<std::string> failure_kinds{"sibling", "arrival", "iot", "moves", "overrun"};
+  double step_s = 5.0;            // the home's clock while the robots are idle; the monitor's step
+  double look_interval_s = 20.0;  // between looks at a stressed senior's face
+  double grace_s = 180.0;         // after comforting, before the face is read again
+  double terrified_window_s = 600.0, other_window_s = 1200.0;
+  // Deterministic planning: anytime weights bounded by expansions, so that
+  // (on the default home: 3000 expansions gave p95 1.8 s and the same
+  // outcomes as 300, p95 0.13 s; `alplan home --planner-expansions`)
+  // a replay finds the same plans; the time limit only guards. 0: the
+  // first plan, no anytime improvement.
+  std::uint64_t planner_expansions = 300;
+  double planning_time = 10.0;
+
+  nlohmann::json json() const;
+  // Throws std::invalid_argument naming a field of the wrong kind.
+  static HomeSettings from_json(const nlohmann::json& json);
+};
+
+// The default run (`alplan home` with no arguments): the paper's home of
+// Section 4 with its eight seniors and a second robot, the paper's three
+// emotions arriving over an hour (senior1 terrified as in Scenario 1, a
+// sad and a bored senior, and two at once), and the paper's exogenous
+// events (the carried glass gone, a mug of a sibling type nearby).
+HomeSettings default_home_settings(const std::string& domains_dir);
+
+}  // namespace alplan::home
