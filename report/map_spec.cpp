@@ -57,7 +57,7 @@ json connection_layer(const Home& home) {
 
 // Each robot's route as a line through the rooms it moved to, nudged apart
 // a little per robot so two robots on one corridor stay visible.
-json route_layer(const EventLog& log, const Extent& e) {
+json route_rows(const EventLog& log, const Extent& e) {
   json rows = json::array();
   const auto routes = robot_routes(log);
   const double nudge = 0.015 * e.span();
@@ -80,18 +80,37 @@ json route_layer(const EventLog& log, const Extent& e) {
       at = m.to;
     }
   }
+  return rows;
+}
+
+json route_layers(const EventLog& log, const Extent& e) {
+  const json rows = route_rows(log, e);
   const json tooltip = json::array({{{"field", "robot"}},
                                     {{"field", "step"}, {"title", "move"}},
                                     {{"field", "time"}, {"title", "started at"}},
                                     {{"field", "order"}, {"title", "move number"}}});
-  return {{"data", {{"values", rows}}},
-          {"mark", {{"type", "line"}, {"strokeWidth", 3}, {"opacity", 0.85}, {"point", {{"size", 50}}}}},
-          {"encoding",
-           {{"x", {{"field", "x"}, {"type", "quantitative"}}},
-            {"y", {{"field", "y"}, {"type", "quantitative"}}},
-            {"order", {{"field", "order"}, {"type", "quantitative"}}},
-            {"color", {{"field", "robot"}, {"type", "nominal"}, {"title", "route of"}}},
-            {"tooltip", tooltip}}}};
+  const json colour = {{"field", "robot"}, {"type", "nominal"}, {"title", "route of"}};
+  json line = {{"data", {{"values", rows}}},
+               {"mark", {{"type", "line"}, {"strokeWidth", 3}, {"opacity", 0.85}, {"point", {{"size", 50}}}}},
+               {"encoding",
+                {{"x", {{"field", "x"}, {"type", "quantitative"}}},
+                 {"y", {{"field", "y"}, {"type", "quantitative"}}},
+                 {"order", {{"field", "order"}, {"type", "quantitative"}}},
+                 {"color", colour},
+                 {"tooltip", tooltip}}}};
+  // The robot's name where its route starts: the line alone does not say
+  // which end it left from.
+  json start = {{"data", {{"values", rows}}},
+                {"transform", json::array({{{"filter", "datum.order === 0"}},
+                                           {{"calculate", "datum.robot + ' starts here'"}, {"as", "label"}}})},
+                {"mark", {{"type", "text"}, {"align", "left"}, {"dx", 16}, {"dy", 4}, {"fontSize", 10},
+                          {"fontWeight", "bold"}}},
+                {"encoding",
+                 {{"x", {{"field", "x"}, {"type", "quantitative"}}},
+                  {"y", {{"field", "y"}, {"type", "quantitative"}}},
+                  {"text", {{"field", "label"}}},
+                  {"color", colour}}}};
+  return json::array({line, start});
 }
 
 json room_rows(const Home& home) {
@@ -144,7 +163,9 @@ json map_spec(const EventLog& log) {
   const double dy = e.max_y - e.min_y + 2 * margin;
   const double height = std::clamp(width * dy / dx, 200.0, 900.0);
   json layers = json::array({connection_layer(home)});
-  if (!robot_routes(log).empty()) layers.push_back(route_layer(log, e));
+  if (!robot_routes(log).empty()) {
+    for (json& l : route_layers(log, e)) layers.push_back(std::move(l));
+  }
   for (json& l : room_layers(home)) layers.push_back(std::move(l));
   const json x_scale = {{"domain", {e.min_x - margin, e.max_x + margin}}, {"nice", false}, {"zero", false}};
   const json y_scale = {{"domain", {e.min_y - margin, e.max_y + margin}}, {"nice", false}, {"zero", false}};
