@@ -32,11 +32,15 @@ const TypeRule* rule_for(const std::string& type) {
 }
 
 // nlohmann's messages start with "[json.exception.parse_error.101] ", which
-// tells a reader of the log nothing.
+// tells a reader of the log nothing, and say "at line 1", the line within
+// the one-line text parsed, which reads as the log's first line.
 std::string parse_message(const json::parse_error& e) {
   std::string m = e.what();
   const auto bracket = m.find("] ");
-  return bracket == std::string::npos ? m : m.substr(bracket + 2);
+  if (bracket != std::string::npos) m = m.substr(bracket + 2);
+  const auto line_one = m.find("at line 1, column");
+  if (line_one != std::string::npos) m.replace(line_one, 17, "at column");
+  return m;
 }
 
 std::vector<Placement> placements(const json& list, bool with_type) {

@@ -56,6 +56,7 @@ TEST_CASE("a line that is not JSON is reported with its number and the rest of t
   CHECK(r.result.log->events[1].line == 4);
   CHECK(r.warnings.find("\nrun.jsonl:3: warning: not JSON: ") != std::string::npos);
   CHECK(r.warnings.find("[json.exception") == std::string::npos);
+  CHECK(r.warnings.find("not JSON: parse error at column 25: syntax error") != std::string::npos);
 }
 
 TEST_CASE("a truncated last line, as a crashed run leaves it, is reported and the lines before it kept") {
