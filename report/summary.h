@@ -1,0 +1,45 @@
+// The numbers a reader of a run wants first: who had goals, who was
+// comforted and in time, which windows were missed, how failures were
+// repaired.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "report/event_log.h"
+
+namespace alplan::report {
+
+struct SeniorSummary {
+  std::string senior;
+  int goals = 0;
+  int comforted = 0;
+  int within_window = 0;
+  int windows_missed = 0;
+};
+
+struct StrategySummary {
+  std::string strategy;
+  int attempts = 0;
+  int repaired = 0;
+  double seconds = 0;  // planning time of its attempts, summed
+};
+
+struct RunSummary {
+  double end_time = 0;  // the last event's time
+  int plans = 0;
+  int seniors_with_goals = 0;
+  int goals = 0;
+  int comforted = 0;
+  int within_window = 0;
+  int windows_missed = 0;
+  int failures = 0;
+  int foreseen_failures = 0;
+  int explanations = 0;
+  std::vector<SeniorSummary> seniors;      // those the log mentions, by name
+  std::vector<StrategySummary> repairs;    // by strategy name
+};
+
+RunSummary summarize(const EventLog& log);
+
+}  // namespace alplan::report

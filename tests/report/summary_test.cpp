@@ -1,0 +1,64 @@
+#include "report/summary.h"
+
+#include <catch2/catch.hpp>
+
+#include <sstream>
+
+using namespace alplan::report;
+
+namespace {
+
+EventLog log_of(const std::string& text) {
+  std::istringstream in(text);
+  std::ostringstream warnings;
+  ReadResult r = read_event_log(in, "run.jsonl", warnings);
+  REQUIRE(r.log);
+  return *r.log;
+}
+
+}  // namespace
+
+TEST_CASE("the summary counts goals, comforted seniors, windows, failures and repairs by strategy") {
+  const EventLog log = log_of(
+      R"J({"type":"observation","time":0,"what":"home","home":{"seniors":[{"name":"senior1"},{"name":"senior2"},{"name":"senior3"}]}})J" "\n"
+      R"J({"type":"goal","time":1,"senior":"senior1","goal":"(cheerful senior1)","window_end":50})J" "\n"
+      R"J({"type":"goal","time":2,"senior":"senior2","goal":"(calm senior2)","window_end":40})J" "\n"
+      R"J({"type":"goal","time":60,"senior":"senior1","goal":"(calm senior1)","window_end":90})J" "\n"
+      R"J({"type":"plan","time":1,"plan_id":1,"reason":"initial","steps":[]})J" "\n"
+      R"J({"type":"failure","time":10,"robot":"robot1","foreseen":false})J" "\n"
+      R"J({"type":"failure","time":20,"robot":"robot1","foreseen":true})J" "\n"
+      R"J({"type":"failure","time":30})J" "\n"
+      R"J({"type":"repair","time":10.5,"strategy":"substitute","repaired":true,"seconds":0.25,"plan_id":2})J" "\n"
+      R"J({"type":"repair","time":20.5,"strategy":"replan","repaired":false,"seconds":1.5,"plan_id":null})J" "\n"
+      R"J({"type":"repair","time":30.5,"strategy":"replan","repaired":true,"seconds":0.5,"plan_id":3})J" "\n"
+      R"J({"type":"repair","time":31})J" "\n"
+      R"J({"type":"comforted","time":45,"senior":"senior1","within_window":true})J" "\n"
+      R"J({"type":"window_missed","time":40,"senior":"senior2"})J" "\n"
+      R"J({"type":"comforted","time":95,"senior":"senior1","within_window":false})J" "\n"
+      R"J({"type":"explanation","time":95,"why":"w","what":"x","how":"y"})J" "\n");
+  const RunSummary s = summarize(log);
+  CHECK(s.end_time == 95);
+  CHECK(s.plans == 1);
+  CHECK(s.seniors_with_goals == 2);
+  CHECK(s.goals == 3);
+  CHECK(s.comforted == 2);
+  CHECK(s.within_window == 1);
+  CHECK(s.windows_missed == 1);
+  CHECK(s.failures == 3);
+  CHECK(s.foreseen_failures == 1);
+  CHECK(s.explanations == 1);
+  REQUIRE(s.seniors.size() == 3);  // senior3, in the home but without events, is listed too
+  CHECK(s.seniors[0].senior == "senior1");
+  CHECK(s.seniors[0].goals == 2);
+  CHECK(s.seniors[0].within_window == 1);
+  CHECK(s.seniors[1].windows_missed == 1);
+  CHECK(s.seniors[2].goals == 0);
+  REQUIRE(s.repairs.size() == 3);
+  CHECK(s.repairs[0].strategy == "(unnamed)");
+  CHECK(s.repairs[1].strategy == "replan");
+  CHECK(s.repairs[1].attempts == 2);
+  CHECK(s.repairs[1].repaired == 1);
+  CHECK(s.repairs[1].seconds == Approx(2.0));
+  CHECK(s.repairs[2].strategy == "substitute");
+  CHECK(s.repairs[2].repaired == 1);
+}
