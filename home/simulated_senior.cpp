@@ -68,7 +68,7 @@ std::vector<perception::StressWindow> SimulatedSenior::readings_until(double t) 
     const bool stressed = episode_at(start) != nullptr;
     perception::RecordingConditions conditions;
     conditions.sample_rate_hz = options_.sample_rate_hz;
-    conditions.duration_s = options_.chunk_s + window;
+    conditions.duration_s = options_.chunk_s + window + 5.0;  // the core closes a window a hop later
     const perception::SubjectProfile body = stressed ? perception::under_stress(profile_, response_) : profile_;
     const perception::SimulatedRecording recording = pulse_.simulate(body, conditions);
     for (perception::StressWindow w : perception::stress_windows(recording.recording)) {

@@ -1,0 +1,127 @@
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <set>
+#include <sstream>
+
+#include "domains/pddl_files.h"
+#include "home/event_log.h"
+#include "home/home_map.h"
+#include "home/home_run.h"
+#include "home/simulated_senior.h"
+#include "tests/support/test_paths.h"
+
+namespace alplan::home {
+namespace {
+
+const std::string kAssistedLiving = test::source_dir() + "/domains/assisted_living";
+
+HomeSettings short_run() {
+  HomeSettings s = default_home_settings(kAssistedLiving);
+  s.until = 900.0;
+  s.script = {{"senior1", 300.0, "terrified"}, {"senior3", 330.0, "bored"}};
+  return s;
+}
+
+std::size_t count(const std::vector<LogEvent>& events, const std::string& type) {
+  return static_cast<std::size_t>(
+      std::count_if(events.begin(), events.end(), [&](const LogEvent& e) { return e.type == type; }));
+}
+
+}  // namespace
+
+TEST_CASE("the event log names a malformed line and keeps the rest", "[home]") {
+  std::istringstream in(R"({"type":"goal","time":1,"senior":"senior1"}
+{"type":"plan","time":2
+not json at all
+{"time":3}
+{"type":"comforted","time":4,"senior":"senior1"})");
+  const LogReading r = read_event_log(in, "run.jsonl");
+  REQUIRE(r.events.size() == 2);
+  CHECK(r.lines == std::vector<std::size_t>{1, 5});
+  REQUIRE(r.warnings.size() == 3);
+  CHECK(r.warnings[0].rfind("run.jsonl:2: not JSON", 0) == 0);
+  CHECK(r.warnings[1].rfind("run.jsonl:3: not JSON", 0) == 0);
+  CHECK(r.warnings[2].rfind("run.jsonl:4: not an event", 0) == 0);
+  std::istringstream nothing("garbage\n");
+  CHECK_THROWS_AS(read_event_log(nothing, "bad.jsonl"), LogError);
+  CHECK_THROWS_AS(read_event_log("/nonexistent/run.jsonl"), LogError);
+}
+
+TEST_CASE("the home's map is read off its problem", "[home]") {
+  const domains::LoadedFiles files = domains::load_pddl(kAssistedLiving + "/domain.pddl", kAssistedLiving + "/home.pddl");
+  const HomeMap map = read_home_map(*files.problem);
+  CHECK(map.seniors.size() == 8);
+  CHECK(map.robots.size() == 2);
+  CHECK(map.rooms.size() == 13);
+  CHECK(map.connections.size() == 12);  // a tree: each path once
+  std::set<std::pair<double, double>> places;
+  for (const Room& r : map.rooms) places.insert({r.x, r.y});
+  CHECK(places.size() == map.rooms.size());  // no two rooms drawn on each other
+  CHECK(map.has_senior("senior8"));
+  CHECK_FALSE(map.has_robot("senior8"));
+}
+
+TEST_CASE("a scripted senior's episode lasts until the right remedy", "[home]") {
+  SimulatedSenior senior("senior1", 5, {}, {{100.0, "sad"}});
+  CHECK(senior.episode_at(50.0) == nullptr);
+  REQUIRE(senior.episode_at(150.0) != nullptr);
+  senior.remedied(200.0, "terrified");  // the wrong remedy
+  REQUIRE(senior.episode_at(1000.0) != nullptr);
+  senior.remedied(1000.0, "sad");
+  CHECK(senior.episode_at(1000.0 + 121.0) == nullptr);
+  // The wristband's windows come every 5 s across the simulated minutes.
+  const std::vector<perception::StressWindow> windows = senior.readings_until(180.0);
+  REQUIRE(windows.size() >= 30);
+  for (std::size_t i = 1; i < windows.size(); ++i) {
+    INFO("window ending at " << windows[i].end_s);
+    CHECK(windows[i].end_s - windows[i - 1].end_s == Approx(5.0));
+  }
+}
+
+TEST_CASE("a run of the home comforts its seniors and replays to the same events", "[home]") {
+  const HomeSettings settings = short_run();
+  EventLog log;
+  const HomeSummary summary = run_home(settings, log);
+  const std::vector<LogEvent>& events = log.events();
+  REQUIRE_FALSE(events.empty());
+  CHECK(events.front().type == "observation");
+  CHECK(events.front().payload["what"] == "home");
+  CHECK(count(events, "goal") >= 2);
+  CHECK(count(events, "plan") >= 1);
+  CHECK(count(events, "action_start") >= 2);
+  CHECK(count(events, "comforted") >= 2);
+  CHECK(summary.comforted >= 2);
+  // Boredom is decided over looks taken at different times.
+  const auto bored = std::find_if(events.begin(), events.end(), [](const LogEvent& e) {
+    return e.type == "goal" && e.senior == "senior3" && e.payload["emotion"] == "bored";
+  });
+  REQUIRE(bored != events.end());
+  std::set<double> look_times;
+  for (auto e = events.begin(); e != bored; ++e) {
+    if (e->type == "emotion" && e->senior == "senior3") look_times.insert(e->time);
+  }
+  CHECK(look_times.size() >= 3);
+
+  std::stringstream text;
+  for (const LogEvent& e : events) text << to_json(e).dump() << "\n";
+  const LogReading reading = read_event_log(text, "run.jsonl");
+  EventLog again;
+  run_home(HomeSettings::from_json(reading.events.front()["settings"]), again);
+  CHECK_FALSE(first_difference(reading, again.events()).has_value());
+
+  LogReading changed = reading;
+  changed.events[5]["time"] = changed.events[5]["time"].get<double>() + 1.0;
+  const auto difference = first_difference(changed, again.events());
+  REQUIRE(difference.has_value());
+  CHECK(difference->rfind("line 6 differs", 0) == 0);
+}
+
+TEST_CASE("a script naming a senior the home lacks is refused", "[home]") {
+  HomeSettings settings = short_run();
+  settings.script = {{"senior99", 10.0, "sad"}};
+  EventLog log;
+  CHECK_THROWS_AS(run_home(settings, log), std::invalid_argument);
+}
+
+}  // namespace alplan::home
