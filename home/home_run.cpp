@@ -35,7 +35,7 @@ LoadedRun load(const HomeSettings& s) {
     options.robots = s.generate_robots;
     if (s.generate_rooms > 0) options.rooms = s.generate_rooms;
     if (s.generate_objects > 0) options.objects = s.generate_objects;
-    options.stressed = 0;
+    options.stressed = 1;  // the generator wants one; calm_problem takes every emotion away
     options.seed = s.seed;
     const domains::GeneratedHome generated = domains::generate_home(options);
     domains::LoadedHome paper = domains::load_home(s.domains_dir, "home.pddl");
