@@ -11,17 +11,7 @@ work=$2
 here=$(cd "$(dirname "$0")" && pwd)
 python=/usr/bin/python3
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
-fail() { echo "FAIL: $*" >&2; exit 1; }
-expect() {
-  local code=$1 text=$2 out got
-  shift 2
-  set +e
-  out=$("$@" 2>&1)
-  got=$?
-  set -e
-  [ "$got" -eq "$code" ] || fail "$* exited $got, expected $code: $out"
-  grep -qF -- "$text" <<<"$out" || fail "$* output lacks '$text': $out"
-}
+. "$here/expect.sh"
 
 expect 0 "summary:" "$alplan" home --until 1500 --log run.jsonl
 "$python" - run.jsonl <<'PY'

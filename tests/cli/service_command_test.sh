@@ -6,20 +6,11 @@
 set -euo pipefail
 alplan=$1
 work=$2
+here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
 
-fail() { echo "FAIL: $*" >&2; [ -f serve.err ] && cat serve.err >&2; exit 1; }
-# expect CODE TEXT COMMAND...: exit code CODE and TEXT somewhere in the output.
-expect() {
-  local code=$1 text=$2 out got
-  shift 2
-  set +e
-  out=$("$@" 2>&1)
-  got=$?
-  set -e
-  [ "$got" -eq "$code" ] || fail "$* exited $got, expected $code: $out"
-  grep -qF -- "$text" <<<"$out" || fail "$* output lacks '$text': $out"
-}
+FAIL_LOG=serve.err
+. "$here/expect.sh"
 
 expect 0 "" "$alplan" wristband tokens --devices 3 --out tokens.txt
 [ "$(grep -c '^wb-0[123] [0-9a-f]\{32\} senior-0[123]$' tokens.txt)" -eq 3 ] || fail "tokens.txt: $(cat tokens.txt)"

@@ -2,6 +2,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "tests/report/log_of.h"
+
 #include <sstream>
 
 #include "report/chart_specs.h"
@@ -10,13 +12,7 @@ using namespace alplan::report;
 
 namespace {
 
-EventLog log_of(const std::string& text) {
-  std::istringstream in(text);
-  std::ostringstream warnings;
-  ReadResult r = read_event_log(in, "run.jsonl", warnings);
-  REQUIRE(r.log);
-  return *r.log;
-}
+using test::log_of;
 
 const char* kLog =
     R"J({"type":"observation","time":0,"what":"home","home":{"name":"<b>home</b>","rooms":[{"name":"a","x":0,"y":0},{"name":"b","x":4,"y":2}],"connections":[["a","b"]]},"settings":{"seed":7}})J" "\n"

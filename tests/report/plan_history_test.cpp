@@ -2,6 +2,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "tests/report/log_of.h"
+
 #include <algorithm>
 #include <sstream>
 
@@ -9,13 +11,7 @@ using namespace alplan::report;
 
 namespace {
 
-EventLog log_of(const std::string& text) {
-  std::istringstream in(text);
-  std::ostringstream warnings;
-  ReadResult r = read_event_log(in, "run.jsonl", warnings);
-  REQUIRE(r.log);
-  return *r.log;
-}
+using test::log_of;
 
 const PlanStep& step(const PlanHistory& h, int plan, const std::string& action) {
   const auto it = std::find_if(h.steps.begin(), h.steps.end(),

@@ -12,18 +12,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 python=/usr/bin/python3
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
 
-fail() { echo "FAIL: $*" >&2; exit 1; }
-# expect CODE TEXT COMMAND...: exit code CODE and TEXT somewhere in the output.
-expect() {
-  local code=$1 text=$2 out got
-  shift 2
-  set +e
-  out=$("$@" 2>&1)
-  got=$?
-  set -e
-  [ "$got" -eq "$code" ] || fail "$* exited $got, expected $code: $out"
-  grep -qF -- "$text" <<<"$out" || fail "$* output lacks '$text': $out"
-}
+. "$here/../cli/expect.sh"
 command -v chromium >/dev/null || fail "chromium is not installed; run scripts/setup"
 
 # Bad input: named, exit 2.

@@ -2,19 +2,15 @@
 
 #include <catch2/catch.hpp>
 
+#include "tests/report/log_of.h"
+
 #include <sstream>
 
 using namespace alplan::report;
 
 namespace {
 
-EventLog log_of(const std::string& text) {
-  std::istringstream in(text);
-  std::ostringstream warnings;
-  ReadResult r = read_event_log(in, "run.jsonl", warnings);
-  REQUIRE(r.log);
-  return *r.log;
-}
+using test::log_of;
 
 }  // namespace
 
