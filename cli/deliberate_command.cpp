@@ -14,7 +14,7 @@
 #include "cli/commands.h"
 #include "cli/deliberation_run.h"
 #include "cli/perceive_common.h"
-#include "perception/deliberation.h"
+#include "home/deliberation.h"
 #include "perception/ppg_simulator.h"
 #include "perception/simulated_stress_model.h"
 #include "perception/stress_features.h"
@@ -69,7 +69,7 @@ int run(const DeliberateOptions& o) {
   // Layer 1: stress.
   const perception::PpgRecording ppg = o.ppg.empty() ? simulated_senior(o) : perception::read_ppg_csv_file(o.ppg);
   perception::ClassifierStressDetector detector(stress_model(o), {});
-  const auto event = perception::first_stress_event(detector, o.senior, perception::stress_windows(ppg));
+  const auto event = home::first_stress_event(detector, o.senior, perception::stress_windows(ppg));
   if (!event) {
     std::printf("[stress] %s's wristband: not stressed over %.0f s of readings; nothing to do\n", o.senior.c_str(),
                 ppg.time_s.empty() ? 0.0 : ppg.time_s.back());

@@ -7,15 +7,11 @@
 #include <iostream>
 #include <memory>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "cli/commands.h"
 #include "cli/paper_format.h"
 #include "cli/perceive_common.h"
 #include "domains/mission_run.h"
-#include "perception/camera_object_recognizer.h"
-#include "perception/deliberation.h"
-#include "perception/pretrained_emotion_recognizer.h"
+#include "perception/emotion.h"
 
 namespace alplan::cli {
 namespace {
@@ -65,103 +61,59 @@ void add_deliberation_options(CLI::App& cmd, DeliberationSettings& s) {
   cmd.add_option("--strategy", s.strategy, "Repair strategy: replan, substitute, suggest, patch, adapt");
 }
 
-Deliberator::Deliberator(DeliberationSettings settings)
-    : settings_(std::move(settings)),
-      home_(domains::load_home(settings_.dir, settings_.problem)),
-      unavailable_(scripted_events(settings_.unavailable)) {
-  if (settings_.emotion.empty() && settings_.face.empty()) {
-    throw CommandInputError("give the seniors' face (--face IMAGE) or the emotion (--emotion NAME)");
-  }
-  if (!settings_.emotion.empty() && !perception::emotion_from_name(settings_.emotion)) {
-    throw CommandInputError("--emotion " + settings_.emotion + ": not an emotion (terrified, sad, bored, happy, ...)");
-  }
-  if (settings_.emotion.empty()) faces_ = std::make_unique<perception::PretrainedEmotionRecognizer>();
-  if (!settings_.camera.empty()) {
-    if (!std::filesystem::is_directory(settings_.camera)) {
-      throw CommandInputError(settings_.camera + ": not a folder of camera views");
-    }
-    images_ = std::make_unique<perception::ImageObjectRecognizer>(std::make_shared<perception::CocoDetector>(), nullptr,
-                                                                  home_.ontology);
+namespace {
+
+home::DeliberatorSettings library_settings(const DeliberationSettings& s) {
+  home::DeliberatorSettings out;
+  out.dir = s.dir;
+  out.problem = s.problem;
+  out.face = s.face;
+  out.emotion = s.emotion;
+  out.looks = s.looks;
+  out.camera = s.camera;
+  out.events = scripted_events(s.unavailable);
+  out.strategy = s.strategy;
+  return out;
+}
+
+// The library's refusals of settings are the command's input errors.
+home::Deliberator make(const DeliberationSettings& settings) {
+  try {
+    return home::Deliberator(library_settings(settings));
+  } catch (const std::invalid_argument& e) {
+    throw CommandInputError(e.what());
   }
 }
 
-std::optional<perception::EmotionReading> Deliberator::emotion() {
-  const DeliberationSettings& o = settings_;
-  if (!o.emotion.empty()) {
-    const perception::Emotion e = *perception::emotion_from_name(o.emotion);
-    std::printf("[emotion] given on the command line: %s\n", std::string(perception::emotion_name(e)).c_str());
-    return perception::EmotionReading{e, 1.0f, true};
-  }
-  // The face is read at every event: it is what the robot sees now.
-  if (!std::filesystem::is_regular_file(o.face)) throw CommandInputError(o.face + ": no such file");
-  const cv::Mat image = cv::imread(o.face, cv::IMREAD_COLOR);
-  if (image.empty()) throw CommandInputError(o.face + ": cannot read an image from this file");
-  const auto reading = perception::read_face(*faces_, image, false);
-  if (!reading) {
-    std::printf("[emotion] no face in %s\n", o.face.c_str());
-  } else {
-    std::printf("[emotion] face in %s: %s %.3f\n", o.face.c_str(), std::string(perception::emotion_name(reading->top)).c_str(),
-                static_cast<double>(reading->score));
-  }
-  return reading;
-}
+}  // namespace
+
+Deliberator::Deliberator(const DeliberationSettings& settings) : deliberator_(make(settings)) {}
 
 int Deliberator::on_stress(const std::string& senior, const perception::StressState& stress) {
-  const DeliberationSettings& o = settings_;
-  // Layer 2: emotion and goal.
-  const auto emotion = this->emotion();
-  if (!emotion) return kExitOk;
-  perception::EmotionGoalGenerator generator;
-  std::optional<perception::GeneratedGoal> goal;
-  for (int look = 0; look < std::max(1, o.looks) && !goal; ++look) goal = generator.generate(senior, stress, *emotion);
-  if (!goal) {
-    std::printf("[goal] none: %s generates no goal for a stressed senior\n", std::string(perception::emotion_name(emotion->top)).c_str());
+  home::Deliberation d;
+  try {
+    d = deliberator_.on_stress(senior, stress);
+  } catch (const std::invalid_argument& e) {
+    throw CommandInputError(e.what());
+  }
+  for (const std::string& note : d.notes) std::printf("%s\n", note.c_str());
+  if (!d.emotion) return kExitOk;  // no face seen
+  if (!d.goal) {
+    std::printf("[goal] none: %s generates no goal for a stressed senior\n",
+                std::string(perception::emotion_name(d.emotion->top)).c_str());
     return kExitOk;
   }
-  std::printf("[goal] (%s %s): %s, decided by %s\n", goal->goal.atom.name.c_str(), senior.c_str(), goal->motivation.c_str(),
-              goal->decided_by.c_str());
-
-  // Layers 3 and 4: plan, act, monitor, repair.
-  domains::MissionInput input;
-  input.domain = &home_.domain;
-  input.problem = perception::reformulate_for_goal(*home_.files.problem, *goal, 0.0);
-  input.events = unavailable_;
-  input.motivation = goal->motivation;
-  input.seniors = {senior};
-  input.ontology = &home_.ontology;
-  // A new camera recogniser per run: the names it gives belong to one mission.
-  std::unique_ptr<perception::FolderCamera> camera;
-  std::unique_ptr<perception::CameraObjectRecognizer> eyes;
-  if (images_) {
-    camera = std::make_unique<perception::FolderCamera>(o.camera);
-    eyes = std::make_unique<perception::CameraObjectRecognizer>(*camera, *images_);
-    input.recognizer = eyes.get();
-    // What the views show is really there: the simulated world gets those
-    // objects from the start (no IoT sensor reports them, so the planner
-    // knows them only once the camera is asked). The recogniser remembers
-    // the names it gives, so the monitor's look later names them alike.
-    const repair::WorldState before = repair::initial_world(input.problem);
-    for (const auto& entry : std::filesystem::directory_iterator(o.camera)) {
-      if (!entry.is_directory()) continue;
-      for (const repair::RecognizedObject& seen : eyes->recognize(before, entry.path().filename().string())) {
-        input.events.push_back(repair::object_appears(0.0, seen));
-      }
-    }
-  }
-  domains::ScenarioOptions options;
-  options.assisted_living_dir = o.dir;
-  options.strategy = o.strategy;
-  try {
-    const domains::MissionRun run = domains::run_mission(input, options);
-    print_mission(run);
-    return run.report.goal_reached ? kExitOk : kExitInvalid;
-  } catch (const domains::NoInitialPlan& e) {
+  std::printf("[goal] (%s %s): %s, decided by %s\n", d.goal->goal.atom.name.c_str(), senior.c_str(),
+              d.goal->motivation.c_str(), d.goal->decided_by.c_str());
+  if (!d.run) {
     // Deliberation ends here, explained: the goal perception chose has no
     // plan in this home, so the robot does nothing rather than fail.
-    std::cout << "\n[plan] no plan: " << e.what() << "\n[outcome] the robot cannot comfort "
-              << input.seniors.front() << " in this home: " << input.motivation << "\n";
+    std::cout << "\n[plan] no plan: " << d.no_plan << "\n[outcome] the robot cannot comfort " << senior << " in this home: "
+              << d.goal->motivation << "\n";
     return kExitInvalid;
   }
+  print_mission(*d.run);
+  return d.comforted() ? kExitOk : kExitInvalid;
 }
 
 }  // namespace alplan::cli

@@ -1,19 +1,14 @@
-// Layers 2-4 of the paper's deliberation (Fig. 3) once a senior is known to
-// be stressed: the face (or a given emotion) through the emotion recogniser,
-// the emotion to a goal, the goal into the home's planning problem, then
-// plan, act, monitor and repair, with a camera folder as the object
-// recogniser. Shared by `alplan deliberate` (stress from one recording) and
-// `alplan serve --deliberate` (stress events from the wristbands' service).
+// The deliberation's options and printing, shared by `alplan deliberate`
+// (stress from one recording) and `alplan serve --deliberate` (stress
+// events from the wristbands' service); the deliberation itself is
+// home/deliberator.h.
 #pragma once
 
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "domains/mission_run.h"
-#include "perception/goal_generator.h"
-#include "perception/object_recognition.h"
-#include "perception/pretrained_emotion_recognizer.h"
+#include "home/deliberator.h"
 #include "perception/stress_detector.h"
 
 namespace CLI {
@@ -37,16 +32,14 @@ struct DeliberationSettings {
 // --unavailable, --strategy.
 void add_deliberation_options(CLI::App& command, DeliberationSettings& settings);
 
-// The home, the emotion network and the object detector are loaded once,
-// when the deliberator is made, so that a service deliberating on event
-// after event reads no model and no PDDL file again; each run starts from
-// the home's problem file.
+// The CLI's face of home::Deliberator: prints what each stress event led
+// to as `alplan deliberate` always has.
 class Deliberator {
  public:
   // Throws CommandInputError (or the loaders' errors, naming the file) on
   // bad settings: no face or emotion, an unreadable home, a missing camera
   // folder, a malformed --unavailable.
-  explicit Deliberator(DeliberationSettings settings);
+  explicit Deliberator(const DeliberationSettings& settings);
 
   // Exit 0 when the senior is comforted or the emotion asks for nothing, 1
   // when the run ends with an explained failure; throws CommandInputError
@@ -54,13 +47,7 @@ class Deliberator {
   int on_stress(const std::string& senior, const perception::StressState& stress);
 
  private:
-  std::optional<perception::EmotionReading> emotion();
-
-  DeliberationSettings settings_;
-  domains::LoadedHome home_;
-  std::vector<repair::ExogenousEvent> unavailable_;
-  std::unique_ptr<perception::PretrainedEmotionRecognizer> faces_;   // with --face
-  std::unique_ptr<perception::ImageObjectRecognizer> images_;        // with --camera
+  home::Deliberator deliberator_;
 };
 
 }  // namespace alplan::cli

@@ -1,5 +1,5 @@
 // The online deliberation of the paper's Fig. 3 for one senior, over the
-// interfaces only: the wristband's readings go to a StressDetector (layer
+// interfaces only (perception senses, this decides what to do with it): the wristband's readings go to a StressDetector (layer
 // 1); on a stress event the senior's face goes to an EmotionRecognizer and
 // the emotion to a GoalGenerator (layer 2); the goal reformulates the
 // planning problem (layer 3), which the caller plans and executes with the
@@ -16,7 +16,14 @@
 #include "perception/stress_detector.h"
 #include "perception/stress_features.h"
 
-namespace alplan::perception {
+namespace alplan::home {
+
+using perception::EmotionReading;
+using perception::EmotionRecognizer;
+using perception::GeneratedGoal;
+using perception::StressDetector;
+using perception::StressState;
+using perception::StressWindow;
 
 struct StressEvent {
   std::string senior;
@@ -44,4 +51,4 @@ struct WindowDurations {
 pddl::Problem reformulate_for_goal(const pddl::Problem& problem, const GeneratedGoal& goal, double now,
                                    const WindowDurations& windows = {});
 
-}  // namespace alplan::perception
+}  // namespace alplan::home

@@ -1,0 +1,114 @@
+#include "home/deliberator.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "home/deliberation.h"
+#include "perception/coco_detector.h"
+
+namespace alplan::home {
+namespace {
+
+std::string formatted(const char* format, const std::string& a, const std::string& b, double score) {
+  char buffer[512];
+  std::snprintf(buffer, sizeof buffer, format, a.c_str(), b.c_str(), score);
+  return buffer;
+}
+
+}  // namespace
+
+Deliberator::Deliberator(DeliberatorSettings settings)
+    : settings_(std::move(settings)), home_(domains::load_home(settings_.dir, settings_.problem)) {
+  if (settings_.emotion.empty() && settings_.face.empty()) {
+    throw std::invalid_argument("give the seniors' face (--face IMAGE) or the emotion (--emotion NAME)");
+  }
+  if (!settings_.emotion.empty() && !perception::emotion_from_name(settings_.emotion)) {
+    throw std::invalid_argument("--emotion " + settings_.emotion + ": not an emotion (terrified, sad, bored, happy, ...)");
+  }
+  if (settings_.emotion.empty()) faces_ = std::make_unique<perception::PretrainedEmotionRecognizer>();
+  if (!settings_.camera.empty()) {
+    if (!std::filesystem::is_directory(settings_.camera)) {
+      throw std::invalid_argument(settings_.camera + ": not a folder of camera views");
+    }
+    images_ = std::make_unique<perception::ImageObjectRecognizer>(std::make_shared<perception::CocoDetector>(), nullptr,
+                                                                  home_.ontology);
+  }
+}
+
+Deliberator::~Deliberator() = default;
+
+std::optional<perception::EmotionReading> Deliberator::look(std::vector<std::string>& notes) {
+  const DeliberatorSettings& o = settings_;
+  if (!o.emotion.empty()) {
+    const perception::Emotion e = *perception::emotion_from_name(o.emotion);
+    notes.push_back("[emotion] given on the command line: " + std::string(perception::emotion_name(e)));
+    return perception::EmotionReading{e, 1.0f, true};
+  }
+  if (!std::filesystem::is_regular_file(o.face)) throw std::invalid_argument(o.face + ": no such file");
+  const cv::Mat image = cv::imread(o.face, cv::IMREAD_COLOR);
+  if (image.empty()) throw std::invalid_argument(o.face + ": cannot read an image from this file");
+  const auto reading = read_face(*faces_, image, false);
+  if (!reading) {
+    notes.push_back("[emotion] no face in " + o.face);
+  } else {
+    notes.push_back(formatted("[emotion] face in %s: %s %.3f", o.face, std::string(perception::emotion_name(reading->top)),
+                              static_cast<double>(reading->score)));
+  }
+  return reading;
+}
+
+domains::MissionInput Deliberator::mission_input(const std::string& senior, const perception::GeneratedGoal& goal) {
+  domains::MissionInput input;
+  input.domain = &home_.domain;
+  input.problem = reformulate_for_goal(*home_.files.problem, goal, 0.0);
+  input.events = settings_.events;
+  input.motivation = goal.motivation;
+  input.seniors = {senior};
+  input.ontology = &home_.ontology;
+  eyes_.reset();
+  camera_.reset();
+  if (!images_) return input;
+  camera_ = std::make_unique<perception::FolderCamera>(settings_.camera);
+  eyes_ = std::make_unique<perception::CameraObjectRecognizer>(*camera_, *images_);
+  input.recognizer = eyes_.get();
+  // What the views show is really there: the simulated world gets those
+  // objects from the start (no IoT sensor reports them, so the planner
+  // knows them only once the camera is asked). The recogniser remembers
+  // the names it gives, so the monitor's look later names them alike.
+  const repair::WorldState before = repair::initial_world(input.problem);
+  for (const auto& entry : std::filesystem::directory_iterator(settings_.camera)) {
+    if (!entry.is_directory()) continue;
+    for (const repair::RecognizedObject& seen : eyes_->recognize(before, entry.path().filename().string())) {
+      input.events.push_back(repair::object_appears(0.0, seen));
+    }
+  }
+  return input;
+}
+
+Deliberation Deliberator::on_stress(const std::string& senior, const perception::StressState& stress) {
+  Deliberation out;
+  // Layer 2: a look at the face, then another while no goal is decided
+  // (the boredom rule wants neutral faces at several looks); a given
+  // emotion is one reading, not one repeated.
+  const int looks = settings_.emotion.empty() ? std::max(1, settings_.looks) : 1;
+  for (int look = 0; look < looks && !out.goal; ++look) {
+    out.emotion = this->look(out.notes);
+    if (!out.emotion) return out;
+    out.goal = generator_.generate(senior, stress, *out.emotion);
+  }
+  if (!out.goal) return out;
+  domains::ScenarioOptions options;
+  options.assisted_living_dir = settings_.dir;
+  options.strategy = settings_.strategy;
+  try {
+    out.run = domains::run_mission(mission_input(senior, *out.goal), options);
+  } catch (const domains::NoInitialPlan& e) {
+    out.no_plan = e.what();
+  }
+  return out;
+}
+
+}  // namespace alplan::home
