@@ -31,6 +31,7 @@ void add_deliberate_command(CLI::App& app, int& exit_code);
 void add_bench_repair_command(CLI::App* bench, int& exit_code);
 void add_bench_service_command(CLI::App* bench, int& exit_code);
 void add_bench_soak_command(CLI::App* bench, int& exit_code);
+void add_bench_home_command(CLI::App* bench, int& exit_code);
 void add_serve_command(CLI::App& app, int& exit_code);
 void add_wristband_command(CLI::App& app, int& exit_code);
 void add_home_command(CLI::App& app, int& exit_code);  // home and replay

@@ -27,5 +27,6 @@ int main(int argc, char** argv) {
   }
   app.get_subcommand("bench")->add_subcommand("service", alplan::cli::kBenchServiceHelp)->allow_extras();
   app.get_subcommand("bench")->add_subcommand("soak", alplan::cli::kBenchSoakHelp)->allow_extras();
+  app.get_subcommand("bench")->add_subcommand("home", alplan::cli::kBenchHomeHelp)->allow_extras();
   return alplan::cli::parse_command_line(app, argc, argv, exit_code);
 }

@@ -28,6 +28,7 @@ extern "C" __attribute__((visibility("default"))) int alplan_perception_main(int
   bench->require_subcommand(1);
   alplan::cli::add_bench_service_command(bench, exit_code);
   alplan::cli::add_bench_soak_command(bench, exit_code);
+  alplan::cli::add_bench_home_command(bench, exit_code);
   return alplan::cli::parse_command_line(app, argc, argv, exit_code);
 }
 

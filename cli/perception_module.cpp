@@ -45,7 +45,9 @@ bool runs_in_perception_module(int argc, char** argv) {
   for (const ModuleCommand& c : kPerceptionCommands) {
     if (first == c.name) return true;
   }
-  return first == "bench" && argc > 2 && (std::string(argv[2]) == "service" || std::string(argv[2]) == "soak");
+  if (first != "bench" || argc < 3) return false;
+  const std::string second = argv[2];
+  return second == "service" || second == "soak" || second == "home";
 }
 
 int run_perception_command(int argc, char** argv) {

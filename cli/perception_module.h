@@ -38,11 +38,13 @@ inline constexpr ModuleCommand kPerceptionCommands[] = {
 inline constexpr const char* kHomeHelp = kPerceptionCommands[4].help;
 inline constexpr const char* kReplayHelp = kPerceptionCommands[5].help;
 
-// True for the module's commands, and for `bench service` and `bench soak`
+// True for the module's commands, and for `bench service`, `bench soak` and `bench home`
 // (the signal service's benchmarks; the others run in alplan itself).
 bool runs_in_perception_module(int argc, char** argv);
 inline constexpr const char* kBenchServiceHelp =
     "Load benchmark of the signal service: simulated wristbands, readings/s held and latency";
+inline constexpr const char* kBenchHomeHelp =
+    "The running home at scale: planning latency by reason, goals comforted within their windows";
 inline constexpr const char* kBenchSoakHelp =
     "Soak benchmark of the signal service: wristbands for minutes with commit failures, restarts, stalled clients";
 

@@ -244,6 +244,7 @@ class HomeRun {
     ++summary_.plans;
     summary_.merges += reason == "merge";
     summary_.planning_seconds.push_back(seconds);
+    summary_.planning_by_reason[reason].push_back(seconds);
     // The world changes against the plans the deliberation makes for new
     // goals; a repair's plan meets what the world does next, not a draw of
     // its own (else failures would beget failures without end).
@@ -338,6 +339,7 @@ class HomeRun {
       explain(t, motivation, "no plan reaches the goals in course in time",
               planned.message + "; the seniors are looked at again when their windows close");
       summary_.planning_seconds.push_back(planned.seconds);
+      summary_.planning_by_reason["none"].push_back(planned.seconds);
       for (PerceivedGoal& g : active_) unplannable_.push_back(std::move(g));
       active_.clear();
       return t + settings_.step_s;

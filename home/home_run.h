@@ -24,6 +24,7 @@ struct HomeSummary {
   std::map<std::string, std::size_t> repairs;  // by strategy, repaired
   std::size_t repairs_failed = 0;
   std::vector<double> planning_seconds;  // every plan made: initial, merged, repaired
+  std::map<std::string, std::vector<double>> planning_by_reason;  // initial, merge, repair, none (no plan found)
   // Scored against the simulation's truth.
   std::size_t episodes = 0, false_alarms = 0;
   double end_time = 0.0;

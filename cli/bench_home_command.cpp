@@ -1,0 +1,67 @@
+// alplan bench home [--seniors N] [--robots N] [--rooms N] [--objects N]
+//                   [--hours H] [--seed S] [--planner-expansions N] [--out DIR]
+// The running home at scale (home/home_bench.h): a generated home run for
+// simulated hours with seniors stressed at random; prints the planning
+// latency by reason and the share comforted within their windows as a
+// Markdown table, and writes DIR/bench-home.json.
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "cli/commands.h"
+#include "cli/perceive_common.h"
+#include "cli/perception_module.h"
+#include "home/home_bench.h"
+
+namespace alplan::cli {
+namespace {
+
+struct BenchHomeOptions {
+  home::HomeSettings settings;
+  double hours = 8.0;
+  std::string out;
+};
+
+int run_bench_home(BenchHomeOptions& o) {
+  o.settings.until = o.hours * 3600.0;
+  const home::HomeBenchResult result = home::run_home_bench(o.settings);
+  home::print_home_bench(std::cout, o.settings, result);
+  if (!o.out.empty()) {
+    std::filesystem::create_directories(o.out);
+    const std::string path = o.out + "/bench-home.json";
+    std::ofstream(path) << result.json(o.settings).dump(2) << "\n";
+    std::cout << "wrote " << path << "\n";
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_bench_home_command(CLI::App* bench, int& exit_code) {
+  auto o = std::make_shared<BenchHomeOptions>();
+  home::HomeSettings& s = o->settings;
+  s.domains_dir = ALPLAN_ASSISTED_LIVING_DIR;
+  s.generate_seniors = 40;
+  s.generate_robots = 4;
+  s.generate_rooms = 50;
+  s.generate_objects = 400;
+  CLI::App* cmd = bench->add_subcommand("home", kBenchHomeHelp);
+  cmd->add_option("--seniors", s.generate_seniors, "Seniors of the generated home")->check(CLI::Range(1, 1000));
+  cmd->add_option("--robots", s.generate_robots, "Robots")->check(CLI::Range(1, 100));
+  cmd->add_option("--rooms", s.generate_rooms, "Rooms besides corridors")->check(CLI::Range(4, 1000));
+  cmd->add_option("--objects", s.generate_objects, "Portable objects")->check(CLI::Range(1, 10000));
+  cmd->add_option("--hours", o->hours, "Simulated hours")->check(CLI::Range(0.01, 168.0));
+  cmd->add_option("--seed", s.seed, "Seed of the home, the seniors and the failures");
+  cmd->add_option("--episodes-per-hour", s.seniors.episodes_per_hour, "Stress episodes per senior and hour")
+      ->check(CLI::Range(0.0, 60.0));
+  cmd->add_option("--planner-expansions", s.planner_expansions,
+                  "Anytime improvement: expansions per weight; 0: the first plan");
+  cmd->add_option("--strategy", s.strategy, "Repair strategy");
+  cmd->add_option("--out", o->out, "Write bench-home.json here");
+  cmd->callback([o, &exit_code] { exit_code = guarded([&] { return run_bench_home(*o); }, "bench home"); });
+}
+
+}  // namespace alplan::cli
