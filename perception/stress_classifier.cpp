@@ -77,6 +77,12 @@ StressClassifier StressClassifier::train(const std::vector<StressExample>& examp
     for (std::size_t i = 0; i < width; ++i) c.mean_[i] += e.features[i];
   }
   for (float& m : c.mean_) m /= static_cast<float>(examples.size());
+  c.calm_centre_.assign(width, 0.0f);
+  for (const StressExample& e : examples) {
+    if (e.stressed != 0) continue;
+    for (std::size_t i = 0; i < width; ++i) c.calm_centre_[i] += e.features[i];
+  }
+  for (float& m : c.calm_centre_) m /= static_cast<float>(per_class[0]);
   for (const StressExample& e : examples) {
     for (std::size_t i = 0; i < width; ++i) c.deviation_[i] += (e.features[i] - c.mean_[i]) * (e.features[i] - c.mean_[i]);
   }
@@ -112,6 +118,7 @@ void StressClassifier::save(const std::filesystem::path& file) const {
   fs << "features" << feature_set_name(options_.features);
   fs << "mean" << mean_;
   fs << "deviation" << deviation_;
+  fs << "calm_mean" << calm_centre_;
   fs << "model" << "{";
   model_->model->write(fs);
   fs << "}";
@@ -138,9 +145,11 @@ StressClassifier StressClassifier::load(const std::filesystem::path& file) {
   }
   fs["mean"] >> c.mean_;
   fs["deviation"] >> c.deviation_;
+  if (!fs["calm_mean"].empty()) fs["calm_mean"] >> c.calm_centre_;
   if (c.mean_.size() != feature_names(c.options_.features).size() || c.deviation_.size() != c.mean_.size()) {
     fail("the standardisation does not match the feature set");
   }
+  if (!c.calm_centre_.empty() && c.calm_centre_.size() != c.mean_.size()) fail("the calm mean does not match the feature set");
   cv::Ptr<cv::ml::StatModel> model;
   if (c.options_.kind == StressModelKind::Svm) {
     model = cv::ml::SVM::create();

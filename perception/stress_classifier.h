@@ -51,11 +51,15 @@ class StressClassifier {
   static StressClassifier load(const std::filesystem::path& file);
 
   const StressClassifierOptions& options() const { return options_; }
+  // The mean of the calm training windows (raw features): where a senior's
+  // own calm baseline is moved to (stress_baseline.h). Empty for a model
+  // file saved before it was kept.
+  const std::vector<float>& calm_centre() const { return calm_centre_; }
 
  private:
   struct Model;
   StressClassifierOptions options_;
-  std::vector<float> mean_, deviation_;
+  std::vector<float> mean_, deviation_, calm_centre_;
   std::shared_ptr<const Model> model_;  // immutable once trained: copies share it
 };
 

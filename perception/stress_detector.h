@@ -10,6 +10,12 @@
 // most `leave_fraction` do (hysteresis, so one noisy window does not toggle
 // the state). Windows flagged for motion or without a heart rate are not
 // voted on; they are counted.
+//
+// By default each senior's first usable readings are a calibration: they
+// make the senior's own calm baseline (stress_baseline.h says why) and are
+// not decided on; later readings are classified relative to it. Without it
+// (`StressCalibration{0}`) calm seniors whose resting rate is high raise
+// false stress events (perception/README.md, "False alarms", measures both).
 #pragma once
 
 #include <cstddef>
@@ -20,6 +26,7 @@
 #include <string>
 
 #include "firmware/core/window_features.h"
+#include "perception/stress_baseline.h"
 #include "perception/stress_classifier.h"
 
 namespace alplan::perception {
@@ -29,6 +36,7 @@ struct StressState {
   double stressed_fraction = 0.0;  // of the votes in the current average
   std::size_t votes = 0;           // usable readings in the average
   std::size_t rejected = 0;        // readings not voted on so far (motion, no rate)
+  bool calibrating = false;        // the senior's baseline is still being learned: no decision yet
 };
 
 struct StressObservation {
@@ -62,7 +70,10 @@ struct StressSmoothing {
 
 class ClassifierStressDetector : public StressDetector {
  public:
-  ClassifierStressDetector(StressClassifier classifier, const StressSmoothing& smoothing);
+  // Throws std::invalid_argument for inconsistent smoothing, or a
+  // calibration with a model that keeps no calm centre (an old model file).
+  ClassifierStressDetector(StressClassifier classifier, const StressSmoothing& smoothing,
+                           const StressCalibration& calibration = {});
 
   StressObservation observe(const std::string& senior, const firmware::WindowFeatures& reading) override;
   std::optional<StressState> state(const std::string& senior) const override;
@@ -73,9 +84,13 @@ class ClassifierStressDetector : public StressDetector {
   struct Senior {
     std::deque<int> votes;
     StressState state;
+    StressBaseline baseline;
   };
+  Senior& record_of(const std::string& name);
+
   StressClassifier classifier_;
   StressSmoothing smoothing_;
+  StressCalibration calibration_;
   std::map<std::string, Senior> seniors_;
 };
 

@@ -120,7 +120,8 @@ TEST_CASE("the paper's protocol: split by subject, k chosen by cross-validation,
 
 TEST_CASE("the stress detector votes over a window of readings and reports changes once") {
   const auto train = windows_by_subject(generate_labelled_database(small_database(12, 31)), StressFeatureSet::Paper);
-  ClassifierStressDetector detector(StressClassifier::train(pooled(train), {}), StressSmoothing{});
+  // Without a baseline: the voting is what is tested here (stress_baseline_test.cpp tests the baseline).
+  ClassifierStressDetector detector(StressClassifier::train(pooled(train), {}), StressSmoothing{}, StressCalibration{0});
   CHECK_FALSE(detector.state("senior1").has_value());
 
   alplan::firmware::WindowFeatures calm;
