@@ -15,9 +15,9 @@
 #include "cli/deliberation_run.h"
 #include "cli/perceive_common.h"
 #include "perception/deliberation.h"
-#include "perception/simulated_stress_model.h"
-#include "perception/stress_alarm_study.h"
-#include "perception/stress_features.h"
+#include "perception/stress/simulated_stress_model.h"
+#include "perception/stress/stress_alarm_study.h"
+#include "perception/stress/stress_features.h"
 
 namespace alplan::cli {
 namespace {

@@ -13,9 +13,9 @@
 #include "cli/paper_format.h"
 #include "cli/perceive_common.h"
 #include "domains/mission_run.h"
-#include "perception/camera_object_recognizer.h"
 #include "perception/deliberation.h"
-#include "perception/pretrained_emotion_recognizer.h"
+#include "perception/vision/camera_object_recognizer.h"
+#include "perception/vision/pretrained_emotion_recognizer.h"
 
 namespace alplan::cli {
 namespace {

@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "domains/mission_run.h"
-#include "perception/goal_generator.h"
-#include "perception/object_recognition.h"
-#include "perception/pretrained_emotion_recognizer.h"
-#include "perception/stress_detector.h"
+#include "perception/goals/goal_generator.h"
+#include "perception/stress/stress_detector.h"
+#include "perception/vision/object_recognition.h"
+#include "perception/vision/pretrained_emotion_recognizer.h"
 
 namespace CLI {
 class App;

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "perception/type_augmentation.h"
+#include "perception/ontology/type_augmentation.h"
 
 namespace CLI {
 class App;

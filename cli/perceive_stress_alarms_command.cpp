@@ -1,7 +1,7 @@
 // alplan perceive stress false-alarms: the stress detectors over simulated
 // seniors wearing the wristband for a long while, calm ones and ones who
 // become stressed; false alarms, detections and latency, one row per
-// detector, all on the same readings (perception/stress_alarm_study.h).
+// detector, all on the same readings (perception/stress/stress_alarm_study.h).
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -10,7 +10,7 @@
 
 #include "cli/commands.h"
 #include "cli/perceive_common.h"
-#include "perception/stress_alarm_study.h"
+#include "perception/stress/stress_alarm_study.h"
 
 namespace alplan::cli {
 namespace {

@@ -12,8 +12,8 @@
 
 #include "cli/commands.h"
 #include "cli/perceive_common.h"
-#include "perception/learning_runs.h"
-#include "perception/stress_detector.h"
+#include "perception/stress/stress_detector.h"
+#include "perception/stress/stress_runs.h"
 
 namespace alplan::cli {
 namespace {

@@ -29,8 +29,8 @@
 #include "perception/service/retention_sweeper.h"
 #include "perception/service/service_metrics.h"
 #include "perception/service/stress_event_queue.h"
-#include "perception/stress_classifier.h"
-#include "perception/stress_detector.h"
+#include "perception/stress/stress_classifier.h"
+#include "perception/stress/stress_detector.h"
 
 namespace alplan::perception::service {
 

@@ -13,7 +13,7 @@
 #include <boost/asio/write.hpp>
 #include <boost/beast/core/tcp_stream.hpp>
 
-#include "perception/simulated_stress_model.h"
+#include "perception/stress/simulated_stress_model.h"
 
 namespace alplan::test {
 
