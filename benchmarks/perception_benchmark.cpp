@@ -14,16 +14,16 @@
 #include <stdexcept>
 #include <string>
 
-#include "perception/cnn_classifier.h"
-#include "perception/coco_detector.h"
-#include "perception/face_detector.h"
-#include "perception/object_image_generator.h"
-#include "perception/ppg_simulator.h"
-#include "perception/pretrained_emotion_recognizer.h"
-#include "perception/simulated_stress_model.h"
-#include "perception/stress_classifier.h"
-#include "perception/stress_features.h"
-#include "perception/tfjs_graph_model.h"
+#include "perception/stress/ppg_simulator.h"
+#include "perception/stress/simulated_stress_model.h"
+#include "perception/stress/stress_classifier.h"
+#include "perception/stress/stress_features.h"
+#include "perception/tfjs/tfjs_graph_model.h"
+#include "perception/vision/cnn_classifier.h"
+#include "perception/vision/coco_detector.h"
+#include "perception/vision/face_detector.h"
+#include "perception/vision/object_image_generator.h"
+#include "perception/vision/pretrained_emotion_recognizer.h"
 
 namespace {
 

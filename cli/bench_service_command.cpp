@@ -19,8 +19,8 @@
 
 #include "cli/commands.h"
 #include "perception/service/signal_service.h"
-#include "perception/simulated_stress_model.h"
 #include "perception/service/wristband_fleet.h"
+#include "perception/stress/simulated_stress_model.h"
 
 namespace alplan::cli {
 namespace {

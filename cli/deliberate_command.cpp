@@ -15,9 +15,9 @@
 #include "cli/deliberation_run.h"
 #include "cli/perceive_common.h"
 #include "home/deliberation.h"
-#include "perception/ppg_simulator.h"
-#include "perception/simulated_stress_model.h"
-#include "perception/stress_features.h"
+#include "perception/stress/simulated_stress_model.h"
+#include "perception/stress/stress_alarm_study.h"
+#include "perception/stress/stress_features.h"
 
 namespace alplan::cli {
 namespace {
@@ -26,32 +26,14 @@ struct DeliberateOptions {
   DeliberationSettings settings;
   std::string senior = "senior1";
   std::string ppg;
-  double calm_s = 60, stressed_s = 120;
+  // Calm long enough for the detector to learn the senior's baseline (its
+  // first 24 readings: about 150 s) and decide on calm readings too.
+  double calm_s = 240, stressed_s = 120;
   bool calm_only = false;
+  bool no_baseline = false;
   std::uint64_t seed = 7;
   std::string stress_model;
 };
-
-// The simulator's senior: calm, then (unless calm_only) stressed, as one
-// recording.
-perception::PpgRecording simulated_senior(const DeliberateOptions& o) {
-  perception::PpgSimulator simulator(o.seed);
-  const perception::SubjectProfile calm = simulator.random_subject();
-  perception::RecordingConditions conditions;
-  conditions.sample_rate_hz = 50;
-  conditions.duration_s = o.calm_s;
-  perception::PpgRecording out = simulator.simulate(calm, conditions).recording;
-  if (o.calm_only) return out;
-  conditions.duration_s = o.stressed_s;
-  const perception::PpgRecording later =
-      simulator.simulate(perception::under_stress(calm, simulator.random_stress_response()), conditions).recording;
-  const double offset = out.time_s.back() + 1.0 / conditions.sample_rate_hz;
-  for (std::size_t i = 0; i < later.size(); ++i) {
-    out.time_s.push_back(offset + later.time_s[i]);
-    out.ppg.push_back(later.ppg[i]);
-  }
-  return out;
-}
 
 perception::StressClassifier stress_model(const DeliberateOptions& o) {
   if (!o.stress_model.empty()) return perception::StressClassifier::load(o.stress_model);
@@ -67,8 +49,15 @@ perception::StressClassifier stress_model(const DeliberateOptions& o) {
 int run(const DeliberateOptions& o) {
   Deliberator deliberator(o.settings);
   // Layer 1: stress.
-  const perception::PpgRecording ppg = o.ppg.empty() ? simulated_senior(o) : perception::read_ppg_csv_file(o.ppg);
-  perception::ClassifierStressDetector detector(stress_model(o), {});
+  perception::RecordingConditions conditions;
+  conditions.sample_rate_hz = 50;
+  // A calm senior is watched as long as a stressed one would be.
+  const perception::PpgRecording ppg =
+      !o.ppg.empty() ? perception::read_ppg_csv_file(o.ppg)
+      : o.calm_only  ? perception::simulated_senior(o.seed, o.calm_s + o.stressed_s, 0.0, conditions)
+                     : perception::simulated_senior(o.seed, o.calm_s, o.stressed_s, conditions);
+  perception::ClassifierStressDetector detector(stress_model(o), {},
+                                                o.no_baseline ? perception::StressCalibration{0, 0} : perception::StressCalibration{});
   const auto event = home::first_stress_event(detector, o.senior, perception::stress_windows(ppg));
   if (!event) {
     std::printf("[stress] %s's wristband: not stressed over %.0f s of readings; nothing to do\n", o.senior.c_str(),
@@ -89,9 +78,11 @@ void add_deliberate_command(CLI::App& app, int& exit_code) {
   add_deliberation_options(*cmd, o->settings);
   cmd->add_option("--senior", o->senior, "The senior wearing the wristband");
   cmd->add_option("--ppg", o->ppg, "The wristband's PPG (CSV time,ppg); default: the simulator's senior");
-  cmd->add_option("--calm-seconds", o->calm_s, "Simulated senior: seconds calm first")->check(CLI::Range(0.0, 3600.0));
+  cmd->add_option("--calm-seconds", o->calm_s, "Simulated senior: seconds calm first (the first ~150 s make the baseline)")->check(CLI::Range(0.0, 3600.0));
   cmd->add_option("--stressed-seconds", o->stressed_s, "Simulated senior: then seconds stressed")->check(CLI::Range(40.0, 3600.0));
-  cmd->add_flag("--calm", o->calm_only, "Simulated senior: never stressed");
+  cmd->add_flag("--calm", o->calm_only, "Simulated senior: never stressed (watched calm + stressed seconds)");
+  cmd->add_flag("--no-baseline", o->no_baseline,
+                "Judge readings as they are, not against the senior's own first readings (false alarms: see perception/README.md)");
   cmd->add_option("--seed", o->seed, "Seed of the simulated senior");
   cmd->add_option("--stress-model", o->stress_model, "A stress model (perceive stress train/--save); default: trained on the simulator");
   cmd->callback([o, &exit_code] { exit_code = guarded([&] { return run(*o); }, o->settings.problem); });

@@ -11,7 +11,7 @@
 #include "cli/paper_format.h"
 #include "cli/perceive_common.h"
 #include "domains/mission_run.h"
-#include "perception/emotion.h"
+#include "perception/common/emotion.h"
 
 namespace alplan::cli {
 namespace {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "home/deliberator.h"
-#include "perception/stress_detector.h"
+#include "perception/stress/stress_detector.h"
 
 namespace CLI {
 class App;

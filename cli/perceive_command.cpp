@@ -17,13 +17,13 @@
 #include "cli/commands.h"
 #include "cli/perceive_common.h"
 #include "pddl_parser/parser.h"
-#include "perception/cnn_emotion_recognizer.h"
-#include "perception/coco_labels.h"
-#include "perception/goal_generator.h"
-#include "perception/object_image_generator.h"
-#include "perception/object_recognition.h"
-#include "perception/pretrained_emotion_recognizer.h"
-#include "perception/type_augmentation.h"
+#include "perception/goals/goal_generator.h"
+#include "perception/ontology/type_augmentation.h"
+#include "perception/vision/cnn_emotion_recognizer.h"
+#include "perception/vision/coco_labels.h"
+#include "perception/vision/object_image_generator.h"
+#include "perception/vision/object_recognition.h"
+#include "perception/vision/pretrained_emotion_recognizer.h"
 
 namespace alplan::cli {
 namespace {
@@ -82,7 +82,7 @@ int run_emotion(const ImageCommandOptions& o) {
   }
   if (!o.json && !scores_bored) {
     std::cout << "(this model has no bored class: goal generation decides boredom by its rule, "
-                 "perception/goal_generator.h)\n";
+                 "perception/goals/goal_generator.h)\n";
   }
   if (o.json) std::cout << out.dump(2) << "\n";
   return kExitOk;

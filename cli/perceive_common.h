@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "perception/type_augmentation.h"
+#include "perception/ontology/type_augmentation.h"
 
 namespace CLI {
 class App;
@@ -32,6 +32,7 @@ void print_ontology(const perception::TypeParents& types, const perception::Augm
 void add_emotion_learning_commands(CLI::App& emotion, int& exit_code);
 void add_object_learning_commands(CLI::App& objects, int& exit_code);
 void add_perceive_stress_command(CLI::App& perceive, int& exit_code);
+void add_stress_alarms_command(CLI::App& stress, int& exit_code);
 void add_trainer_check_command(CLI::App& perceive, int& exit_code);
 
 }  // namespace alplan::cli

@@ -12,7 +12,7 @@
 
 #include "cli/commands.h"
 #include "cli/perceive_common.h"
-#include "perception/learning_runs.h"
+#include "perception/vision/cnn_runs.h"
 
 namespace alplan::cli {
 namespace {

@@ -12,8 +12,8 @@
 
 #include "cli/commands.h"
 #include "cli/perceive_common.h"
-#include "perception/learning_runs.h"
-#include "perception/stress_detector.h"
+#include "perception/stress/stress_detector.h"
+#include "perception/stress/stress_runs.h"
 
 namespace alplan::cli {
 namespace {
@@ -120,17 +120,19 @@ int run_model_evaluate(const StressCommandOptions& o, const std::string& model_p
   return kExitOk;
 }
 
-int run_detect(const std::string& model_path, const std::string& recording_path, bool json) {
-  perception::ClassifierStressDetector detector(perception::StressClassifier::load(model_path), {});
+int run_detect(const std::string& model_path, const std::string& recording_path, bool json, bool no_baseline) {
+  perception::ClassifierStressDetector detector(perception::StressClassifier::load(model_path), {},
+                                                no_baseline ? perception::StressCalibration{0, 0} : perception::StressCalibration{});
   const perception::PpgRecording recording = perception::read_ppg_csv_file(recording_path);
   nlohmann::json out = nlohmann::json::array();
   for (const perception::StressWindow& w : perception::stress_windows(recording)) {
     const perception::StressObservation seen = detector.observe("senior", w.features);
     out.push_back({{"end_s", w.end_s}, {"hr_bpm", w.features.mean_hr_bpm}, {"usable", w.usable},
-                   {"stressed", seen.state.stressed}, {"event", seen.changed}});
+                   {"stressed", seen.state.stressed}, {"calibrating", seen.state.calibrating}, {"event", seen.changed}});
     if (json) continue;
     std::printf("%7.1f s  HR %5.1f  %s%s%s\n", w.end_s, static_cast<double>(w.features.mean_hr_bpm),
-                w.usable ? "" : "(not used: motion or too few beats) ", seen.state.stressed ? "stressed" : "calm",
+                w.usable ? "" : "(not used: motion or too few beats) ",
+                seen.state.calibrating ? "learning the senior's baseline" : seen.state.stressed ? "stressed" : "calm",
                 seen.changed ? (seen.state.stressed ? "   <- stress event" : "   <- calm again") : "");
   }
   if (json) std::cout << out.dump(2) << "\n";
@@ -196,13 +198,18 @@ void add_perceive_stress_command(CLI::App& perceive, int& exit_code) {
     exit_code = guarded([&] { return run_model_evaluate(*o, eval_paths->first, eval_paths->second); }, eval_paths->second);
   });
 
+  add_stress_alarms_command(*stress, exit_code);
+
   auto detect_paths = std::make_shared<std::pair<std::string, std::string>>();
   CLI::App* detect = stress->add_subcommand("detect", "Stress decisions window by window on one recording");
   detect->add_option("--model", detect_paths->first, "A saved stress model")->required();
   detect->add_option("recording", detect_paths->second, "A CSV recording (time,ppg)")->required();
   detect->add_flag("--json", o->json, "Print JSON");
-  detect->callback([o, detect_paths, &exit_code] {
-    exit_code = guarded([&] { return run_detect(detect_paths->first, detect_paths->second, o->json); }, detect_paths->second);
+  auto no_baseline = std::make_shared<bool>(false);
+  detect->add_flag("--no-baseline", *no_baseline, "Judge readings as they are, not against the first 24 (the senior's baseline)");
+  detect->callback([o, detect_paths, no_baseline, &exit_code] {
+    exit_code = guarded([&] { return run_detect(detect_paths->first, detect_paths->second, o->json, *no_baseline); },
+                        detect_paths->second);
   });
 }
 

@@ -10,7 +10,7 @@
 #include "cli/commands.h"
 #include "cli/parse_command_line.h"
 #include "cli/perception_module.h"
-#include "perception/drawing_camera.h"
+#include "perception/vision/drawing_camera.h"
 
 extern "C" __attribute__((visibility("default"))) int alplan_perception_main(int argc, char** argv) {
   // OpenCV's own warnings ("can't open/read file") would repeat the

@@ -53,7 +53,7 @@ inline constexpr const char* kBenchSoakHelp =
 // cannot be loaded.
 int run_perception_command(int argc, char** argv);
 
-// The repair study's camera (perception/drawing_camera.h), made in the
+// The repair study's camera (perception/vision/drawing_camera.h), made in the
 // module: the paper's CNN trained once on drawings, and a maker of
 // recognizers that picture what the simulator knows and let the network
 // name it. The module exports kDrawingCameraEntryPoint as DrawingCameraEntry,

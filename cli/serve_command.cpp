@@ -33,7 +33,7 @@
 #include "cli/perceive_common.h"
 #include "perception/service/private_file.h"
 #include "perception/service/signal_service.h"
-#include "perception/simulated_stress_model.h"
+#include "perception/stress/simulated_stress_model.h"
 
 namespace alplan::cli {
 namespace {

@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "pddl_parser/ast.h"
-#include "perception/emotion_recognizer.h"
-#include "perception/goal_generator.h"
-#include "perception/stress_detector.h"
-#include "perception/stress_features.h"
+#include "perception/goals/goal_generator.h"
+#include "perception/stress/stress_detector.h"
+#include "perception/stress/stress_features.h"
+#include "perception/vision/emotion_recognizer.h"
 
 namespace alplan::home {
 

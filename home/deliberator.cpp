@@ -7,7 +7,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "home/deliberation.h"
-#include "perception/coco_detector.h"
+#include "perception/vision/coco_detector.h"
 
 namespace alplan::home {
 namespace {

@@ -13,10 +13,10 @@
 #include <vector>
 
 #include "domains/mission_run.h"
-#include "perception/camera_object_recognizer.h"
-#include "perception/goal_generator.h"
-#include "perception/pretrained_emotion_recognizer.h"
-#include "perception/stress_detector.h"
+#include "perception/vision/camera_object_recognizer.h"
+#include "perception/goals/goal_generator.h"
+#include "perception/vision/pretrained_emotion_recognizer.h"
+#include "perception/stress/stress_detector.h"
 #include "repair/world_simulator.h"
 
 namespace alplan::home {

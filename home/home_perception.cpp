@@ -3,8 +3,8 @@
 #include <stdexcept>
 
 #include "domains/emotion_goals.h"
-#include "perception/emotion.h"
-#include "perception/simulated_stress_model.h"
+#include "perception/common/emotion.h"
+#include "perception/stress/simulated_stress_model.h"
 
 namespace alplan::home {
 namespace {

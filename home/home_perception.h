@@ -17,8 +17,8 @@
 #include "home/home_settings.h"
 #include "home/simulated_senior.h"
 #include "pddl_parser/ast.h"
-#include "perception/goal_generator.h"
-#include "perception/stress_detector.h"
+#include "perception/goals/goal_generator.h"
+#include "perception/stress/stress_detector.h"
 
 namespace alplan::home {
 

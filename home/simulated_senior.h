@@ -4,7 +4,7 @@
 // face the home's camera reads with a stated error rate.
 //
 // The observation model, what the deliberation can and cannot know:
-// - the wristband: the PPG simulator's pulse (perception/ppg_simulator.h)
+// - the wristband: the PPG simulator's pulse (perception/stress/ppg_simulator.h)
 //   of this senior's own profile, stressed during an episode, cut into the
 //   wristband core's 30 s windows every 5 s; the stress detector sees only
 //   those windows. The pulse is simulated a minute at a time, so the body
@@ -26,9 +26,9 @@
 #include <string>
 #include <vector>
 
-#include "perception/goal_generator.h"
-#include "perception/ppg_simulator.h"
-#include "perception/stress_features.h"
+#include "perception/goals/goal_generator.h"
+#include "perception/stress/ppg_simulator.h"
+#include "perception/stress/stress_features.h"
 
 namespace alplan::home {
 

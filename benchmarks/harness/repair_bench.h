@@ -63,7 +63,7 @@ struct RepairBenchOptions {
   BootstrapOptions bootstrap;
   bool paper_home = true;  // also time the strategies on the paper's three scenarios
   // The camera: wraps the simulator (which knows each thing's type) with a
-  // real recognizer (perception/drawing_camera.h); none: the simulator
+  // real recognizer (perception/vision/drawing_camera.h); none: the simulator
   // names things itself, perfectly and at no cost. `camera_info` goes into
   // the summary.
   std::function<std::unique_ptr<repair::ObjectRecognizer>(repair::ObjectRecognizer& truth)> camera;

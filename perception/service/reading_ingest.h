@@ -48,7 +48,7 @@
 #include "perception/service/reading_message.h"
 #include "perception/service/reading_store.h"
 #include "perception/service/stress_event_queue.h"
-#include "perception/stress_detector.h"
+#include "perception/stress/stress_detector.h"
 
 namespace alplan::perception::service {
 

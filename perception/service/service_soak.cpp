@@ -18,7 +18,7 @@
 
 #include "perception/service/signal_service.h"
 #include "perception/service/wristband_fleet.h"
-#include "perception/simulated_stress_model.h"
+#include "perception/stress/simulated_stress_model.h"
 
 namespace alplan::perception::service {
 namespace {

@@ -8,7 +8,8 @@ SignalService::SignalService(DeviceRegistry registry, std::optional<StressClassi
       registry_(std::move(registry)),
       store_(options.database, options.durability),
       events_(options.event_queue_capacity) {
-  if (classifier) detector_ = std::make_unique<ClassifierStressDetector>(std::move(*classifier), options.smoothing);
+  if (classifier) detector_ = std::make_unique<ClassifierStressDetector>(std::move(*classifier), options.smoothing,
+                                                                      options.calibration);
   if (options.commit_veto) store_.set_commit_veto(options.commit_veto);
   IngestOptions ingest;
   ingest.priming_readings = options.priming_readings;

@@ -29,8 +29,8 @@
 #include "perception/service/retention_sweeper.h"
 #include "perception/service/service_metrics.h"
 #include "perception/service/stress_event_queue.h"
-#include "perception/stress_classifier.h"
-#include "perception/stress_detector.h"
+#include "perception/stress/stress_classifier.h"
+#include "perception/stress/stress_detector.h"
 
 namespace alplan::perception::service {
 
@@ -47,6 +47,11 @@ struct SignalServiceOptions {
   bool admin_listener = true;
   HandlerLimits limits{};
   StressSmoothing smoothing{};
+  // No per-senior baseline here yet: the baseline lives in the detector's
+  // memory only, and priming after a restart replays the latest readings,
+  // which would make a stressed senior's latest readings their baseline. It
+  // needs storing with the readings first.
+  StressCalibration calibration{0};
   std::size_t event_queue_capacity = 1024;
   // Per device, the latest stored readings replayed into the detector at
   // start-up: four smoothing windows, so the hysteresis settles where it was.

@@ -20,8 +20,8 @@
 #include "firmware/core/reading_queue.h"
 #include "firmware/core/retry_backoff.h"
 #include "firmware/core/wristband_core.h"
-#include "perception/ppg_simulator.h"
 #include "perception/service/readings_client.h"
+#include "perception/stress/ppg_simulator.h"
 
 namespace alplan::perception::service {
 

@@ -40,6 +40,10 @@ file(GLOB recordings ${WORK}/ppg/s01/*.csv)
 list(GET recordings 0 one)
 expect_run(0 "HR" ${ALPLAN} perceive stress detect --model ${WORK}/stress.yml ${one})
 expect_run(2 "needs --evaluate or a subcommand" ${ALPLAN} perceive stress)
+expect_run(0 "| paper, own baseline (first 24 readings, fixed) | 0 / 4 |" ${ALPLAN} perceive stress false-alarms
+  --seniors 4 --minutes 6 --onset 3)
+expect_run(0 "\"false_alarm_rate\"" ${ALPLAN} perceive stress false-alarms --seniors 2 --minutes 4 --onset 3 --json)
+expect_run(2 "onset must lie inside" ${ALPLAN} perceive stress false-alarms --minutes 4 --onset 5)
 file(WRITE ${WORK}/bad/s1.csv "time,ppg,label\n0,0.1,1\n0.02,abc,1\n")
 expect_run(2 "s1.csv:3:6: error: column 2 (ppg)" ${ALPLAN} perceive stress train --data ${WORK}/bad --out ${WORK}/x.yml)
 

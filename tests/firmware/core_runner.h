@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "firmware/core/wristband_core.h"
-#include "perception/ppg_simulator.h"
+#include "perception/stress/ppg_simulator.h"
 
 namespace alplan::test {
 

@@ -6,7 +6,7 @@
 #include "firmware/core/reading_encoder.h"
 #include "firmware/core/reading_queue.h"
 #include "firmware/core/wristband_core.h"
-#include "perception/ppg_simulator.h"
+#include "perception/stress/ppg_simulator.h"
 #include "tests/firmware/allocation_counter.h"
 
 using namespace alplan;

@@ -13,7 +13,7 @@
 #include <boost/asio/write.hpp>
 #include <boost/beast/core/tcp_stream.hpp>
 
-#include "perception/simulated_stress_model.h"
+#include "perception/stress/simulated_stress_model.h"
 
 namespace alplan::test {
 
@@ -62,8 +62,12 @@ service::ReceivedReading typical_window(const std::string& device, std::uint32_t
   return r;
 }
 
+// Without a per-senior baseline, as the service runs (signal_service.h):
+// these tests are about ingest, and typical_window's readings are typical
+// of everybody.
 std::unique_ptr<perception::ClassifierStressDetector> test_stress_detector() {
-  return std::make_unique<perception::ClassifierStressDetector>(test_classifier(), perception::StressSmoothing{});
+  return std::make_unique<perception::ClassifierStressDetector>(test_classifier(), perception::StressSmoothing{},
+                                                                perception::StressCalibration{0});
 }
 
 service::SignalServiceOptions test_options(const std::filesystem::path& database) {

@@ -13,8 +13,8 @@
 #include "perception/service/device_registry.h"
 #include "perception/service/reading_message.h"
 #include "perception/service/signal_service.h"
-#include "perception/stress_classifier.h"
-#include "perception/stress_detector.h"
+#include "perception/stress/stress_classifier.h"
+#include "perception/stress/stress_detector.h"
 
 namespace alplan::test {
 

@@ -58,8 +58,7 @@ struct Bench {
 
   explicit Bench(IngestOptions options = {}, bool detect = false) : ingest_options(std::move(options)) {
     if (detect) {
-      detector = std::make_unique<perception::ClassifierStressDetector>(test::test_classifier(),
-                                                                        perception::StressSmoothing{});
+      detector = test::test_stress_detector();
     }
     ingest = std::make_unique<ReadingIngest>(store, detector.get(), events, registry, ingest_options);
     handler = std::make_unique<RequestHandler>(registry, *ingest, metrics, events, HandlerLimits{},

@@ -1,0 +1,28 @@
+// A stress classifier trained on the PPG simulator's labelled database
+// (perception/stress/ppg_simulator.h), through the wristband core's own windows:
+// the default model of `alplan serve` and `alplan deliberate` when no
+// trained model file is given, and what the tests and benchmarks use. Deterministic in the spec; a few
+// subjects train in well under a second.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "perception/stress/stress_classifier.h"
+
+namespace alplan::perception {
+
+struct SimulatedModelSpec {
+  std::size_t subjects = 6;
+  std::size_t recordings_per_state = 1;
+  double recording_s = 120.0;
+  double sample_rate_hz = 50.0;
+  std::uint64_t seed = 7;
+  StressClassifierOptions classifier{StressModelKind::Svm, StressFeatureSet::PaperWithHrv, 5};
+};
+
+// Throws std::invalid_argument when the spec yields too few usable windows
+// of a class to train on.
+StressClassifier train_simulated_stress_classifier(const SimulatedModelSpec& spec);
+
+}  // namespace alplan::perception
