@@ -65,8 +65,10 @@ void print_summary(const home::HomeSummary& s) {
   for (const auto& [strategy, n] : s.repairs) std::printf(" %s %zu", strategy.c_str(), n);
   std::printf(", %zu failed\n", s.repairs_failed);
   const nlohmann::json j = s.json();
-  std::printf("         planning p50 %.3f s, p95 %.3f s; %zu stress episodes, %zu false alarms (scored against the simulation)\n",
-              j["planning_p50_s"].get<double>(), j["planning_p95_s"].get<double>(), s.episodes, s.false_alarms);
+  std::printf("         planning p50 %.3f s, p95 %.3f s; scored against the simulation: %zu stress episodes, %zu detected, "
+              "%zu false alarms\n",
+              j["planning_p50_s"].get<double>(), j["planning_p95_s"].get<double>(), s.episodes, s.episodes_detected,
+              s.false_alarms);
 }
 
 int run_home_command(HomeCommandOptions& o) {

@@ -73,11 +73,11 @@ void print_home_bench(std::ostream& out, const HomeSettings& settings, const Hom
   char line[400];
   std::snprintf(line, sizeof line,
                 "\n%zu goals: %zu comforted within their windows (%.1f%%), %zu late, %zu windows missed; "
-                "%zu failures, %zu repairs failed\n%.0f simulated s in %.1f wall s (%.0fx); %zu stress episodes, "
-                "%zu false alarms (scored against the simulation)\n",
+                "%zu failures, %zu repairs failed\n%.0f simulated s in %.1f wall s (%.0fx); scored against the "
+                "simulation: %zu stress episodes, %zu detected, %zu false alarms\n",
                 s.goals, s.within_window, 100.0 * static_cast<double>(s.within_window) / static_cast<double>(std::max<std::size_t>(1, s.goals)),
                 s.comforted - s.within_window, s.windows_missed, s.failures, s.repairs_failed, settings.until,
-                r.wall_seconds, settings.until / std::max(1e-9, r.wall_seconds), s.episodes, s.false_alarms);
+                r.wall_seconds, settings.until / std::max(1e-9, r.wall_seconds), s.episodes, s.episodes_detected, s.false_alarms);
   out << line;
 }
 

@@ -60,7 +60,9 @@ void HomePerception::read_wristbands(double t) {
                        {"votes", seen.state.votes}};
       log_.write(event);
       if (seen.state.stressed) {
-        if (!senior->episode_at(w.end_s)) ++false_alarms_;
+        const Episode* episode = senior->episode_at(w.end_s);
+        if (episode) detected_.insert({name, episode->start});
+        else ++false_alarms_;
         next_look_.emplace(name, w.end_s);
       }
     }

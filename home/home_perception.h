@@ -50,6 +50,8 @@ class HomePerception {
   // stress events raised when the senior was in no episode.
   std::size_t false_alarms() const { return false_alarms_; }
   std::size_t episodes_begun(double until) const;
+  // Episodes during which the detector raised a stress event.
+  std::size_t episodes_detected() const { return detected_.size(); }
 
  private:
   void read_wristbands(double t);
@@ -64,6 +66,7 @@ class HomePerception {
   std::map<std::string, int> looks_;
   std::set<std::string> busy_;
   std::size_t false_alarms_ = 0;
+  std::set<std::pair<std::string, double>> detected_;  // senior, episode start
 };
 
 }  // namespace alplan::home

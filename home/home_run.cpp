@@ -131,6 +131,7 @@ class HomeRun {
       t += settings_.step_s;
     }
     summary_.episodes = perception_.episodes_begun(settings_.until);
+    summary_.episodes_detected = perception_.episodes_detected();
     summary_.false_alarms = perception_.false_alarms();
     summary_.end_time = settings_.until;
     return summary_;
@@ -411,7 +412,7 @@ nlohmann::json HomeSummary::json() const {
           {"windows_missed", windows_missed}, {"failures", failures}, {"plans", plans},
           {"merges", merges},       {"repairs", repairs},         {"repairs_failed", repairs_failed},
           {"planning_p50_s", quantile(0.5)}, {"planning_p95_s", quantile(0.95)},
-          {"episodes", episodes},   {"false_alarms", false_alarms}, {"end_time", end_time}};
+          {"episodes", episodes},   {"episodes_detected", episodes_detected}, {"false_alarms", false_alarms}, {"end_time", end_time}};
 }
 
 HomeMap home_map_of(const HomeSettings& settings) { return load(settings).map; }

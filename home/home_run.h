@@ -26,7 +26,7 @@ struct HomeSummary {
   std::vector<double> planning_seconds;  // every plan made: initial, merged, repaired
   std::map<std::string, std::vector<double>> planning_by_reason;  // initial, merge, repair, none (no plan found)
   // Scored against the simulation's truth.
-  std::size_t episodes = 0, false_alarms = 0;
+  std::size_t episodes = 0, episodes_detected = 0, false_alarms = 0;
   double end_time = 0.0;
 
   nlohmann::json json() const;

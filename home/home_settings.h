@@ -38,7 +38,10 @@ struct HomeSettings {
   std::vector<std::string> failure_kinds{"sibling", "arrival", "iot", "moves", "overrun"};
   double step_s = 5.0;            // the home's clock while the robots are idle; the monitor's step
   double look_interval_s = 20.0;  // between looks at a stressed senior's face
-  double grace_s = 180.0;         // after comforting, before the face is read again
+  // After comforting, before the face is read again: the body calms down
+  // (recovery_s), the detector sees it a minute later (its smoothing and
+  // the wristband minute); 180 s looked again at calm seniors.
+  double grace_s = 300.0;
   double terrified_window_s = 600.0, other_window_s = 1200.0;
   // Deterministic planning: anytime weights bounded by expansions, so that
   // a replay finds the same plans; the time limit only guards. 0: the

@@ -36,7 +36,7 @@ flags=(--headless --disable-gpu --no-sandbox --user-data-dir="$work/chromium-pro
        --hide-scrollbars)
 timeout 120 chromium "${flags[@]}" --dump-dom "file://$work/report/index.html" >dom.html 2>chromium.err ||
   fail "chromium could not render the report: $(tail -5 chromium.err)"
-"$python" "$here/../report/check_rendered_page.py" dom.html gantt=rect:5 map=line:1,symbol:14 timeline=symbol:10
+"$python" "$here/../report/check_rendered_page.py" dom.html gantt=rect:5 map=line:1,symbol:14 timeline=symbol:5
 timeout 120 chromium "${flags[@]}" --window-size=1400,3000 --screenshot="$work/home-report.png" \
   "file://$work/report/index.html" >/dev/null 2>>chromium.err || fail "no screenshot"
 echo "screenshot: $work/home-report.png"

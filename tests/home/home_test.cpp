@@ -19,7 +19,7 @@ const std::string kAssistedLiving = test::source_dir() + "/domains/assisted_livi
 HomeSettings short_run() {
   HomeSettings s = default_home_settings(kAssistedLiving);
   s.until = 900.0;
-  s.script = {{"senior1", 300.0, "terrified"}, {"senior3", 330.0, "bored"}};
+  s.script = {{"senior1", 300.0, "terrified"}, {"senior5", 330.0, "bored"}};
   return s;
 }
 
@@ -94,12 +94,12 @@ TEST_CASE("a run of the home comforts its seniors and replays to the same events
   CHECK(summary.comforted >= 2);
   // Boredom is decided over looks taken at different times.
   const auto bored = std::find_if(events.begin(), events.end(), [](const LogEvent& e) {
-    return e.type == "goal" && e.senior == "senior3" && e.payload["emotion"] == "bored";
+    return e.type == "goal" && e.senior == "senior5" && e.payload["emotion"] == "bored";
   });
   REQUIRE(bored != events.end());
   std::set<double> look_times;
   for (auto e = events.begin(); e != bored; ++e) {
-    if (e->type == "emotion" && e->senior == "senior3") look_times.insert(e->time);
+    if (e->type == "emotion" && e->senior == "senior5") look_times.insert(e->time);
   }
   CHECK(look_times.size() >= 3);
 
