@@ -1,6 +1,8 @@
 // alplan bench grounding|...: the benchmark harness, one process per run.
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
+
 #include <iostream>
 #include <memory>
 
@@ -58,6 +60,7 @@ int run_planners(const BenchPlannersOptions& options) {
   o.baseline = options.baseline;
   o.limits = {options.time_limit, options.memory_limit};
   o.jobs = options.jobs;
+  o.progress_bar = isatty(STDERR_FILENO) != 0;
   o.first = options.first;
   o.anytime = options.anytime;
   o.search = options.search;

@@ -6,6 +6,8 @@
 // Markdown table, and writes DIR/bench-home.json.
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -15,6 +17,7 @@
 #include "cli/perceive_common.h"
 #include "cli/perception_module.h"
 #include "home/home_bench.h"
+#include "planner/progress_meter.h"
 
 namespace alplan::cli {
 namespace {
@@ -27,7 +30,9 @@ struct BenchHomeOptions {
 
 int run_bench_home(BenchHomeOptions& o) {
   o.settings.until = o.hours * 3600.0;
-  const home::HomeBenchResult result = home::run_home_bench(o.settings);
+  ProgressMeter meter(std::cerr, o.settings.until, "simulated s", isatty(STDERR_FILENO) != 0);
+  const home::HomeBenchResult result = home::run_home_bench(o.settings, simulated_time_meter(meter));
+  meter.finish();
   home::print_home_bench(std::cout, o.settings, result);
   if (!o.out.empty()) {
     std::filesystem::create_directories(o.out);

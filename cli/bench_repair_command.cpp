@@ -5,6 +5,8 @@
 // paired study per failure kind (benchmarks/harness/repair_study.h).
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
+
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -48,6 +50,7 @@ std::optional<std::vector<repair::RandomEventKind>> event_kinds(const std::strin
 }
 
 int run_repair(BenchRepairOptions options) {
+  options.bench.progress_bar = isatty(STDERR_FILENO) != 0;
   options.bench.strategies.clear();
   std::istringstream list(options.strategies);
   for (std::string name; std::getline(list, name, ',');) {

@@ -2,7 +2,10 @@
 // (the same run again from its log's first line, compared event by event).
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
+
 #include <cstdio>
+#include <functional>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -12,6 +15,7 @@
 #include "cli/perception_module.h"
 #include "home/event_log.h"
 #include "home/home_run.h"
+#include "planner/progress_meter.h"
 
 namespace alplan::cli {
 namespace {
@@ -83,7 +87,11 @@ int run_home_command(HomeCommandOptions& o) {
     if (!file) throw std::invalid_argument(o.log + ": cannot write the log");
   }
   home::EventLog log(o.log.empty() ? nullptr : &file, o.quiet ? home::EventLog::Echo{} : narrate);
-  const home::HomeSummary summary = home::run_home(o.settings, log);
+  // Narrated runs show the time in every line; a quiet one gets a meter.
+  ProgressMeter meter(std::cerr, o.settings.until, "simulated s", isatty(STDERR_FILENO) != 0);
+  const home::HomeSummary summary =
+      home::run_home(o.settings, log, o.quiet ? simulated_time_meter(meter) : std::function<void(double)>{});
+  meter.finish();
   print_summary(summary);
   if (!o.log.empty()) std::printf("log: %s (%zu events)\n", o.log.c_str(), log.events().size());
   return kExitOk;

@@ -50,11 +50,11 @@ nlohmann::json HomeBenchResult::json(const HomeSettings& settings) const {
           {"events", events}};
 }
 
-HomeBenchResult run_home_bench(const HomeSettings& settings) {
+HomeBenchResult run_home_bench(const HomeSettings& settings, const std::function<void(double)>& on_time) {
   HomeBenchResult result;
   EventLog log;
   const auto began = std::chrono::steady_clock::now();
-  result.summary = run_home(settings, log);
+  result.summary = run_home(settings, log, on_time);
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   result.events = log.events().size();
   return result;

@@ -5,6 +5,7 @@
 // wall-clock speed of the simulation. A table on stdout, JSON beside it.
 #pragma once
 
+#include <functional>
 #include <ostream>
 #include <string>
 
@@ -22,7 +23,7 @@ struct HomeBenchResult {
   nlohmann::json json(const HomeSettings& settings) const;
 };
 
-HomeBenchResult run_home_bench(const HomeSettings& settings);
+HomeBenchResult run_home_bench(const HomeSettings& settings, const std::function<void(double)>& on_time = {});
 void print_home_bench(std::ostream& out, const HomeSettings& settings, const HomeBenchResult& result);
 
 }  // namespace alplan::home

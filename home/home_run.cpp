@@ -115,11 +115,12 @@ class HomeRun {
     strategy_ = repair::make_strategy(settings.strategy, strategy);
   }
 
-  HomeSummary run() {
+  HomeSummary run(const std::function<void(double)>& on_time) {
     LogEvent home{"observation", 0.0, {}, {}, {}};
     home.payload = {{"what", "home"}, {"home", loaded_.map.json()}, {"settings", settings_.json()}};
     log_.write(home);
     for (double t = 0.0; t <= settings_.until + 1e-9;) {
+      if (on_time) on_time(std::min(t, settings_.until));
       world_.advance(t);
       belief_.observe(world_.observe());
       for (PerceivedGoal& g : perception_.sense(t)) pending_.push_back(std::move(g));
@@ -417,9 +418,9 @@ nlohmann::json HomeSummary::json() const {
 
 HomeMap home_map_of(const HomeSettings& settings) { return load(settings).map; }
 
-HomeSummary run_home(const HomeSettings& settings, EventLog& log) {
+HomeSummary run_home(const HomeSettings& settings, EventLog& log, const std::function<void(double)>& on_time) {
   HomeRun run(settings, log);
-  return run.run();
+  return run.run(on_time);
 }
 
 }  // namespace alplan::home

@@ -8,6 +8,7 @@
 // the process restarts for them.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -34,7 +35,8 @@ struct HomeSummary {
 
 // Throws std::invalid_argument (bad settings: an unknown strategy, senior,
 // observation model) or the loaders' errors naming the file.
-HomeSummary run_home(const HomeSettings& settings, EventLog& log);
+// `on_time`: told the simulated time as the run goes (a progress meter).
+HomeSummary run_home(const HomeSettings& settings, EventLog& log, const std::function<void(double)>& on_time = {});
 
 // The home the settings describe, as its map (for checking names early).
 HomeMap home_map_of(const HomeSettings& settings);

@@ -9,6 +9,7 @@
 #include <map>
 #include <mutex>
 #include <ostream>
+#include <sstream>
 #include <thread>
 
 #include "benchmarks/harness/baseline.h"
@@ -16,6 +17,7 @@
 #include "benchmarks/harness/slurm_array.h"
 #include "benchmarks/harness/suite.h"
 #include "benchmarks/harness/table.h"
+#include "planner/progress_meter.h"
 
 namespace alplan::bench {
 namespace {
@@ -93,11 +95,12 @@ std::string plans_dir(const PlannerBenchOptions& options) {
                                  : options.out_dir + "/plans";
 }
 
-void print_progress(const Run& run, std::size_t done, std::size_t total, std::ostream& progress) {
-  progress << "[" << done << "/" << total << "] " << run.problem.domain << " "
-           << std::filesystem::path(run.problem.problem_file).filename().string() << ": " << run.status;
-  if (run.status == "solved") progress << " value " << run.value << " in " << fixed(run.first_plan, 2) << " s";
-  progress << "\n" << std::flush;
+std::string progress_line(const Run& run, std::size_t done, std::size_t total) {
+  std::ostringstream line;
+  line << "[" << done << "/" << total << "] " << run.problem.domain << " "
+       << std::filesystem::path(run.problem.problem_file).filename().string() << ": " << run.status;
+  if (run.status == "solved") line << " value " << run.value << " in " << fixed(run.first_plan, 2) << " s";
+  return line.str();
 }
 
 // Every run here, `jobs` at a time.
@@ -107,11 +110,13 @@ std::vector<Run> run_locally(const std::vector<SuiteProblem>& suite, const Plann
   std::atomic<std::size_t> next{0};
   std::atomic<std::size_t> done{0};
   std::mutex print;
+  ProgressMeter meter(progress, static_cast<double>(suite.size()), "problems", options.progress_bar);
   auto worker = [&] {
     for (std::size_t i = next++; i < suite.size(); i = next++) {
       runs[i] = run_one(suite[i], options, plans_dir(options) + "/" + std::to_string(i) + ".plan");
       const std::lock_guard<std::mutex> lock(print);
-      print_progress(runs[i], ++done, suite.size(), progress);
+      ++done;
+      meter.update(static_cast<double>(done), progress_line(runs[i], done, suite.size()));
     }
   };
   std::vector<std::thread> threads;
@@ -152,7 +157,8 @@ void run_task(const std::vector<SuiteProblem>& suite, const PlannerBenchOptions&
   for (int i = first; i < last; ++i) {
     const Run run = run_one(suite[static_cast<std::size_t>(i)], options,
                             plans_dir(options) + "/" + std::to_string(i) + ".plan");
-    print_progress(run, static_cast<std::size_t>(i - first + 1), static_cast<std::size_t>(last - first), progress);
+    progress << progress_line(run, static_cast<std::size_t>(i - first + 1), static_cast<std::size_t>(last - first))
+             << "\n" << std::flush;
     runs.push_back(to_json(run));
   }
   write_task_result(options.array.dir, options.array.task, runs);

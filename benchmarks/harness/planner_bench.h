@@ -24,6 +24,7 @@ struct PlannerBenchOptions {
   std::string baseline;    // folder with optic_popf_60s.csv and quality_ref.csv ("" for none)
   RunLimits limits;
   int jobs = 1;
+  bool progress_bar = false;  // a bar with rate and ETA on the progress stream (a terminal)
   int first = 0;           // only the first N problems of each domain (0: all)
   bool anytime = false;
   std::string search = "ehc";

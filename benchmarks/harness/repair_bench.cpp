@@ -18,6 +18,7 @@
 #include "domains/paper_scenarios.h"
 #include "domains/pddl_files.h"
 #include "pddl_parser/writer.h"
+#include "planner/progress_meter.h"
 #include "repair/monitor.h"
 #include "repair/random_events.h"
 #include "repair/reformulation.h"
@@ -438,10 +439,16 @@ int run_repair_bench(const RepairBenchOptions& o, std::ostream& out, std::ostrea
   }
   const std::unique_ptr<StudySetup> setup = prepare_study(o, (fs::path(o.out_dir) / "external").string());
   std::vector<RunRecord> records;
+  ProgressMeter meter(progress, o.homes, "homes", o.progress_bar);
   for (int h = 0; h < o.homes; ++h) {
-    std::vector<RunRecord> home = run_home(*setup, h, o, progress);
+    std::ostringstream lines;  // the home's runs, printed above the bar
+    std::vector<RunRecord> home = run_home(*setup, h, o, lines);
     records.insert(records.end(), home.begin(), home.end());
+    std::string text = lines.str();
+    if (!text.empty() && text.back() == '\n') text.pop_back();
+    meter.update(h + 1, text);
   }
+  meter.finish();
   const nlohmann::json paper_home = o.paper_home ? paper_home_latencies(o) : nlohmann::json();
   return write_study(o, records, setup->order, paper_home, camera_description(o), out, progress);
 }

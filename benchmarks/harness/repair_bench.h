@@ -38,6 +38,7 @@ struct RepairBenchOptions {
   domains::HomeOptions home;  // its seed is replaced per home
   std::string assisted_living_dir;
   std::string out_dir;
+  bool progress_bar = false;  // a bar with rate and ETA on the progress stream (a terminal)
   bool external = false;  // also replan through `alplan plan` in a child process
   std::string alplan;     // the executable, for the external runs
   double epsilon = 0.001;
