@@ -18,7 +18,7 @@ std::string clock_text(double seconds) {
 
 std::string amount(double x) {
   char text[32];
-  std::snprintf(text, sizeof text, x == std::floor(x) ? "%.0f" : "%.1f", x);
+  std::snprintf(text, sizeof text, std::fabs(x - std::round(x)) < 0.05 ? "%.0f" : "%.1f", x);
   return text;
 }
 
@@ -37,7 +37,7 @@ std::string ProgressMeter::bar(double done, double total, const std::string& uni
   text += "] " + amount(done) + "/" + amount(total) + " " + unit;
   const double rate = elapsed_s > 0 ? done / elapsed_s : 0.0;
   char tail[96];
-  std::snprintf(tail, sizeof tail, "  %.3g/s  ETA %s", rate,
+  std::snprintf(tail, sizeof tail, rate >= 100 ? "  %.0f/s  ETA %s" : "  %.3g/s  ETA %s", rate,
                 rate > 0 ? clock_text((total - done) / rate).c_str() : "?");
   return text + tail;
 }

@@ -10,6 +10,8 @@ TEST_CASE("a progress bar shows the share done, the rate and the time left", "[p
   CHECK(ProgressMeter::bar(5, 10, "problems", 10.0, 10) == "[=====>    ] 5/10 problems  0.5/s  ETA 0:10");
   CHECK(ProgressMeter::bar(0, 10, "problems", 0.0, 4) == "[>   ] 0/10 problems  0/s  ETA ?");
   CHECK(ProgressMeter::bar(3600, 7200, "simulated s", 36.0, 2) == "[=>] 3600/7200 simulated s  100/s  ETA 0:36");
+  CHECK(ProgressMeter::bar(6995.0000001, 7200, "simulated s", 1.0, 2) == "[=>] 6995/7200 simulated s  6995/s  ETA 0:00");
+  CHECK(ProgressMeter::bar(2.5, 4, "hours", 2.0, 2) == "[=>] 2.5/4 hours  1.25/s  ETA 0:01");
 }
 
 TEST_CASE("away from a terminal the meter writes plain lines only", "[progress]") {
