@@ -109,6 +109,10 @@ class HomeRun {
     planner_.anytime_expansions = settings.planner_expansions;
     planner_.anytime_min_weight = 3.0;
     planner_.time_limit = settings.planning_time;
+    planner_.node_limit = settings.planner_node_limit;
+    // EHC's own budget counts expansions of ~200 children each in a large
+    // home: the default 20000 ran into the time limit when no plan existed.
+    planner_.ehc_expansions = std::min<std::uint64_t>(planner_.ehc_expansions, settings.planner_node_limit / 20);
     planner_.epsilon = 0.002;
     repair::StrategyOptions strategy;
     strategy.planner = planner_;
@@ -173,6 +177,7 @@ class HomeRun {
       e.description = g.senior + ": " + predicate + (value ? "" : " no more");
       now.push_back(e);
       arrival.facts.push_back({e.atom, value});
+      belief_.told(e.atom, value);
     };
     for (const char* e : {"terrified", "sad", "bored"}) set(e, g.emotion == e);
     for (const char* p : {"soothed", "cheerful", "entertained"}) set(p, false);
@@ -189,6 +194,10 @@ class HomeRun {
     til.positive = false;
     til.atom = domains::senior_atom(g.window, g.senior);
     arrival.timed_literals.push_back(til);
+    // The home's own problem and belief keep the window for later missions
+    // (a goal merged into a running plan is planned again after it).
+    base_.timed_literals.push_back(til);
+    belief_.expect(til);
     arrival.goals.push_back(g.goal);
     arrival.motivation += (arrival.motivation.empty() ? "" : "; ") + g.motivation;
   }
@@ -321,11 +330,6 @@ class HomeRun {
     for (const PerceivedGoal& g : active_) motivation += (motivation.empty() ? "" : "; ") + g.motivation;
     world_.advance(t);
     belief_.observe(world_.observe());
-    for (const auto& [fact, value] : arrival.facts) belief_.told(fact, value);
-    for (const pddl::TimedInitialLiteral& l : arrival.timed_literals) {
-      belief_.expect(l);
-      base_.timed_literals.push_back(l);
-    }
     pddl::Condition all;
     all.kind = pddl::Condition::Kind::And;
     for (const PerceivedGoal& g : active_) all.children.push_back(g.goal);

@@ -29,6 +29,7 @@ nlohmann::json HomeSettings::json() const {
           {"grace_s", grace_s},
           {"windows", {{"terrified_s", terrified_window_s}, {"other_s", other_window_s}}},
           {"planner_expansions", planner_expansions},
+          {"planner_node_limit", planner_node_limit},
           {"planning_time", planning_time}};
 }
 
@@ -65,6 +66,7 @@ HomeSettings HomeSettings::from_json(const nlohmann::json& j) {
     s.terrified_window_s = j.at("windows").at("terrified_s").get<double>();
     s.other_window_s = j.at("windows").at("other_s").get<double>();
     s.planner_expansions = j.at("planner_expansions").get<std::uint64_t>();
+    s.planner_node_limit = j.value("planner_node_limit", s.planner_node_limit);
     s.planning_time = j.at("planning_time").get<double>();
   } catch (const nlohmann::json::exception& e) {
     throw std::invalid_argument(std::string("the run's settings: ") + e.what());

@@ -49,6 +49,9 @@ struct HomeSettings {
   // same outcomes as 300 with planning p95 1.8 s against 0.13 s
   // (`alplan home --planner-expansions N`).
   std::uint64_t planner_expansions = 300;
+  // A search that finds nothing stops after this many nodes, the same in
+  // every run, not at the time limit, which depends on the machine.
+  std::size_t planner_node_limit = 20000;
   double planning_time = 10.0;
 
   nlohmann::json json() const;
