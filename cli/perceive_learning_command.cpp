@@ -4,6 +4,10 @@
 // that the trainer learns. Models are saved to files and loaded by path.
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
+
+#include <functional>
+
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -13,6 +17,7 @@
 #include "cli/commands.h"
 #include "cli/perceive_common.h"
 #include "perception/vision/cnn_runs.h"
+#include "planner/progress_meter.h"
 
 namespace alplan::cli {
 namespace {
@@ -74,12 +79,23 @@ void print_evaluation(const perception::ConfusionMatrix& m, bool json) {
               m.macro_precision(), m.macro_recall());
 }
 
+// Training as a progress meter on stderr: a bar on a terminal, a line an
+// epoch elsewhere. The run may stop early; the bar then ends short.
+std::function<void(const perception::EpochReport&)> epoch_meter(ProgressMeter& meter) {
+  return [&meter](const perception::EpochReport& e) {
+    char line[96];
+    std::snprintf(line, sizeof line, "epoch %d done (%.0f s)", e.epoch, e.seconds);
+    meter.update(e.epoch, line);
+  };
+}
+
 int train(LearningOptions o, bool grey, const std::string& title) {
   o.run.training.l2_mode =
       o.l2_mode == "penalty" ? perception::L2Mode::LossPenalty : perception::L2Mode::DecoupledWeightDecay;
   o.run.architecture.channels = grey ? 1 : 3;
   o.run.training.seed = o.run.seed;
-  if (!o.json) o.run.training.on_epoch = [](const perception::EpochReport& e) { std::fprintf(stderr, "epoch %d done\n", e.epoch); };
+  ProgressMeter meter(std::cerr, o.run.training.epochs, "epochs", isatty(STDERR_FILENO) != 0);
+  if (!o.json) o.run.training.on_epoch = epoch_meter(meter);
   const perception::ImageDataset data = perception::read_image_data(o.layout, o.data, grey, o.limit);
   auto [model, report] = perception::train_and_test_cnn(data, o.run);
   print_run(report, title, o.json);
@@ -135,7 +151,8 @@ int trainer_check(LearningOptions o) {
   o.run.architecture.channels = 1;
   o.run.training.l2_mode =
       o.l2_mode == "penalty" ? perception::L2Mode::LossPenalty : perception::L2Mode::DecoupledWeightDecay;
-  if (!o.json) o.run.training.on_epoch = [](const perception::EpochReport& e) { std::fprintf(stderr, "epoch %d done (%.0f s)\n", e.epoch, e.seconds); };
+  ProgressMeter meter(std::cerr, o.run.training.epochs, "epochs", isatty(STDERR_FILENO) != 0);
+  if (!o.json) o.run.training.on_epoch = epoch_meter(meter);
   perception::ReadOptions read;
   read.limit = o.limit;
   const std::string dir = o.data.empty() ? "/usr/share/datasets/fashion-mnist" : o.data;
