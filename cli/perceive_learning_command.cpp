@@ -98,6 +98,7 @@ int train(LearningOptions o, bool grey, const std::string& title) {
   if (!o.json) o.run.training.on_epoch = epoch_meter(meter);
   const perception::ImageDataset data = perception::read_image_data(o.layout, o.data, grey, o.limit);
   auto [model, report] = perception::train_and_test_cnn(data, o.run);
+  meter.finish();
   print_run(report, title, o.json);
   if (!o.out.empty()) {
     model.save(o.out);
@@ -159,6 +160,7 @@ int trainer_check(LearningOptions o) {
   const perception::ImageDataset train_set = perception::read_fashion_mnist(true, read, dir);
   const perception::ImageDataset test_set = perception::read_fashion_mnist(false, {}, dir);
   auto [model, report] = perception::train_and_test_cnn(train_set, test_set, o.run);
+  meter.finish();
   print_run(report, "the paper's CNN on Fashion-MNIST (Debian dataset-fashion-mnist, its 10,000 test images)", o.json);
   const bool passed = report.test.accuracy() >= o.threshold;
   if (!o.json) std::printf("%s: test accuracy %.4f %s %.2f\n", passed ? "PASS" : "FAIL", report.test.accuracy(), passed ? ">=" : "<", o.threshold);
