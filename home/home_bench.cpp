@@ -7,13 +7,6 @@
 namespace alplan::home {
 namespace {
 
-double quantile(std::vector<double> values, double q) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  const auto at = static_cast<std::size_t>(q * static_cast<double>(values.size() - 1) + 0.5);
-  return values[std::min(at, values.size() - 1)];
-}
-
 nlohmann::json latency(const std::vector<double>& seconds) {
   return {{"plans", seconds.size()},
           {"p50_s", quantile(seconds, 0.5)},

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <fstream>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -73,28 +71,20 @@ pddl::Problem calm_problem(const pddl::Problem& problem) {
   return out;
 }
 
-nlohmann::json steps_json(const repair::ExecutingPlan& plan, const HomeMap& map) {
-  nlohmann::json steps = nlohmann::json::array();
-  for (const repair::ScheduledAction& s : plan.steps) {
-    std::string robot;
-    std::istringstream words(s.name.substr(1, s.name.size() - 2));
-    for (std::string w; words >> w;) {
-      if (map.has_robot(w)) {
-        robot = w;
-        break;
-      }
-    }
-    steps.push_back({{"start", s.start}, {"duration", s.duration}, {"action", s.name}, {"robot", robot}});
-  }
-  return steps;
-}
-
 std::string robot_of(const std::string& action, const HomeMap& map) {
   std::istringstream words(action.size() > 2 ? action.substr(1, action.size() - 2) : action);
   for (std::string w; words >> w;) {
     if (map.has_robot(w)) return w;
   }
   return {};
+}
+
+nlohmann::json steps_json(const repair::ExecutingPlan& plan, const HomeMap& map) {
+  nlohmann::json steps = nlohmann::json::array();
+  for (const repair::ScheduledAction& s : plan.steps) {
+    steps.push_back({{"start", s.start}, {"duration", s.duration}, {"action", s.name}, {"robot", robot_of(s.name, map)}});
+  }
+  return steps;
 }
 
 class HomeRun {
@@ -339,9 +329,6 @@ class HomeRun {
     const repair::PlanningOutcome planned =
         repair::plan_in_process(loaded_.home.domain, current_problem_, t, planner_);
     if (!planned.plan) {
-      if (const char* dump = std::getenv("ALPLAN_HOME_DUMP")) {
-        std::ofstream(dump) << pddl::write_problem(current_problem_);
-      }
       explain(t, motivation, "no plan reaches the goals in course in time",
               planned.message + "; the seniors are looked at again when their windows close");
       summary_.planning_seconds.push_back(planned.seconds);
@@ -407,20 +394,20 @@ class HomeRun {
 
 }  // namespace
 
+double quantile(std::vector<double> values, double q) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const auto at = static_cast<std::size_t>(q * static_cast<double>(values.size() - 1) + 0.5);
+  return values[std::min(at, values.size() - 1)];
+}
+
 nlohmann::json HomeSummary::json() const {
-  std::vector<double> sorted = planning_seconds;
-  std::sort(sorted.begin(), sorted.end());
-  const auto quantile = [&](double q) {
-    return sorted.empty() ? 0.0 : sorted[std::min(sorted.size() - 1, static_cast<std::size_t>(q * static_cast<double>(sorted.size())))];
-  };
   return {{"goals", goals},         {"comforted", comforted},     {"within_window", within_window},
           {"windows_missed", windows_missed}, {"failures", failures}, {"plans", plans},
           {"merges", merges},       {"repairs", repairs},         {"repairs_failed", repairs_failed},
-          {"planning_p50_s", quantile(0.5)}, {"planning_p95_s", quantile(0.95)},
+          {"planning_p50_s", quantile(planning_seconds, 0.5)}, {"planning_p95_s", quantile(planning_seconds, 0.95)},
           {"episodes", episodes},   {"episodes_detected", episodes_detected}, {"false_alarms", false_alarms}, {"end_time", end_time}};
 }
-
-HomeMap home_map_of(const HomeSettings& settings) { return load(settings).map; }
 
 HomeSummary run_home(const HomeSettings& settings, EventLog& log, const std::function<void(double)>& on_time) {
   HomeRun run(settings, log);

@@ -33,12 +33,12 @@ struct HomeSummary {
   nlohmann::json json() const;
 };
 
+// The q-quantile (0..1) of the values, nearest rank; 0 for none.
+double quantile(std::vector<double> values, double q);
+
 // Throws std::invalid_argument (bad settings: an unknown strategy, senior,
 // observation model) or the loaders' errors naming the file.
 // `on_time`: told the simulated time as the run goes (a progress meter).
 HomeSummary run_home(const HomeSettings& settings, EventLog& log, const std::function<void(double)>& on_time = {});
-
-// The home the settings describe, as its map (for checking names early).
-HomeMap home_map_of(const HomeSettings& settings);
 
 }  // namespace alplan::home
