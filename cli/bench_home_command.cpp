@@ -66,6 +66,7 @@ void add_bench_home_command(CLI::App* bench, int& exit_code) {
                   "Anytime improvement: expansions per weight; 0: the first plan");
   cmd->add_option("--strategy", s.strategy, "Repair strategy");
   cmd->add_option("--out", o->out, "Write bench-home.json here");
+  cmd->add_option("--unplanned-dir", s.unplanned_dir, "Write each problem the planner found no plan for here (PDDL)");
   cmd->callback([o, &exit_code] { exit_code = guarded([&] { return run_bench_home(*o); }, "bench home"); });
 }
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -311,6 +313,14 @@ class HomeRun {
     return take_pending(t);
   }
 
+  void keep_unplanned() {
+    if (settings_.unplanned_dir.empty()) return;
+    std::filesystem::create_directories(settings_.unplanned_dir);
+    const std::string stem = settings_.unplanned_dir + "/unplanned-" + std::to_string(++unplanned_);
+    std::ofstream(stem + ".pddl") << pddl::write_problem(current_problem_);
+    if (unplanned_ == 1) std::ofstream(settings_.unplanned_dir + "/domain.pddl") << pddl::write_domain(*loaded_.home.files.domain);
+  }
+
   // Plans every goal in course from what the robots believe at t, then
   // executes under the monitor until the plan ends; returns the time then.
   double mission(double t) {
@@ -329,6 +339,7 @@ class HomeRun {
     const repair::PlanningOutcome planned =
         repair::plan_in_process(loaded_.home.domain, current_problem_, t, planner_);
     if (!planned.plan) {
+      keep_unplanned();
       explain(t, motivation, "no plan reaches the goals in course in time",
               planned.message + "; the seniors are looked at again when their windows close");
       summary_.planning_seconds.push_back(planned.seconds);
@@ -388,7 +399,7 @@ class HomeRun {
   bool replan_ = false;
   pddl::Problem current_problem_;
   bool merge_blocked_ = false;
-  int plans_ = 0, current_plan_ = 0, serial_ = 0;
+  int plans_ = 0, current_plan_ = 0, serial_ = 0, unplanned_ = 0;
   HomeSummary summary_;
 };
 

@@ -53,6 +53,9 @@ struct HomeSettings {
   // every run, not at the time limit, which depends on the machine.
   std::size_t planner_node_limit = 20000;
   double planning_time = 10.0;
+  // Not part of the run (left out of json()): where to write, as PDDL, each
+  // problem the planner found no plan for, to study the search offline.
+  std::string unplanned_dir;
 
   nlohmann::json json() const;
   // Throws std::invalid_argument naming a field of the wrong kind.
