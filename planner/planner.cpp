@@ -1,5 +1,6 @@
 #include "planner/planner.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -219,9 +220,46 @@ Plan to_plan(const GroundTask& task, const Solution& solution, std::vector<Actio
   return plan;
 }
 
-PlannerWorkspace prepare_workspace(std::shared_ptr<const GroundTask> task) {
-  auto index = std::make_shared<const TaskIndex>(std::move(task));
-  return {index, TemporalRpg::graph_for(*index)};
+namespace {
+
+std::vector<ActionId> running_actions(const PlanningStart& start) {
+  std::vector<ActionId> ids;
+  for (const RunningAction& r : start.running) ids.push_back(r.action);
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+
+// Whether the workspace's relevance serves this task: the same ground
+// actions and goal, and the running actions among those it kept.
+bool relevance_fits(const PlannerWorkspace::Relevance& r, const GroundTask& task, const std::vector<ActionId>& keep) {
+  return task.actions.shares_with(r.source) && task.goal.positive == r.goal_positive &&
+         task.goal.negative == r.goal_negative && task.goal.numeric.empty() && task.goal.complex.empty() &&
+         std::includes(r.kept.begin(), r.kept.end(), keep.begin(), keep.end());
+}
+
+// The task's relevant view, through the workspace when it has one.
+RelevantView relevance_of(const std::shared_ptr<const GroundTask>& task, const std::vector<ActionId>& keep,
+                          PlannerWorkspace* workspace) {
+  if (workspace && workspace->relevance && relevance_fits(*workspace->relevance, *task, keep)) {
+    return relevant_view_like(task, workspace->relevance->view);
+  }
+  RelevantView view = relevant_view(task, keep);
+  if (workspace) {
+    workspace->relevance = std::make_shared<const PlannerWorkspace::Relevance>(
+        PlannerWorkspace::Relevance{task->actions, task->goal.positive, task->goal.negative, keep, view});
+  }
+  return view;
+}
+
+}  // namespace
+
+PlannerWorkspace prepare_workspace(std::shared_ptr<const GroundTask> task, bool prune_irrelevant) {
+  PlannerWorkspace workspace;
+  if (prune_irrelevant) task = relevance_of(task, {}, &workspace).task;
+  workspace.index = std::make_shared<const TaskIndex>(std::move(task));
+  workspace.graph = TemporalRpg::graph_for(*workspace.index);
+  return workspace;
 }
 
 Planner::Planner(std::shared_ptr<const GroundTask> task, PlannerOptions options,
@@ -233,6 +271,28 @@ PlannerResult Planner::plan(const std::function<void(const FoundPlan&)>& on_plan
 }
 
 PlannerResult Planner::plan_from(const PlanningStart& start, const std::function<void(const FoundPlan&)>& on_plan) {
+  return options_.prune_irrelevant ? plan_relevant(start, on_plan) : search_from(start, on_plan);
+}
+
+PlannerResult Planner::plan_relevant(const PlanningStart& start,
+                                     const std::function<void(const FoundPlan&)>& on_plan) {
+  const Clock::time_point began = Clock::now();
+  const RelevantView view = relevance_of(task_, running_actions(start), workspace_.get());
+  if (view.pruned == 0) return search_from(start, on_plan);
+  PlanningStart mapped = start;
+  for (RunningAction& r : mapped.running) r.action = view.new_id[r.action];
+  PlannerOptions options = options_;
+  options.prune_irrelevant = false;
+  const double analysis = since(began);
+  options.time_limit = std::max(0.0, options_.time_limit - analysis);
+  // The budget's reserve still ends where the caller's would have.
+  if (options.reserve_planning_time) mapped.now += analysis;
+  PlannerResult result = Planner(view.task, options, workspace_).search_from(mapped, on_plan);
+  result.times.setup += analysis;
+  return result;
+}
+
+PlannerResult Planner::search_from(const PlanningStart& start, const std::function<void(const FoundPlan&)>& on_plan) {
   const Clock::time_point began = Clock::now();
   // The limit counts from here, setup included: a caller's budget is wall time.
   SearchDeadline deadline;
@@ -285,7 +345,10 @@ PlannerResult Planner::plan_from(const PlanningStart& start, const std::function
   std::shared_ptr<const LinearMetric> order_metric;
   if (options_.order == "metric" && linear) order_metric = std::make_shared<const LinearMetric>(std::move(*linear));
   TemporalRpg heuristic(index, {options_.heuristic == "trpg", order_metric}, workspace_ ? workspace_->graph : nullptr);
-  if (workspace_) *workspace_ = {shared_index, heuristic.graph()};
+  if (workspace_) {
+    workspace_->index = shared_index;
+    workspace_->graph = heuristic.graph();
+  }
   const bool from_initial = is_initial(*task_, start);
   // Plans from an observed state are checked by validate_from; the plan
   // validator (which grounds the task again for itself) only from the start.

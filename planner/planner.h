@@ -19,6 +19,7 @@
 
 #include "planner/ground_task.h"
 #include "planner/plan.h"
+#include "planner/relevance.h"
 #include "planner/search_space.h"
 #include "planner/task_index.h"
 #include "planner/temporal_rpg.h"
@@ -60,6 +61,9 @@ struct PlannerOptions {
   // starts before now + time_limit, so deadlines (timed literals) shrink by
   // the budget and the plan is still executable when it arrives.
   bool reserve_planning_time = false;
+  // Search only the actions that can contribute to the goal
+  // (planner/relevance.h); the plans are the same, the heuristic cheaper.
+  bool prune_irrelevant = true;
 };
 
 struct FoundPlan {
@@ -122,11 +126,21 @@ PlanningStart initial_start(const GroundTask& task);
 struct PlannerWorkspace {
   std::shared_ptr<const TaskIndex> index;
   std::shared_ptr<const TemporalRpg::Graph> graph;
+  // The relevant actions of the last task planned on, for tasks that share
+  // its ground actions and goal; `kept` were kept whatever they do.
+  struct Relevance {
+    SharedVector<GroundAction> source;
+    std::vector<FactId> goal_positive, goal_negative;
+    std::vector<ActionId> kept;
+    RelevantView view;
+  };
+  std::shared_ptr<const Relevance> relevance;
 };
 
-// Builds the workspace for a task ahead of planning (a monitor does it when
-// execution starts, so that a repair finds it ready).
-PlannerWorkspace prepare_workspace(std::shared_ptr<const GroundTask> task);
+// Builds the workspace for a task ahead of planning, on its relevant actions
+// unless `prune_irrelevant` is off (a monitor does it when execution
+// starts, so that a repair finds it ready).
+PlannerWorkspace prepare_workspace(std::shared_ptr<const GroundTask> task, bool prune_irrelevant = true);
 
 class Planner {
  public:
@@ -138,6 +152,10 @@ class Planner {
   PlannerResult plan_from(const PlanningStart& start, const std::function<void(const FoundPlan&)>& on_plan = {});
 
  private:
+  // plan_from on the relevant actions' view, its ids mapped.
+  PlannerResult plan_relevant(const PlanningStart& start, const std::function<void(const FoundPlan&)>& on_plan);
+  PlannerResult search_from(const PlanningStart& start, const std::function<void(const FoundPlan&)>& on_plan);
+
   std::shared_ptr<const GroundTask> task_;
   PlannerOptions options_;
   std::shared_ptr<PlannerWorkspace> workspace_;

@@ -198,7 +198,7 @@ class Execution {
     grounding.names.exogenous_predicates = mission_.exogenous_predicates;
     grounding_ = std::make_unique<GroundingCache>(grounding);
     try {
-      *grounding_->planner_workspace() = prepare_workspace(grounding_->ground(*mission_.domain, problem_));
+      *grounding_->planner_workspace() = prepare_workspace(grounding_->ground(*mission_.domain, problem_), options_.planner.prune_irrelevant);
     } catch (const std::exception&) {
     }
     report_.preparation_seconds =
