@@ -38,6 +38,8 @@ struct PlanOptions {
   std::string heuristic = "trpg";
   double weight = 3.0;
   std::string order = PlannerOptions{}.order;
+  bool deferred_evaluation = PlannerOptions{}.deferred_evaluation;
+  bool prune_irrelevant = PlannerOptions{}.prune_irrelevant;
   std::string out;
   bool json = false;
   bool quiet = false;
@@ -144,6 +146,8 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
   planner_options.heuristic = options.heuristic;
   planner_options.weight = options.weight;
   planner_options.order = options.order;
+  planner_options.deferred_evaluation = options.deferred_evaluation;
+  planner_options.prune_irrelevant = options.prune_irrelevant;
   planner_options.anytime = options.anytime;
   planner_options.epsilon = options.epsilon;
   planner_options.reserve_planning_time = options.reserve_planning_time;
@@ -245,6 +249,10 @@ void add_plan_command(CLI::App& app, int& exit_code) {
                   "How wastar (and anytime search) orders nodes: metric (cost and makespan so far and to come, "
                   "for a minimised metric that only grows) or steps (default)")
       ->check(CLI::IsMember({"metric", "steps"}));
+  cmd->add_flag("--deferred", options->deferred_evaluation,
+                "GBFS and wastar evaluate a node when they expand it, not when they generate it");
+  cmd->add_flag("!--no-relevance", options->prune_irrelevant,
+                "Search every ground action, not only those that can contribute to the goal");
   cmd->add_option("--out", options->out, "Write the best plan to this file");
   cmd->add_flag("--json", options->json, "Print the result as JSON");
   cmd->add_flag("-q,--quiet", options->quiet, "Do not print warnings about the input");

@@ -23,11 +23,14 @@ using OpenList = std::priority_queue<Entry, std::vector<Entry>, std::greater<Ent
 class BestFirstSearch : public SearchEngine {
  public:
   BestFirstSearch(SearchSpace& space, TemporalRpg& heuristic, BestFirstOptions options)
-      : space_(space), heuristic_(heuristic), options_(std::move(options)) {}
+      : space_(space), heuristic_(heuristic), options_(std::move(options)),
+        // Ordered by the metric, a goal must be known when it is queued.
+        deferred_(options_.deferred && !by_metric()) {}
 
   std::string name() const override {
-    if (options_.weight == 0) return "gbfs";
-    return "wastar (w=" + std::to_string(options_.weight) + (options_.metric ? ", metric" : "") + ")";
+    const std::string deferred = deferred_ ? ", deferred" : "";
+    if (options_.weight == 0) return deferred.empty() ? "gbfs" : "gbfs (deferred)";
+    return "wastar (w=" + std::to_string(options_.weight) + (options_.metric ? ", metric" : "") + deferred + ")";
   }
 
   SearchStatus step() override {
@@ -47,14 +50,30 @@ class BestFirstSearch : public SearchEngine {
       solution_ = std::move(goal->second);
       return SearchStatus::Solved;
     }
-    ++stats_.expanded;
     const PartialPlan plan = space_.partial_plan(*id);
+    if (!space_.node(*id).evaluated) {
+      // Deferred: the node waited in the queue under its parent's h.
+      if (!space_.evaluate_stored(*id, plan, heuristic_, stats_)) return SearchStatus::InProgress;
+      const SearchNode& n = space_.node(*id);
+      if (options_.prune && options_.prune(n)) return SearchStatus::InProgress;
+      if (n.h == 0 && (solution_ = space_.goal_reached(*id, plan))) return SearchStatus::Solved;
+    }
+    ++stats_.expanded;
     std::vector<Child> children = space_.children(*id, plan, stats_);
-    const std::vector<Snap>& helpful = space_.node(*id).helpful;
+    return deferred_ ? store_unevaluated(*id, children) : store_evaluated(*id, children);
+  }
+
+ private:
+  bool preferred(NodeId parent, const Child& child) const {
+    const std::vector<Snap>& helpful = space_.node(parent).helpful;
+    return std::find(helpful.begin(), helpful.end(), child.node.step.snap) != helpful.end();
+  }
+
+  SearchStatus store_evaluated(NodeId parent, std::vector<Child>& children) {
     for (Child& child : children) {
       if (options_.prune && options_.prune(child.node)) continue;
       if (passed(options_.deadline)) return SearchStatus::InProgress;
-      const bool preferred = std::find(helpful.begin(), helpful.end(), child.node.step.snap) != helpful.end();
+      const bool is_preferred = preferred(parent, child);
       if (!space_.evaluate(child, heuristic_, stats_)) continue;
       if (options_.prune && options_.prune(child.node)) continue;
       PartialPlan child_plan = child.plan;
@@ -75,12 +94,28 @@ class BestFirstSearch : public SearchEngine {
           continue;
         }
       }
-      push(*stored, preferred);
+      push(*stored, is_preferred);
     }
     return SearchStatus::InProgress;
   }
 
- private:
+  // Deferred evaluation (Richter & Helmert, ICAPS 2009): children are
+  // queued under their parent's h and evaluated only when taken out, so a
+  // node pays for one evaluation instead of one per child; with preferred
+  // operators the helpful children still go first.
+  SearchStatus store_unevaluated(NodeId parent, std::vector<Child>& children) {
+    const double h = space_.node(parent).h;
+    for (Child& child : children) {
+      if (passed(options_.deadline)) return SearchStatus::InProgress;
+      child.node.h = h;
+      child.node.makespan_bound = child.node.makespan;
+      if (options_.prune && options_.prune(child.node)) continue;
+      const bool is_preferred = preferred(parent, child);
+      if (std::optional<NodeId> stored = space_.insert(std::move(child), stats_)) push(*stored, is_preferred);
+    }
+    return SearchStatus::InProgress;
+  }
+
   bool by_metric() const { return options_.weight != 0 && options_.metric; }
 
   void push(NodeId id, bool preferred) {
@@ -118,6 +153,7 @@ class BestFirstSearch : public SearchEngine {
   SearchSpace& space_;
   TemporalRpg& heuristic_;
   BestFirstOptions options_;
+  bool deferred_;
   bool started_ = false;
   OpenList open_, preferred_;
   std::vector<bool> expanded_;

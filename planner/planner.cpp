@@ -382,6 +382,7 @@ PlannerResult Planner::search_from(const PlanningStart& start, const std::functi
     BestFirstOptions bfs;
     bfs.deadline = deadline;
     bfs.metric = order_metric;
+    bfs.deferred = options_.deferred_evaluation;
     if (can_prune && !result.plans.empty()) {
       bfs.prune = [&, this](const SearchNode& node) {
         if (!task_->metric) return static_cast<double>(node.depth) >= best_value;

@@ -64,6 +64,9 @@ struct PlannerOptions {
   // Search only the actions that can contribute to the goal
   // (planner/relevance.h); the plans are the same, the heuristic cheaper.
   bool prune_irrelevant = true;
+  // GBFS and weighted A* evaluate a node when they expand it, under its
+  // parent's h until then (search_engine.h); EHC is unchanged.
+  bool deferred_evaluation = false;
 };
 
 struct FoundPlan {

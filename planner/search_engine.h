@@ -53,6 +53,9 @@ struct BestFirstOptions {
   // Expand helpful children from their own queue, alternating with the
   // main one (Richter & Helmert's preferred operators).
   bool preferred_queue = true;
+  // Evaluate a node when it is expanded, not when it is generated (not
+  // with a metric order, whose goal test needs h at generation).
+  bool deferred = false;
   NodeBound prune;
   SearchDeadline deadline;
 };

@@ -84,17 +84,28 @@ std::vector<Child> SearchSpace::children(NodeId id, const PartialPlan& plan, Sea
   return result;
 }
 
-bool SearchSpace::evaluate(Child& child, TemporalRpg& heuristic, SearchStatistics& stats) const {
+bool SearchSpace::evaluate_node(SearchNode& node, const PartialPlan& plan, TemporalRpg& heuristic,
+                                SearchStatistics& stats) const {
   ++stats.evaluated;
-  HeuristicValue value = heuristic.evaluate(child.node.state, child.plan);
-  child.node.h = value.h;
-  child.node.helpful = std::move(value.helpful);
+  HeuristicValue value = heuristic.evaluate(node.state, plan);
+  node.h = value.h;
+  node.helpful = std::move(value.helpful);
+  node.evaluated = true;
   // The relaxed graph may separate happenings by epsilon where a real plan
   // need not; the bound gives that back.
-  child.node.makespan_bound = std::max(child.node.makespan, value.relaxed_makespan - epsilon_);
-  child.node.relaxed_cost = value.cost;
+  node.makespan_bound = std::max(node.makespan, value.relaxed_makespan - epsilon_);
+  node.relaxed_cost = value.cost;
   if (value.dead_end()) ++stats.dead_ends;
   return !value.dead_end();
+}
+
+bool SearchSpace::evaluate(Child& child, TemporalRpg& heuristic, SearchStatistics& stats) const {
+  return evaluate_node(child.node, child.plan, heuristic, stats);
+}
+
+bool SearchSpace::evaluate_stored(NodeId id, const PartialPlan& plan, TemporalRpg& heuristic,
+                                  SearchStatistics& stats) {
+  return evaluate_node(nodes_[id], plan, heuristic, stats);
 }
 
 void SearchSpace::set_root_heuristic(TemporalRpg& heuristic, SearchStatistics& stats) {
@@ -104,6 +115,7 @@ void SearchSpace::set_root_heuristic(TemporalRpg& heuristic, SearchStatistics& s
   nodes_[0].helpful = std::move(value.helpful);
   nodes_[0].makespan_bound = std::max(nodes_[0].makespan, value.relaxed_makespan - epsilon_);
   nodes_[0].relaxed_cost = value.cost;
+  nodes_[0].evaluated = true;
 }
 
 std::optional<NodeId> SearchSpace::insert(Child child, SearchStatistics& stats) {

@@ -45,6 +45,8 @@ struct SearchNode {
   double relaxed_cost = 0.0;  // the heuristic's estimate of the metric still to come
   TemporalSignature signature;
   std::vector<Snap> helpful;
+  // False while the node carries its parent's h (deferred evaluation).
+  bool evaluated = false;
 };
 
 struct SearchStatistics {
@@ -91,6 +93,8 @@ class SearchSpace {
                                 SearchStatistics& stats) const;
   // Evaluates a child; false for a dead end.
   bool evaluate(Child& child, TemporalRpg& heuristic, SearchStatistics& stats) const;
+  // The same for a node stored unevaluated (deferred evaluation).
+  bool evaluate_stored(NodeId id, const PartialPlan& plan, TemporalRpg& heuristic, SearchStatistics& stats);
   // Stores a child unless a stored node with its state dominates it.
   std::optional<NodeId> insert(Child child, SearchStatistics& stats);
   void set_root_heuristic(TemporalRpg& heuristic, SearchStatistics& stats);
@@ -112,6 +116,7 @@ class SearchSpace {
   double release_;
   bool dominated(const SearchNode& candidate, NodeId stored) const;
   static TemporalSignature signature_of(const SearchState& state, const PartialPlan& plan);
+  bool evaluate_node(SearchNode& node, const PartialPlan& plan, TemporalRpg& heuristic, SearchStatistics& stats) const;
 
   bool deadlines_;  // the task has timed initial literals
   std::deque<SearchNode> nodes_;

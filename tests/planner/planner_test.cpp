@@ -364,3 +364,40 @@ TEST_CASE("a search the time limit stops is handed over, not freed, so the limit
   stopped = PlannerResult{};
   CHECK(stopped.search_memory == nullptr);
 }
+
+TEST_CASE("deferred evaluation: one evaluation per expansion, the same kind of plans") {
+  const std::string base = test::shared_dir() + "/benchmarks/ipc/";
+  for (const std::string problem : {"ipc-2004/satellite-time-time-windows-strips/instances/instance-1.pddl",
+                                    "ipc-2011/match-cellar-temporal-satisficing/instances/instance-1.pddl"}) {
+    const std::string dir = problem.substr(0, problem.find("/instances/"));
+    auto task = ground(test::load_task(base + dir + "/domain.pddl", base + problem).normalized);
+    for (const std::string search : {"gbfs", "wastar"}) {
+      INFO(problem << " " << search);
+      PlannerOptions eager;
+      eager.search = search;
+      PlannerOptions deferred = eager;
+      deferred.deferred_evaluation = true;
+      const PlannerResult a = Planner(task, eager).plan();
+      const PlannerResult b = Planner(task, deferred).plan();
+      REQUIRE(a.status == Status::Solved);
+      REQUIRE(b.status == Status::Solved);
+      CHECK(b.best()->validation.valid);
+      CHECK(b.best()->engine.find("deferred") != std::string::npos);
+      CHECK(a.best()->engine.find("deferred") == std::string::npos);
+      // The root, then one per node taken out: expanded, or a dead end, or
+      // the goal (recognised when taken out).
+      CHECK(b.statistics.evaluated <= b.statistics.expanded + b.statistics.dead_ends + 2);
+      CHECK(b.statistics.evaluated < a.statistics.evaluated);
+    }
+  }
+  // Ordered by the metric, the goal test needs h as nodes are queued:
+  // deferring is refused quietly there.
+  const auto task = ground_text(kMatch, kMatchProblem);
+  PlannerOptions metric;
+  metric.search = "wastar";
+  metric.order = "metric";
+  metric.deferred_evaluation = true;
+  const PlannerResult m = Planner(task, metric).plan();
+  REQUIRE(m.status == Status::Solved);
+  CHECK(m.best()->engine.find("deferred") == std::string::npos);
+}
