@@ -32,7 +32,9 @@ SimulatedSenior::SimulatedSenior(std::string name, std::uint64_t seed, const Sen
       pulse_(seed * 31 + 7),
       profile_(pulse_.random_subject()),
       response_(pulse_.random_stress_response()),
-      episodes_(std::move(scripted)) {}
+      episodes_(std::move(scripted)),
+      // The phase from the seed, as the alarm study's: no other random stream.
+      drift_phase_(6.283185307179586 * std::fmod(static_cast<double>(seed) * 0.6180339887498949, 1.0)) {}
 
 double SimulatedSenior::uniform() { return static_cast<double>(random_() >> 11) * 0x1.0p-53; }
 
@@ -69,7 +71,10 @@ std::vector<perception::StressWindow> SimulatedSenior::readings_until(double t) 
     perception::RecordingConditions conditions;
     conditions.sample_rate_hz = options_.sample_rate_hz;
     conditions.duration_s = options_.chunk_s + window + 5.0;  // the core closes a window a hop later
-    const perception::SubjectProfile body = stressed ? perception::under_stress(profile_, response_) : profile_;
+    perception::SubjectProfile resting = profile_;
+    resting.resting_hr_bpm +=
+        options_.drift_bpm * std::sin(6.283185307179586 * (start + 0.5 * options_.chunk_s) / 1200.0 + drift_phase_);
+    const perception::SubjectProfile body = stressed ? perception::under_stress(resting, response_) : resting;
     const perception::SimulatedRecording recording = pulse_.simulate(body, conditions);
     for (perception::StressWindow w : perception::stress_windows(recording.recording)) {
       if (w.end_s <= window + 1e-9 || w.end_s > window + options_.chunk_s + 1e-9) continue;

@@ -8,7 +8,7 @@
 //   of this senior's own profile, stressed during an episode, cut into the
 //   wristband core's 30 s windows every 5 s; the stress detector sees only
 //   those windows. The pulse is simulated a minute at a time, so the body
-//   follows the episode to the minute.
+//   follows the episode to the minute, and the resting rate drifts slowly.
 // - the face: an episode shows its emotion (terrified -> fear, sad -> sad,
 //   bored -> a neutral face: boredom has no face of its own, which is why
 //   the boredom rule exists), a calm senior a neutral or happy face; the
@@ -45,6 +45,11 @@ struct SeniorModelOptions {
   double recovery_s = 120.0;
   double chunk_s = 60.0;
   double sample_rate_hz = 50.0;
+  // A resting heart rate is not a constant (posture, activity, meals): it
+  // swings by up to this many bpm over a 20-minute period, the alarm
+  // study's drift (perception/stress/stress_alarm_study.h), so that a
+  // baseline learned in the first minutes goes stale as a real one would.
+  double drift_bpm = 8.0;
   // Shares of the emotions beneath an episode: terrified, sad, bored.
   double terrified_share = 0.25, sad_share = 0.4;
 };
@@ -83,6 +88,7 @@ class SimulatedSenior {
   std::vector<Episode> episodes_;
   double simulated_until_ = 0.0;  // of the pulse
   std::vector<perception::StressWindow> buffered_;
+  double drift_phase_ = 0.0;
 };
 
 }  // namespace alplan::home

@@ -125,3 +125,36 @@ TEST_CASE("a script naming a senior the home lacks is refused", "[home]") {
 }
 
 }  // namespace alplan::home
+
+namespace alplan::home {
+
+TEST_CASE("a senior's resting heart rate drifts slowly unless told not to", "[home]") {
+  // The mean rate over the minutes around the drift's two extremes (a
+  // 20-minute swing): apart by most of twice the drift with it, close without.
+  const auto swing = [](double drift_bpm) {
+    SeniorModelOptions options;
+    options.episodes_per_hour = 0.0;
+    options.drift_bpm = drift_bpm;
+    SimulatedSenior senior("senior1", 11, options);
+    std::vector<double> minute_mean;
+    const std::vector<perception::StressWindow> windows = senior.readings_until(1200.0);
+    for (int minute = 0; minute < 20; ++minute) {
+      double sum = 0.0;
+      int n = 0;
+      for (const perception::StressWindow& w : windows) {
+        if (w.end_s > minute * 60.0 && w.end_s <= (minute + 1) * 60.0 && w.features.has_heart_rate) {
+          sum += w.features.mean_hr_bpm;
+          ++n;
+        }
+      }
+      if (n > 0) minute_mean.push_back(sum / n);
+    }
+    REQUIRE(minute_mean.size() >= 18);
+    return *std::max_element(minute_mean.begin(), minute_mean.end()) -
+           *std::min_element(minute_mean.begin(), minute_mean.end());
+  };
+  CHECK(swing(10.0) > 12.0);
+  CHECK(swing(0.0) < 6.0);
+}
+
+}  // namespace alplan::home
