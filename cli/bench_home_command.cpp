@@ -60,10 +60,17 @@ void add_bench_home_command(CLI::App* bench, int& exit_code) {
   cmd->add_option("--objects", s.generate_objects, "Portable objects")->check(CLI::Range(1, 10000));
   cmd->add_option("--hours", o->hours, "Simulated hours")->check(CLI::Range(0.01, 168.0));
   cmd->add_option("--seed", s.seed, "Seed of the home, the seniors and the failures");
+  cmd->add_option("--drift", s.seniors.drift_bpm, "Seniors' resting heart rate swinging slowly by up to this many bpm")
+      ->check(CLI::Range(0.0, 40.0));
   cmd->add_option("--episodes-per-hour", s.seniors.episodes_per_hour, "Stress episodes per senior and hour")
       ->check(CLI::Range(0.0, 60.0));
   cmd->add_option("--planner-expansions", s.planner_expansions,
                   "Anytime improvement: expansions per weight; 0: the first plan");
+  cmd->add_option("--planner-node-limit", s.planner_node_limit,
+                  "Nodes a planner call may store before it gives up (the same in every run, unlike a time limit)");
+  cmd->add_option("--replan-expansions", s.replan_expansions,
+                  "Anytime improvement of repairs' and merges' plans: expansions per weight; 0: the first plan");
+  cmd->add_flag("!--no-dispatch", s.dispatch, "Plan each mission with every robot, not the nearest one per senior");
   cmd->add_option("--strategy", s.strategy, "Repair strategy");
   cmd->add_option("--out", o->out, "Write bench-home.json here");
   cmd->add_option("--unplanned-dir", s.unplanned_dir, "Write each problem the planner found no plan for here (PDDL)");

@@ -133,12 +133,19 @@ void add_home_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--observe", s.observe, "What the robots see: full, iot, camera (repair/observation.h)");
   cmd->add_option("--until", s.until, "Simulated seconds to run")->check(CLI::Range(0.0, 7.0 * 24 * 3600));
   cmd->add_option("--seed", s.seed, "Seed of the seniors, the failures and a generated home");
+  cmd->add_option("--drift", s.seniors.drift_bpm, "Seniors' resting heart rate swinging slowly by up to this many bpm")
+      ->check(CLI::Range(0.0, 40.0));
   cmd->add_option("--episodes-per-hour", s.seniors.episodes_per_hour, "Stress episodes per senior and hour (drawn homes)")
       ->check(CLI::Range(0.0, 60.0));
   cmd->add_option("--failure-chance", s.failure_chance, "Chance that a new plan meets a drawn failure")
       ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--planner-expansions", s.planner_expansions,
                   "Anytime improvement: expansions per weight (deterministic); 0: the first plan");
+  cmd->add_option("--planner-node-limit", s.planner_node_limit,
+                  "Nodes a planner call may store before it gives up (deterministic, unlike the time limit)");
+  cmd->add_option("--replan-expansions", s.replan_expansions,
+                  "Anytime improvement of repairs' and merges' plans: expansions per weight; 0: the first plan");
+  cmd->add_flag("!--no-dispatch", s.dispatch, "Plan each mission with every robot, not the nearest one per senior");
   cmd->add_option("--log", o->log, "Write the event log here (JSON Lines)");
   cmd->add_flag("--quiet", o->quiet, "Print the summary only");
   cmd->callback([o, &exit_code] { exit_code = guarded([&] { return run_home_command(*o); }, "the home"); });

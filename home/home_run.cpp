@@ -13,6 +13,7 @@
 #include "domains/home_generator.h"
 #include "domains/mission_run.h"
 #include "home/home_perception.h"
+#include "home/robot_dispatch.h"
 #include "pddl_parser/writer.h"
 #include "repair/monitor.h"
 #include "repair/observation.h"
@@ -100,14 +101,24 @@ class HomeRun {
     planner_.anytime = settings.planner_expansions > 0;
     planner_.anytime_expansions = settings.planner_expansions;
     planner_.anytime_min_weight = 3.0;
+    // One evaluation per expansion, not one per child: the anytime
+    // weights cost a sixth of the time with the same outcomes (1 h of the
+    // large home, home/README.md).
+    planner_.deferred_evaluation = true;
     planner_.time_limit = settings.planning_time;
     planner_.node_limit = settings.planner_node_limit;
-    // EHC's own budget counts expansions of ~200 children each in a large
-    // home: the default 20000 ran into the time limit when no plan existed.
-    planner_.ehc_expansions = std::min<std::uint64_t>(planner_.ehc_expansions, settings.planner_node_limit / 20);
+    // EHC's own budget counts expansions; EHC stores about two nodes per
+    // expansion on the home's relevant actions (~16 children each), so a
+    // fifth of the node limit leaves the fallback searches room.
+    planner_.ehc_expansions = std::min<std::uint64_t>(planner_.ehc_expansions, settings.planner_node_limit / 5);
     planner_.epsilon = 0.002;
+    // Repairs and merges answer a world that has changed under a running
+    // plan: their first plan goes out, improved only as far as this allows.
+    replanner_ = planner_;
+    replanner_.anytime = settings.replan_expansions > 0;
+    replanner_.anytime_expansions = settings.replan_expansions;
     repair::StrategyOptions strategy;
-    strategy.planner = planner_;
+    strategy.planner = replanner_;
     strategy_ = repair::make_strategy(settings.strategy, strategy);
   }
 
@@ -321,6 +332,20 @@ class HomeRun {
     if (unplanned_ == 1) std::ofstream(settings_.unplanned_dir + "/domain.pddl") << pddl::write_domain(*loaded_.home.files.domain);
   }
 
+  // The robots this mission plans with (robot_dispatch.h), the others
+  // taken out of `problem`; all of them when dispatching is off.
+  std::vector<std::string> dispatch(pddl::Problem& problem) const {
+    std::vector<std::string> all;
+    for (const Placed& r : loaded_.map.robots) all.push_back(r.name);
+    if (!settings_.dispatch) return all;
+    std::vector<Call> calls;
+    for (const PerceivedGoal& g : active_) calls.push_back({g.senior, g.window_end});
+    std::vector<std::string> chosen = dispatch_robots(problem, all, calls);
+    if (chosen.empty()) return all;
+    problem = with_robots_only(problem, all, chosen);
+    return chosen;
+  }
+
   // Plans every goal in course from what the robots believe at t, then
   // executes under the monitor until the plan ends; returns the time then.
   double mission(double t) {
@@ -336,6 +361,7 @@ class HomeRun {
     pddl::Problem goal_problem = base_;
     goal_problem.goal = all;
     current_problem_ = repair::reformulate(loaded_.home.domain, goal_problem, belief_.state(), {}, t, 0.0);
+    const std::vector<std::string> robots = dispatch(current_problem_);
     const repair::PlanningOutcome planned =
         repair::plan_in_process(loaded_.home.domain, current_problem_, t, planner_);
     if (!planned.plan) {
@@ -354,7 +380,7 @@ class HomeRun {
     m.domain = &loaded_.home.domain;
     m.problem = current_problem_;
     m.motivation = motivation;
-    m.robot = loaded_.map.robots.front().name;
+    m.robot = robots.empty() ? loaded_.map.robots.front().name : robots.front();
     m.exogenous_predicates = domains::exogenous_predicates();
     m.start_time = t;
     m.on_event = [this](const repair::MonitorEvent& e) { on_monitor_event(e); };
@@ -363,7 +389,7 @@ class HomeRun {
     options.step_size = settings_.step_s;
     // A home's plan runs long and meets many changes; a repair each is fine.
     options.max_repairs = 50;
-    options.planner = planner_;
+    options.planner = replanner_;
     options.observation = observation_options();
     merge_blocked_ = false;
     const repair::Monitor monitor(options);
@@ -392,7 +418,7 @@ class HomeRun {
   repair::Belief belief_;
   repair::RandomEventGenerator events_;
   std::mt19937_64 events_random_{settings_.seed * 104729 + 3};
-  PlannerOptions planner_;
+  PlannerOptions planner_, replanner_;
   std::unique_ptr<repair::RepairStrategy> strategy_;
   std::vector<PerceivedGoal> pending_, active_;
   std::vector<PerceivedGoal> unplannable_;  // no plan found: they wait for their windows to close

@@ -20,6 +20,7 @@ nlohmann::json HomeSettings::json() const {
           {"seniors_model",
            {{"episodes_per_hour", seniors.episodes_per_hour}, {"calm_start_s", seniors.calm_start_s},
             {"face_accuracy", seniors.face_accuracy}, {"recovery_s", seniors.recovery_s},
+            {"drift_bpm", seniors.drift_bpm},
             {"terrified_share", seniors.terrified_share}, {"sad_share", seniors.sad_share}}},
           {"script", script_json},
           {"failure_chance", failure_chance},
@@ -30,6 +31,8 @@ nlohmann::json HomeSettings::json() const {
           {"windows", {{"terrified_s", terrified_window_s}, {"other_s", other_window_s}}},
           {"planner_expansions", planner_expansions},
           {"planner_node_limit", planner_node_limit},
+          {"dispatch", dispatch},
+          {"replan_expansions", replan_expansions},
           {"planning_time", planning_time}};
 }
 
@@ -52,6 +55,8 @@ HomeSettings HomeSettings::from_json(const nlohmann::json& j) {
     s.seniors.calm_start_s = m.at("calm_start_s").get<double>();
     s.seniors.face_accuracy = m.at("face_accuracy").get<double>();
     s.seniors.recovery_s = m.at("recovery_s").get<double>();
+    // Logs written before seniors drifted replay without drift.
+    s.seniors.drift_bpm = m.value("drift_bpm", 0.0);
     s.seniors.terrified_share = m.at("terrified_share").get<double>();
     s.seniors.sad_share = m.at("sad_share").get<double>();
     for (const nlohmann::json& e : j.at("script")) {
@@ -67,6 +72,9 @@ HomeSettings HomeSettings::from_json(const nlohmann::json& j) {
     s.other_window_s = j.at("windows").at("other_s").get<double>();
     s.planner_expansions = j.at("planner_expansions").get<std::uint64_t>();
     s.planner_node_limit = j.value("planner_node_limit", s.planner_node_limit);
+    // Logs written before dispatching planned with every robot.
+    s.dispatch = j.value("dispatch", false);
+    s.replan_expansions = j.value("replan_expansions", s.planner_expansions);
     s.planning_time = j.at("planning_time").get<double>();
   } catch (const nlohmann::json::exception& e) {
     throw std::invalid_argument(std::string("the run's settings: ") + e.what());

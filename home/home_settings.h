@@ -49,9 +49,15 @@ struct HomeSettings {
   // same outcomes as 300 with planning p95 1.8 s against 0.13 s
   // (`alplan home --planner-expansions N`).
   std::uint64_t planner_expansions = 300;
+  // The same for the plans of repairs and merges, which answer a world
+  // that changed under a running plan: the first plan by default.
+  std::uint64_t replan_expansions = 0;
   // A search that finds nothing stops after this many nodes, the same in
   // every run, not at the time limit, which depends on the machine.
   std::size_t planner_node_limit = 20000;
+  // Each mission plans with the nearest free robot per senior in need
+  // (home/robot_dispatch.h); off: with every robot.
+  bool dispatch = true;
   double planning_time = 10.0;
   // Not part of the run (left out of json()): where to write, as PDDL, each
   // problem the planner found no plan for, to study the search offline.
