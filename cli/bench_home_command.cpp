@@ -70,6 +70,9 @@ void add_bench_home_command(CLI::App* bench, int& exit_code) {
                   "Nodes a planner call may store before it gives up (the same in every run, unlike a time limit)");
   cmd->add_option("--replan-expansions", s.replan_expansions,
                   "Anytime improvement of repairs' and merges' plans: expansions per weight; 0: the first plan");
+  cmd->add_option("--object-return", s.object_return_s,
+                  "Seconds until an object taken away or handed to a senior is back in its place (0: never)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("!--no-dispatch", s.dispatch, "Plan each mission with every robot, not the nearest one per senior");
   cmd->add_option("--strategy", s.strategy, "Repair strategy");
   cmd->add_option("--out", o->out, "Write bench-home.json here");

@@ -145,6 +145,9 @@ void add_home_command(CLI::App& app, int& exit_code) {
                   "Nodes a planner call may store before it gives up (deterministic, unlike the time limit)");
   cmd->add_option("--replan-expansions", s.replan_expansions,
                   "Anytime improvement of repairs' and merges' plans: expansions per weight; 0: the first plan");
+  cmd->add_option("--object-return", s.object_return_s,
+                  "Seconds until an object taken away or handed to a senior is back in its place (0: never)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("!--no-dispatch", s.dispatch, "Plan each mission with every robot, not the nearest one per senior");
   cmd->add_option("--log", o->log, "Write the event log here (JSON Lines)");
   cmd->add_flag("--quiet", o->quiet, "Print the summary only");

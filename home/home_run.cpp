@@ -13,6 +13,7 @@
 #include "domains/home_generator.h"
 #include "domains/mission_run.h"
 #include "home/home_perception.h"
+#include "home/object_returns.h"
 #include "home/robot_dispatch.h"
 #include "pddl_parser/writer.h"
 #include "repair/monitor.h"
@@ -233,6 +234,9 @@ class HomeRun {
         ++summary_.comforted;
         summary_.within_window += within;
         perception_.comforted(*g, t);
+        if (settings_.object_return_s > 0) {
+          world_.schedule(returns_after_comfort(world_.observe(), base_, g->senior, t, settings_.object_return_s));
+        }
         g = goals.erase(g);
       } else if (t > g->window_end + 1e-6) {
         LogEvent e{"window_missed", t, g->senior, {}, {}};
@@ -266,6 +270,7 @@ class HomeRun {
       const std::vector<repair::ExogenousEvent> failure =
           events_.draw(plan, current_problem_, &loaded_.home.ontology, ++serial_);
       world_.schedule(failure);
+      if (settings_.object_return_s > 0) world_.schedule(returns_after_failure(failure, settings_.object_return_s));
     }
   }
 

@@ -33,6 +33,7 @@ nlohmann::json HomeSettings::json() const {
           {"planner_node_limit", planner_node_limit},
           {"dispatch", dispatch},
           {"replan_expansions", replan_expansions},
+          {"object_return_s", object_return_s},
           {"planning_time", planning_time}};
 }
 
@@ -75,6 +76,7 @@ HomeSettings HomeSettings::from_json(const nlohmann::json& j) {
     // Logs written before dispatching planned with every robot.
     s.dispatch = j.value("dispatch", false);
     s.replan_expansions = j.value("replan_expansions", s.planner_expansions);
+    s.object_return_s = j.value("object_return_s", 0.0);  // before, nothing came back
     s.planning_time = j.at("planning_time").get<double>();
   } catch (const nlohmann::json::exception& e) {
     throw std::invalid_argument(std::string("the run's settings: ") + e.what());

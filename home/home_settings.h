@@ -36,6 +36,9 @@ struct HomeSettings {
   // study's kinds drawn against it (repair/random_events.h).
   double failure_chance = 0.5;
   std::vector<std::string> failure_kinds{"sibling", "arrival", "iot", "moves", "overrun"};
+  // Objects taken away or handed to a senior are back in their place after
+  // this long (home/object_returns.h); 0: never.
+  double object_return_s = 1800.0;
   double step_s = 5.0;            // the home's clock while the robots are idle; the monitor's step
   double look_interval_s = 20.0;  // between looks at a stressed senior's face
   // After comforting, before the face is read again: the body calms down
