@@ -1,5 +1,6 @@
-// `alplan home` (the running home, home/home_run.h) and `alplan replay`
-// (the same run again from its log's first line, compared event by event).
+// `alplan home` (the running home, home/home_run.h; with --live fed by the
+// wristbands in real time, home_live.h) and `alplan replay` (the same run
+// again from its log's first line, compared event by event).
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
@@ -11,6 +12,7 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "cli/home_live.h"
 #include "cli/perceive_common.h"
 #include "cli/perception_module.h"
 #include "home/event_log.h"
@@ -25,7 +27,23 @@ struct HomeCommandOptions {
   std::string home_file;
   std::string log;
   bool quiet = false;
+  LiveFlags live;
+  bool until_given = false, failure_chance_given = false;
 };
+
+// What a live run changes in the settings: no simulated seniors, no drawn
+// failures unless asked for, a finer clock (stress is heard within a
+// second), and plans that wait for their planning budget; until stopped
+// when no --until.
+void make_live(HomeCommandOptions& o) {
+  home::HomeSettings& s = o.settings;
+  s.live = true;
+  s.script.clear();
+  s.seniors.episodes_per_hour = 0.0;
+  if (!o.failure_chance_given) s.failure_chance = 0.0;
+  if (!o.until_given) s.until = 1e9;
+  s.step_s = 1.0;
+}
 
 std::string one_line(const std::string& text) {
   std::string out;
@@ -62,13 +80,18 @@ void narrate(const home::LogEvent& e) {
   if (e.type == "window_missed") line(e.senior + "'s window closed before " + p.value("goal", "") + ": looking again");
 }
 
-void print_summary(const home::HomeSummary& s) {
+void print_summary(const home::HomeSummary& s, bool live) {
   std::printf("\nsummary: %zu goals, %zu comforted (%zu within their windows), %zu windows missed\n", s.goals,
               s.comforted, s.within_window, s.windows_missed);
   std::printf("         %zu plans (%zu merges), %zu failures, repairs:", s.plans, s.merges, s.failures);
   for (const auto& [strategy, n] : s.repairs) std::printf(" %s %zu", strategy.c_str(), n);
   std::printf(", %zu failed\n", s.repairs_failed);
   const nlohmann::json j = s.json();
+  if (live) {
+    std::printf("         planning p50 %.3f s, p95 %.3f s; %.1f s of wall time\n", j["planning_p50_s"].get<double>(),
+                j["planning_p95_s"].get<double>(), s.end_time);
+    return;
+  }
   std::printf("         planning p50 %.3f s, p95 %.3f s; scored against the simulation: %zu stress episodes, %zu detected, "
               "%zu false alarms\n",
               j["planning_p50_s"].get<double>(), j["planning_p95_s"].get<double>(), s.episodes, s.episodes_detected,
@@ -81,6 +104,15 @@ int run_home_command(HomeCommandOptions& o) {
     o.settings.script.clear();  // the default home's script names its seniors
   }
   if (o.settings.generate_seniors > 0) o.settings.script.clear();
+  check_live_flags(o.live);
+  if (o.live.live) {
+    make_live(o);
+    const home::HomeSummary summary =
+        run_live_home(o.settings, o.live, o.log, o.quiet ? home::EventLog::Echo{} : narrate);
+    print_summary(summary, true);
+    if (!o.log.empty()) std::printf("log: %s\n", o.log.c_str());
+    return kExitOk;
+  }
   std::ofstream file;
   if (!o.log.empty()) {
     file.open(o.log, std::ios::binary | std::ios::trunc);
@@ -92,7 +124,7 @@ int run_home_command(HomeCommandOptions& o) {
   const home::HomeSummary summary =
       home::run_home(o.settings, log, o.quiet ? simulated_time_meter(meter) : std::function<void(double)>{});
   meter.finish();
-  print_summary(summary);
+  print_summary(summary, false);
   if (!o.log.empty()) std::printf("log: %s (%zu events)\n", o.log.c_str(), log.events().size());
   return kExitOk;
 }
@@ -106,6 +138,7 @@ int run_replay(const std::string& path) {
                                 ": the first event is not the home's observation with the run's settings");
   }
   const home::HomeSettings settings = home::HomeSettings::from_json(first["settings"]);
+  if (settings.live) throw CommandInputError("a live run cannot be replayed: its inputs came from wristbands");
   home::EventLog replayed;
   home::run_home(settings, replayed);
   if (const auto difference = home::first_difference(logged, replayed.events())) {
@@ -131,7 +164,7 @@ void add_home_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--objects", s.generate_objects, "Portable objects of the generated home")->check(CLI::Range(1, 10000));
   cmd->add_option("--strategy", s.strategy, "Repair strategy: replan, substitute, suggest, patch, adapt");
   cmd->add_option("--observe", s.observe, "What the robots see: full, iot, camera (repair/observation.h)");
-  cmd->add_option("--until", s.until, "Simulated seconds to run")->check(CLI::Range(0.0, 7.0 * 24 * 3600));
+  cmd->add_option("--until", s.until, "Simulated seconds to run (--live: wall seconds; default until SIGINT/SIGTERM)")->check(CLI::Range(0.0, 7.0 * 24 * 3600));
   cmd->add_option("--seed", s.seed, "Seed of the seniors, the failures and a generated home");
   cmd->add_option("--drift", s.seniors.drift_bpm, "Seniors' resting heart rate swinging slowly by up to this many bpm")
       ->check(CLI::Range(0.0, 40.0));
@@ -151,7 +184,15 @@ void add_home_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("!--no-dispatch", s.dispatch, "Plan each mission with every robot, not the nearest one per senior");
   cmd->add_option("--log", o->log, "Write the event log here (JSON Lines)");
   cmd->add_flag("--quiet", o->quiet, "Print the summary only");
-  cmd->callback([o, &exit_code] { exit_code = guarded([&] { return run_home_command(*o); }, "the home"); });
+  cmd->add_option("--planning-time", s.planning_time,
+                  "Seconds a plan may take (--live: and no step starts before they pass)")
+      ->check(CLI::Range(0.1, 600.0));
+  add_live_flags(*cmd, o->live);
+  cmd->callback([o, cmd, &exit_code] {
+    o->until_given = cmd->count("--until") > 0;
+    o->failure_chance_given = cmd->count("--failure-chance") > 0;
+    exit_code = guarded([&] { return run_home_command(*o); }, "the home");
+  });
 
   auto log = std::make_shared<std::string>();
   CLI::App* replay = app.add_subcommand("replay", kReplayHelp);

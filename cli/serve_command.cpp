@@ -19,8 +19,6 @@
 // database, or an address that cannot be bound: exit 2.
 #include <CLI/CLI.hpp>
 
-#include <csignal>
-#include <ctime>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -31,9 +29,9 @@
 #include "cli/commands.h"
 #include "cli/deliberation_run.h"
 #include "cli/perceive_common.h"
+#include "cli/service_flags.h"
 #include "perception/service/private_file.h"
 #include "perception/service/signal_service.h"
-#include "perception/stress/simulated_stress_model.h"
 
 namespace alplan::cli {
 namespace {
@@ -41,11 +39,7 @@ namespace {
 namespace service = perception::service;
 
 struct ServeOptions {
-  std::uint16_t port = 8080;
-  std::string bind = "127.0.0.1";
-  std::string db;
-  std::string tokens;
-  std::string model;
+  ServiceFlags service;
   bool no_stress = false;
   std::size_t max_body = 64 * 1024;
   std::size_t max_batch = 12;
@@ -53,17 +47,11 @@ struct ServeOptions {
   std::size_t io_threads = 1;
   std::size_t max_connections = 1024;
   long request_timeout_ms = 10000;
-  std::string sync = "full";
   double duration_s = 0.0;
   std::int64_t max_clock_skew_ms = service::kDefaultMaxClockSkewMs;
   std::string events_out;
-  std::string tls_cert;
-  std::string tls_key;
-  bool insecure_http = false;
   std::size_t max_connections_per_client = 256;
   double retention_days = 0.0;
-  std::string admin_bind = "127.0.0.1";
-  std::uint16_t admin_port = 0;
   bool detailed_metrics = false;
   bool deliberate = false;
   DeliberationSettings deliberation;
@@ -97,11 +85,9 @@ void deliberate_on_event(Deliberator& deliberator, const service::StressEvent& e
   }
 }
 
-std::optional<perception::StressClassifier> load_classifier(const ServeOptions& o) {
+std::optional<perception::StressClassifier> classifier_of(const ServeOptions& o) {
   if (o.no_stress) return std::nullopt;
-  if (!o.model.empty()) return perception::StressClassifier::load(o.model);
-  std::cerr << "serve: no --model given; training the stress classifier on simulated recordings\n";
-  return perception::train_simulated_stress_classifier({});
+  return load_classifier(o.service.model, "serve");
 }
 
 void print_event(std::ostream& out, const service::StressEvent& e) {
@@ -122,65 +108,8 @@ std::unique_ptr<std::ostream> open_events_out(const std::string& destination) {
   return file;
 }
 
-// The tokens file holds every wristband's secret: refuse one others can read.
-service::DeviceRegistry read_private_registry(const std::string& tokens) {
-  if (const std::string problem = service::private_file_problem(tokens, "tokens file"); !problem.empty()) {
-    throw CommandInputError(problem);
-  }
-  return service::read_device_registry_file(tokens);
-}
-
-// Blocks SIGINT and SIGTERM in this thread and the ones it starts, so the
-// main thread takes them with sigtimedwait() instead of a handler with
-// global state.
-sigset_t block_stop_signals() {
-  sigset_t signals;
-  sigemptyset(&signals);
-  sigaddset(&signals, SIGINT);
-  sigaddset(&signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
-  return signals;
-}
-
-void wait_for_stop(const sigset_t& signals, double duration_s) {
-  const auto start = std::chrono::steady_clock::now();
-  while (true) {
-    const timespec poll{0, 200 * 1000 * 1000};
-    if (sigtimedwait(&signals, nullptr, &poll) > 0) return;
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (duration_s > 0.0 && elapsed >= duration_s) return;
-  }
-}
-
-// Plain HTTP would carry the tokens and the seniors' readings in clear: off
-// loopback it takes TLS or an explicit --insecure-http. The message starts as
-// a failed bind's does, since it is the same refusal to listen there.
-void check_transport(const ServeOptions& o) {
-  const bool tls = !o.tls_cert.empty() || !o.tls_key.empty();
-  if (tls && (o.tls_cert.empty() || o.tls_key.empty())) {
-    throw CommandInputError("--tls-cert and --tls-key go together");
-  }
-  if (tls) {
-    if (const std::string problem = service::private_file_problem(o.tls_key, "TLS key"); !problem.empty()) {
-      throw CommandInputError(problem);
-    }
-    return;
-  }
-  if (o.insecure_http) return;
-  for (const auto& [address, port] : {std::pair{o.bind, o.port}, std::pair{o.admin_bind, o.admin_port}}) {
-    if (service::is_loopback_address(address)) continue;
-    throw CommandInputError("cannot listen on " + address + ":" + std::to_string(port) +
-                            ": plain HTTP off loopback would carry tokens and readings in clear; give --tls-cert "
-                            "and --tls-key, or --insecure-http");
-  }
-}
-
-service::SignalServiceOptions service_options(const ServeOptions& o) {
-  service::SignalServiceOptions options;
-  options.database = o.db;
-  options.durability = o.sync == "normal" ? service::Durability::Normal : service::Durability::Full;
-  options.server.bind_address = o.bind;
-  options.server.port = o.port;
+service::SignalServiceOptions serve_options(const ServeOptions& o) {
+  service::SignalServiceOptions options = service_options(o.service);
   options.server.handler_threads = o.threads;
   options.server.io_threads = o.io_threads;
   options.server.max_connections = o.max_connections;
@@ -189,11 +118,7 @@ service::SignalServiceOptions service_options(const ServeOptions& o) {
   options.limits.max_batch = o.max_batch;
   options.limits.max_clock_skew_ms = o.max_clock_skew_ms;
   options.limits.detailed_metrics = o.detailed_metrics;
-  options.admin.bind_address = o.admin_bind;
-  options.admin.port = o.admin_port;
   options.server.max_connections_per_client = o.max_connections_per_client;
-  options.server.tls_certificate_file = o.tls_cert;
-  options.server.tls_key_file = o.tls_key;
   options.retention.days = o.retention_days;
   return options;
 }
@@ -204,18 +129,18 @@ int run_serve(const ServeOptions& o) {
   std::unique_ptr<Deliberator> deliberator;
   std::unique_ptr<std::ostream> events_out;
   try {
-    check_transport(o);
+    check_transport(o.service);
     deliberator = make_deliberator(o);
-    service::DeviceRegistry registry = read_private_registry(o.tokens);
+    service::DeviceRegistry registry = read_private_registry(o.service.tokens);
     events_out = open_events_out(o.events_out);
     signal_service =
-        std::make_unique<service::SignalService>(std::move(registry), load_classifier(o), service_options(o));
+        std::make_unique<service::SignalService>(std::move(registry), classifier_of(o), serve_options(o));
     signal_service->start();
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kExitInputError;
   }
-  std::cout << "serving on " << signal_service->url() << " (database " << o.db << ", "
+  std::cout << "serving on " << signal_service->url() << " (database " << o.service.db << ", "
             << signal_service->registry().size() << " devices)" << std::endl;
   // On stderr: stdout's first line stays the one scripts read the URL from.
   std::cerr << "serve: admin on " << signal_service->admin_url() << " (GET /healthz, /metrics)" << std::endl;
@@ -244,11 +169,9 @@ int run_serve(const ServeOptions& o) {
 void add_serve_command(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<ServeOptions>();
   CLI::App* s = app.add_subcommand("serve", "The signal service: wristband readings over HTTP, stress events out");
-  s->add_option("--port", o->port, "TCP port (0: any free one, printed at start)");
-  s->add_option("--db", o->db, "SQLite database file (created when missing)")->required();
-  s->add_option("--tokens", o->tokens, "Tokens file: device token senior, one device a line")->required();
-  s->add_option("--bind", o->bind, "Address to listen on");
-  s->add_option("--model", o->model, "Stress classifier file (StressClassifier::save); default: train on simulation");
+  add_service_flags(*s, o->service);
+  s->get_option("--db")->required();
+  s->get_option("--tokens")->required();
   s->add_flag("--no-stress", o->no_stress, "Store readings only; no stress detection");
   s->add_option("--max-body", o->max_body, "Largest request body in bytes (413 above)")->check(CLI::PositiveNumber);
   s->add_option("--max-batch", o->max_batch, "Most readings in one POST")->check(CLI::PositiveNumber);
@@ -258,25 +181,17 @@ void add_serve_command(CLI::App& app, int& exit_code) {
       ->check(CLI::PositiveNumber);
   s->add_option("--request-timeout", o->request_timeout_ms, "Milliseconds for a whole request to arrive (408)")
       ->check(CLI::PositiveNumber);
-  s->add_option("--sync", o->sync, "full: fsync every commit; normal: survive a crash, not a power cut")
-      ->check(CLI::IsMember({"full", "normal"}));
   s->add_option("--duration", o->duration_s, "Stop after this many seconds (0: until SIGINT/SIGTERM)")
       ->check(CLI::NonNegativeNumber);
   s->add_option("--max-clock-skew", o->max_clock_skew_ms,
                 "Milliseconds a reading may be stamped ahead of this machine's clock (422 beyond)")
       ->check(CLI::Range(std::int64_t{0}, std::int64_t{86400000}));
-  s->add_option("--tls-cert", o->tls_cert, "PEM certificate (chain) to serve HTTPS with; with --tls-key");
-  s->add_option("--tls-key", o->tls_key, "PEM private key of --tls-cert (must be mode 0600 or stricter)");
-  s->add_flag("--insecure-http", o->insecure_http,
-              "Allow plain HTTP on a non-loopback address (tokens and readings in clear)");
   s->add_option("--max-connections-per-client", o->max_connections_per_client,
                 "Open connections one client address may hold before its new ones get 503")
       ->check(CLI::PositiveNumber);
   s->add_option("--retention-days", o->retention_days,
                 "Delete readings and stress events older than this many days, in the background (0: keep all)")
       ->check(CLI::Range(0.0, 36500.0));
-  s->add_option("--admin-bind", o->admin_bind, "Address of the /healthz and /metrics listener (keep it loopback)");
-  s->add_option("--admin-port", o->admin_port, "Port of the /healthz and /metrics listener (0: any free one, printed)");
   s->add_flag("--detailed-metrics", o->detailed_metrics,
               "Per-device missing readings and stress transitions in /metrics and /healthz");
   s->add_option("--events-out", o->events_out,

@@ -1,34 +1,16 @@
 #include "home/deliberator.h"
 
-#include <cstdio>
 #include <filesystem>
 #include <stdexcept>
-
-#include <opencv2/imgcodecs.hpp>
 
 #include "home/deliberation.h"
 #include "perception/vision/coco_detector.h"
 
 namespace alplan::home {
-namespace {
-
-std::string formatted(const char* format, const std::string& a, const std::string& b, double score) {
-  char buffer[512];
-  std::snprintf(buffer, sizeof buffer, format, a.c_str(), b.c_str(), score);
-  return buffer;
-}
-
-}  // namespace
 
 Deliberator::Deliberator(DeliberatorSettings settings)
-    : settings_(std::move(settings)), home_(domains::load_home(settings_.dir, settings_.problem)) {
-  if (settings_.emotion.empty() && settings_.face.empty()) {
-    throw std::invalid_argument("give the seniors' face (--face IMAGE) or the emotion (--emotion NAME)");
-  }
-  if (!settings_.emotion.empty() && !perception::emotion_from_name(settings_.emotion)) {
-    throw std::invalid_argument("--emotion " + settings_.emotion + ": not an emotion (terrified, sad, bored, happy, ...)");
-  }
-  if (settings_.emotion.empty()) faces_ = std::make_unique<perception::PretrainedEmotionRecognizer>();
+    : settings_(std::move(settings)), home_(domains::load_home(settings_.dir, settings_.problem)),
+      face_(settings_.face, settings_.emotion) {
   if (!settings_.camera.empty()) {
     if (!std::filesystem::is_directory(settings_.camera)) {
       throw std::invalid_argument(settings_.camera + ": not a folder of camera views");
@@ -41,22 +23,9 @@ Deliberator::Deliberator(DeliberatorSettings settings)
 Deliberator::~Deliberator() = default;
 
 std::optional<perception::EmotionReading> Deliberator::look(std::vector<std::string>& notes) {
-  const DeliberatorSettings& o = settings_;
-  if (!o.emotion.empty()) {
-    const perception::Emotion e = *perception::emotion_from_name(o.emotion);
-    notes.push_back("[emotion] given on the command line: " + std::string(perception::emotion_name(e)));
-    return perception::EmotionReading{e, 1.0f, true};
-  }
-  if (!std::filesystem::is_regular_file(o.face)) throw std::invalid_argument(o.face + ": no such file");
-  const cv::Mat image = cv::imread(o.face, cv::IMREAD_COLOR);
-  if (image.empty()) throw std::invalid_argument(o.face + ": cannot read an image from this file");
-  const auto reading = read_face(*faces_, image, false);
-  if (!reading) {
-    notes.push_back("[emotion] no face in " + o.face);
-  } else {
-    notes.push_back(formatted("[emotion] face in %s: %s %.3f", o.face, std::string(perception::emotion_name(reading->top)),
-                              static_cast<double>(reading->score)));
-  }
+  std::string note;
+  std::optional<perception::EmotionReading> reading = face_.look(note);
+  notes.push_back(std::move(note));
   return reading;
 }
 

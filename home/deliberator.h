@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "domains/mission_run.h"
+#include "home/given_face.h"
 #include "perception/vision/camera_object_recognizer.h"
 #include "perception/goals/goal_generator.h"
 #include "perception/vision/pretrained_emotion_recognizer.h"
@@ -65,7 +66,7 @@ class Deliberator {
   DeliberatorSettings settings_;
   domains::LoadedHome home_;
   perception::EmotionGoalGenerator generator_;
-  std::unique_ptr<perception::PretrainedEmotionRecognizer> faces_;  // with a face
+  GivenFace face_;
   std::unique_ptr<perception::ImageObjectRecognizer> images_;       // with a camera
   // The mission's camera; a new one per run: its names belong to one mission.
   std::unique_ptr<perception::FolderCamera> camera_;

@@ -3,7 +3,6 @@
 #include <stdexcept>
 
 #include "domains/emotion_goals.h"
-#include "perception/common/emotion.h"
 #include "perception/stress/simulated_stress_model.h"
 
 namespace alplan::home {
@@ -24,7 +23,7 @@ std::unique_ptr<perception::StressDetector> make_detector(std::uint64_t seed) {
 }  // namespace
 
 HomePerception::HomePerception(const HomeMap& map, const HomeSettings& settings, EventLog& log)
-    : settings_(settings), log_(log), detector_(make_detector(settings.seed)) {
+    : log_(log), detector_(make_detector(settings.seed)), looks_(settings, log) {
   std::map<std::string, std::vector<Episode>> script;
   for (const ScriptedEpisode& e : settings.script) {
     if (!map.has_senior(e.senior)) throw std::invalid_argument("the script names " + e.senior + ", not a senior of the home");
@@ -63,7 +62,7 @@ void HomePerception::read_wristbands(double t) {
         const Episode* episode = senior->episode_at(w.end_s);
         if (episode) detected_.insert({name, episode->start});
         else ++false_alarms_;
-        next_look_.emplace(name, w.end_s);
+        looks_.stressed(name, w.end_s);
       }
     }
   }
@@ -73,34 +72,10 @@ std::vector<PerceivedGoal> HomePerception::look_at_faces(double t) {
   std::vector<PerceivedGoal> goals;
   for (auto& [name, senior] : seniors_) {
     const std::optional<perception::StressState> stress = detector_->state(name);
-    if (!stress || !stress->stressed || busy_.count(name)) continue;
-    double& due = next_look_.try_emplace(name, t).first->second;
-    if (due > t) continue;
-    due = t + settings_.look_interval_s;
-    const perception::EmotionReading reading = senior->look(t);
-    LogEvent look{"emotion", t, name, {}, {}};
-    look.payload = {{"emotion", std::string(perception::emotion_name(reading.top))}, {"score", reading.score},
-                    {"look", ++looks_[name]}};
-    log_.write(look);
-    const std::optional<perception::GeneratedGoal> made = generator_.generate(name, *stress, reading);
-    if (!made) continue;
-    PerceivedGoal goal;
-    goal.senior = name;
-    goal.emotion = std::string(*perception::emotion_predicate(made->emotion));
-    goal.predicate = std::string(*domains::goal_for_emotion(goal.emotion));
-    goal.window = goal.emotion == "terrified" ? "hydration_time" : "comfort_time";
-    goal.goal = made->goal;
-    goal.motivation = made->motivation;
-    goal.decided_by = made->decided_by;
-    goal.time = t;
-    goal.window_end = t + (goal.emotion == "terrified" ? settings_.terrified_window_s : settings_.other_window_s);
-    busy_.insert(name);
-    LogEvent event{"goal", t, name, {}, {}};
-    event.payload = {{"goal", "(" + goal.predicate + " " + name + ")"}, {"emotion", goal.emotion},
-                     {"motivation", goal.motivation}, {"decided_by", goal.decided_by},
-                     {"window_end", goal.window_end}};
-    log_.write(event);
-    goals.push_back(std::move(goal));
+    if (!stress) continue;
+    SimulatedSenior& seen = *senior;
+    const auto read_face = [&seen](const std::string&, double when) { return std::optional(seen.look(when)); };
+    if (std::optional<PerceivedGoal> goal = looks_.look(name, *stress, t, read_face)) goals.push_back(std::move(*goal));
   }
   return goals;
 }
@@ -112,13 +87,15 @@ std::vector<PerceivedGoal> HomePerception::sense(double t) {
 
 void HomePerception::comforted(const PerceivedGoal& goal, double t) {
   seniors_.at(goal.senior)->remedied(t, goal.emotion);
-  busy_.erase(goal.senior);
-  next_look_[goal.senior] = t + settings_.grace_s;
+  looks_.comforted(goal.senior, t);
 }
 
 void HomePerception::missed(const PerceivedGoal& goal, double t) {
-  busy_.erase(goal.senior);
-  next_look_[goal.senior] = t;
+  looks_.missed(goal.senior, t);
+}
+
+std::optional<PerceptionScore> HomePerception::score(double until) const {
+  return PerceptionScore{episodes_begun(until), episodes_detected(), false_alarms()};
 }
 
 }  // namespace alplan::home

@@ -91,11 +91,15 @@ nlohmann::json steps_json(const repair::ExecutingPlan& plan, const HomeMap& map)
   return steps;
 }
 
+// Thrown through the monitor when the clock stops the run mid-plan (the
+// monitor has no other way out); caught by HomeRun::run.
+struct ClockStopped {};
+
 class HomeRun {
  public:
-  HomeRun(const HomeSettings& settings, EventLog& log)
-      : settings_(settings), log_(log), loaded_(load(settings)), base_(calm_problem(*loaded_.home.files.problem)),
-        perception_(loaded_.map, settings, log),
+  HomeRun(const HomeSettings& settings, EventLog& log, const GoalSourceMaker& goals, RunClock& clock)
+      : settings_(settings), log_(log), clock_(clock), loaded_(load(settings)),
+        base_(calm_problem(*loaded_.home.files.problem)), perception_(goals(loaded_.map, log)),
         world_(repair::initial_world(base_), {}),
         belief_(base_, observation_options()),
         events_(event_options()) {
@@ -113,6 +117,9 @@ class HomeRun {
     // fifth of the node limit leaves the fallback searches room.
     planner_.ehc_expansions = std::min<std::uint64_t>(planner_.ehc_expansions, settings.planner_node_limit / 5);
     planner_.epsilon = 0.002;
+    // In real time the world goes on while the planner thinks: no step
+    // starts before the planning budget has passed.
+    planner_.reserve_planning_time = settings.live;
     // Repairs and merges answer a world that has changed under a running
     // plan: their first plan goes out, improved only as far as this allows.
     replanner_ = planner_;
@@ -127,22 +134,30 @@ class HomeRun {
     LogEvent home{"observation", 0.0, {}, {}, {}};
     home.payload = {{"what", "home"}, {"home", loaded_.map.json()}, {"settings", settings_.json()}};
     log_.write(home);
-    for (double t = 0.0; t <= settings_.until + 1e-9;) {
+    double t = 0.0;
+    for (; t <= settings_.until + 1e-9;) {
       if (on_time) on_time(std::min(t, settings_.until));
+      if (!clock_.wait_until(t)) break;
       world_.advance(t);
       belief_.observe(world_.observe());
-      for (PerceivedGoal& g : perception_.sense(t)) pending_.push_back(std::move(g));
+      for (PerceivedGoal& g : perception_->sense(t)) pending_.push_back(std::move(g));
       settle(t, belief_.state());
       if (!pending_.empty() || replan_) {
-        t = std::max(t, mission(t));
+        try {
+          t = std::max(t, mission(t));
+        } catch (const ClockStopped&) {
+          break;
+        }
         continue;
       }
       t += settings_.step_s;
     }
-    summary_.episodes = perception_.episodes_begun(settings_.until);
-    summary_.episodes_detected = perception_.episodes_detected();
-    summary_.false_alarms = perception_.false_alarms();
-    summary_.end_time = settings_.until;
+    if (const std::optional<PerceptionScore> score = perception_->score(settings_.until)) {
+      summary_.episodes = score->episodes;
+      summary_.episodes_detected = score->detected;
+      summary_.false_alarms = score->false_alarms;
+    }
+    summary_.end_time = std::min(t, settings_.until);
     return summary_;
   }
 
@@ -233,7 +248,7 @@ class HomeRun {
         log_.write(e);
         ++summary_.comforted;
         summary_.within_window += within;
-        perception_.comforted(*g, t);
+        perception_->comforted(*g, t);
         if (settings_.object_return_s > 0) {
           world_.schedule(returns_after_comfort(world_.observe(), base_, g->senior, t, settings_.object_return_s));
         }
@@ -243,7 +258,7 @@ class HomeRun {
         e.payload = {{"goal", "(" + g->predicate + " " + g->senior + ")"}, {"window_end", g->window_end}};
         log_.write(e);
         ++summary_.windows_missed;
-        perception_.missed(*g, t);
+        perception_->missed(*g, t);
         g = goals.erase(g);
       } else {
         ++g;
@@ -323,7 +338,8 @@ class HomeRun {
 
   // What the monitor asks at every observation while a plan runs.
   std::optional<repair::GoalArrival> arrivals(double t, const repair::WorldState& believed) {
-    for (PerceivedGoal& g : perception_.sense(t)) pending_.push_back(std::move(g));
+    if (!clock_.wait_until(t)) throw ClockStopped{};
+    for (PerceivedGoal& g : perception_->sense(t)) pending_.push_back(std::move(g));
     settle(t, believed);
     if (pending_.empty() || merge_blocked_) return std::nullopt;
     return take_pending(t);
@@ -416,9 +432,10 @@ class HomeRun {
 
   const HomeSettings& settings_;
   EventLog& log_;
+  RunClock& clock_;
   LoadedRun loaded_;
   pddl::Problem base_;
-  HomePerception perception_;
+  std::unique_ptr<GoalSource> perception_;
   repair::WorldSimulator world_;
   repair::Belief belief_;
   repair::RandomEventGenerator events_;
@@ -452,7 +469,16 @@ nlohmann::json HomeSummary::json() const {
 }
 
 HomeSummary run_home(const HomeSettings& settings, EventLog& log, const std::function<void(double)>& on_time) {
-  HomeRun run(settings, log);
+  SimulatedClock clock;
+  const GoalSourceMaker seniors = [&settings](const HomeMap& map, EventLog& to) {
+    return std::make_unique<HomePerception>(map, settings, to);
+  };
+  return run_home(settings, log, seniors, clock, on_time);
+}
+
+HomeSummary run_home(const HomeSettings& settings, EventLog& log, const GoalSourceMaker& goals, RunClock& clock,
+                     const std::function<void(double)>& on_time) {
+  HomeRun run(settings, log, goals, clock);
   return run.run(on_time);
 }
 

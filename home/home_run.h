@@ -10,12 +10,15 @@
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "home/event_log.h"
+#include "home/goal_source.h"
 #include "home/home_map.h"
 #include "home/home_settings.h"
+#include "home/run_clock.h"
 
 namespace alplan::home {
 
@@ -40,5 +43,15 @@ double quantile(std::vector<double> values, double q);
 // observation model) or the loaders' errors naming the file.
 // `on_time`: told the simulated time as the run goes (a progress meter).
 HomeSummary run_home(const HomeSettings& settings, EventLog& log, const std::function<void(double)>& on_time = {});
+
+// Makes the run's goal source once the home is loaded (its map names the
+// seniors); may throw to refuse the home, before the loop starts.
+using GoalSourceMaker = std::function<std::unique_ptr<GoalSource>(const HomeMap& map, EventLog& log)>;
+
+// The same loop with goals from `goals` (the simulated seniors are
+// home_perception.h) on `clock`; the run ends when t passes
+// settings.until or the clock says stop (then mid-plan too).
+HomeSummary run_home(const HomeSettings& settings, EventLog& log, const GoalSourceMaker& goals, RunClock& clock,
+                     const std::function<void(double)>& on_time = {});
 
 }  // namespace alplan::home

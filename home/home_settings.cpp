@@ -9,32 +9,36 @@ nlohmann::json HomeSettings::json() const {
   for (const ScriptedEpisode& e : script) {
     script_json.push_back({{"senior", e.senior}, {"start", e.start}, {"emotion", e.emotion}});
   }
-  return {{"domains_dir", domains_dir},
-          {"home_file", home_file},
-          {"generate", {{"seniors", generate_seniors}, {"robots", generate_robots}, {"rooms", generate_rooms},
-                        {"objects", generate_objects}}},
-          {"strategy", strategy},
-          {"observe", observe},
-          {"until", until},
-          {"seed", seed},
-          {"seniors_model",
-           {{"episodes_per_hour", seniors.episodes_per_hour}, {"calm_start_s", seniors.calm_start_s},
-            {"face_accuracy", seniors.face_accuracy}, {"recovery_s", seniors.recovery_s},
-            {"drift_bpm", seniors.drift_bpm},
-            {"terrified_share", seniors.terrified_share}, {"sad_share", seniors.sad_share}}},
-          {"script", script_json},
-          {"failure_chance", failure_chance},
-          {"failure_kinds", failure_kinds},
-          {"step_s", step_s},
-          {"look_interval_s", look_interval_s},
-          {"grace_s", grace_s},
-          {"windows", {{"terrified_s", terrified_window_s}, {"other_s", other_window_s}}},
-          {"planner_expansions", planner_expansions},
-          {"planner_node_limit", planner_node_limit},
-          {"dispatch", dispatch},
-          {"replan_expansions", replan_expansions},
-          {"object_return_s", object_return_s},
-          {"planning_time", planning_time}};
+  nlohmann::json j = {{"domains_dir", domains_dir},
+                      {"home_file", home_file},
+                      {"generate", {{"seniors", generate_seniors}, {"robots", generate_robots},
+                                    {"rooms", generate_rooms}, {"objects", generate_objects}}},
+                      {"strategy", strategy},
+                      {"observe", observe},
+                      {"until", until},
+                      {"seed", seed},
+                      {"seniors_model",
+                       {{"episodes_per_hour", seniors.episodes_per_hour}, {"calm_start_s", seniors.calm_start_s},
+                        {"face_accuracy", seniors.face_accuracy}, {"recovery_s", seniors.recovery_s},
+                         {"drift_bpm", seniors.drift_bpm},
+                        {"terrified_share", seniors.terrified_share}, {"sad_share", seniors.sad_share}}},
+                      {"script", script_json},
+                      {"failure_chance", failure_chance},
+                      {"failure_kinds", failure_kinds},
+                      {"step_s", step_s},
+                      {"look_interval_s", look_interval_s},
+                      {"grace_s", grace_s},
+                      {"windows", {{"terrified_s", terrified_window_s}, {"other_s", other_window_s}}},
+                      {"planner_expansions", planner_expansions},
+                      {"planner_node_limit", planner_node_limit},
+                      {"dispatch", dispatch},
+                      {"replan_expansions", replan_expansions},
+                      {"object_return_s", object_return_s},
+                      {"planning_time", planning_time}};
+  // Only when set: a simulated run's settings stay as logs before --live
+  // had them, so those logs still replay.
+  if (live) j["live"] = true;
+  return j;
 }
 
 HomeSettings HomeSettings::from_json(const nlohmann::json& j) {
@@ -49,6 +53,7 @@ HomeSettings HomeSettings::from_json(const nlohmann::json& j) {
     s.generate_objects = g.at("objects").get<int>();
     s.strategy = j.at("strategy").get<std::string>();
     s.observe = j.at("observe").get<std::string>();
+    s.live = j.value("live", false);  // logs written before --live have none
     s.until = j.at("until").get<double>();
     s.seed = j.at("seed").get<std::uint64_t>();
     const nlohmann::json& m = j.at("seniors_model");

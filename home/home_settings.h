@@ -28,6 +28,9 @@ struct HomeSettings {
   int generate_seniors = 0, generate_robots = 1, generate_rooms = 0, generate_objects = 0;
   std::string strategy = "substitute";
   std::string observe = "iot";  // repair/observation.h: full, iot, camera
+  // Stress from wristbands in real time (`alplan home --live`): such a run
+  // cannot be replayed, since its inputs are not in the settings.
+  bool live = false;
   double until = 3600.0;
   std::uint64_t seed = 1;
   SeniorModelOptions seniors;
