@@ -189,6 +189,15 @@ std::size_t ReadingStore::delete_stress_events_recorded_before(std::int64_t cuto
   return static_cast<std::size_t>(db_.changes());
 }
 
+std::size_t ReadingStore::delete_home_events_recorded_before(std::int64_t cutoff_ms) {
+  SqliteStatement exists = db_.prepare("SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'home_events'");
+  if (!exists.step()) return 0;
+  SqliteStatement q = db_.prepare("DELETE FROM home_events WHERE recorded_ms < ?");
+  q.bind(1, cutoff_ms);
+  q.step();
+  return static_cast<std::size_t>(db_.changes());
+}
+
 std::vector<StressEvent> ReadingStore::stress_events() {
   SqliteStatement q = db_.prepare(
       "SELECT senior, device, stressed, t_ms, stressed_fraction, votes FROM stress_events ORDER BY id");

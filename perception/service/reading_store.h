@@ -80,6 +80,9 @@ class ReadingStore {
   // Return how many rows went. Call inside a transaction.
   std::size_t delete_readings_received_before(std::int64_t cutoff_ms, std::size_t limit);
   std::size_t delete_stress_events_recorded_before(std::int64_t cutoff_ms);
+  // The same for the events a live home wrote (home_event_store.h), which
+  // name seniors' emotions too; nothing when no home ever wrote here.
+  std::size_t delete_home_events_recorded_before(std::int64_t cutoff_ms);
 
   const std::filesystem::path& file() const { return db_.file(); }
 

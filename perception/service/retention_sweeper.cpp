@@ -52,6 +52,7 @@ std::uint64_t RetentionSweeper::sweep(std::int64_t now_ms) {
     try {
       rows = store.delete_readings_received_before(cutoff_ms, options_.chunk);
       store.delete_stress_events_recorded_before(cutoff_ms);
+      store.delete_home_events_recorded_before(cutoff_ms);
       store.commit();
     } catch (...) {
       store.rollback();

@@ -4,6 +4,7 @@
 
 #include <chrono>
 
+#include "perception/service/home_event_store.h"
 #include "perception/service/reading_ingest.h"
 #include "perception/service/retention_sweeper.h"
 #include "service_fixture.h"
@@ -44,6 +45,10 @@ TEST_CASE("retention: readings older than the period are deleted in chunks while
     for (std::uint32_t s = 0; s < 2000; ++s) store.insert_reading(reading("wb-00", s), now_ms() - 10 * day_ms);
     store.insert_stress_event({"senior-00", "wb-00", true, 1700000000000ULL, 1.0, 6}, now_ms() - 10 * day_ms);
     store.commit();
+    // A live home's events: one old, one new.
+    HomeEventStore home(dir / "r.db", Durability::Normal);
+    home.insert({10.0, "goal", "senior-00", "", "{}"}, now_ms() - 10 * day_ms);
+    home.insert({20.0, "comforted", "senior-01", "", "{}"}, now_ms());
   }
   ReadingStore store(dir / "r.db", Durability::Normal);
   StressEventQueue events(4);
@@ -65,6 +70,9 @@ TEST_CASE("retention: readings older than the period are deleted in chunks while
   CHECK(store.readings_of("wb-00").empty());
   CHECK(store.readings_of("wb-01").size() == seq);
   CHECK(store.stress_events().empty());
+  const std::vector<HomeEventRow> home_left = HomeEventStore(dir / "r.db", Durability::Normal).rows();
+  REQUIRE(home_left.size() == 1);
+  CHECK(home_left.front().type == "comforted");
   // A sweep with nothing old deletes nothing.
   CHECK(sweeper.sweep(now_ms()) == 0);
   CHECK_THROWS_AS(RetentionSweeper(dir / "r.db", RetentionOptions{-1.0}, log_to_stderr), std::invalid_argument);
