@@ -14,6 +14,7 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "cli/home_run_options.h"
 #include "cli/perceive_common.h"
 #include "cli/perception_module.h"
 #include "home/home_bench.h"
@@ -60,20 +61,7 @@ void add_bench_home_command(CLI::App* bench, int& exit_code) {
   cmd->add_option("--objects", s.generate_objects, "Portable objects")->check(CLI::Range(1, 10000));
   cmd->add_option("--hours", o->hours, "Simulated hours")->check(CLI::Range(0.01, 168.0));
   cmd->add_option("--seed", s.seed, "Seed of the home, the seniors and the failures");
-  cmd->add_option("--drift", s.seniors.drift_bpm, "Seniors' resting heart rate swinging slowly by up to this many bpm")
-      ->check(CLI::Range(0.0, 40.0));
-  cmd->add_option("--episodes-per-hour", s.seniors.episodes_per_hour, "Stress episodes per senior and hour")
-      ->check(CLI::Range(0.0, 60.0));
-  cmd->add_option("--planner-expansions", s.planner_expansions,
-                  "Anytime improvement: expansions per weight; 0: the first plan");
-  cmd->add_option("--planner-node-limit", s.planner_node_limit,
-                  "Nodes a planner call may store before it gives up (the same in every run, unlike a time limit)");
-  cmd->add_option("--replan-expansions", s.replan_expansions,
-                  "Anytime improvement of repairs' and merges' plans: expansions per weight; 0: the first plan");
-  cmd->add_option("--object-return", s.object_return_s,
-                  "Seconds until an object taken away or handed to a senior is back in its place (0: never)")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_flag("!--no-dispatch", s.dispatch, "Plan each mission with every robot, not the nearest one per senior");
+  add_home_run_options(*cmd, s);
   cmd->add_option("--strategy", s.strategy, "Repair strategy");
   cmd->add_option("--out", o->out, "Write bench-home.json here");
   cmd->add_option("--unplanned-dir", s.unplanned_dir, "Write each problem the planner found no plan for here (PDDL)");

@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "cli/home_run_options.h"
 #include "cli/home_live.h"
 #include "cli/perceive_common.h"
 #include "cli/perception_module.h"
@@ -166,22 +167,7 @@ void add_home_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--observe", s.observe, "What the robots see: full, iot, camera (repair/observation.h)");
   cmd->add_option("--until", s.until, "Simulated seconds to run (--live: wall seconds; default until SIGINT/SIGTERM)")->check(CLI::Range(0.0, 7.0 * 24 * 3600));
   cmd->add_option("--seed", s.seed, "Seed of the seniors, the failures and a generated home");
-  cmd->add_option("--drift", s.seniors.drift_bpm, "Seniors' resting heart rate swinging slowly by up to this many bpm")
-      ->check(CLI::Range(0.0, 40.0));
-  cmd->add_option("--episodes-per-hour", s.seniors.episodes_per_hour, "Stress episodes per senior and hour (drawn homes)")
-      ->check(CLI::Range(0.0, 60.0));
-  cmd->add_option("--failure-chance", s.failure_chance, "Chance that a new plan meets a drawn failure")
-      ->check(CLI::Range(0.0, 1.0));
-  cmd->add_option("--planner-expansions", s.planner_expansions,
-                  "Anytime improvement: expansions per weight (deterministic); 0: the first plan");
-  cmd->add_option("--planner-node-limit", s.planner_node_limit,
-                  "Nodes a planner call may store before it gives up (deterministic, unlike the time limit)");
-  cmd->add_option("--replan-expansions", s.replan_expansions,
-                  "Anytime improvement of repairs' and merges' plans: expansions per weight; 0: the first plan");
-  cmd->add_option("--object-return", s.object_return_s,
-                  "Seconds until an object taken away or handed to a senior is back in its place (0: never)")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_flag("!--no-dispatch", s.dispatch, "Plan each mission with every robot, not the nearest one per senior");
+  add_home_run_options(*cmd, s);
   cmd->add_option("--log", o->log, "Write the event log here (JSON Lines)");
   cmd->add_flag("--quiet", o->quiet, "Print the summary only");
   cmd->add_option("--planning-time", s.planning_time,

@@ -1,0 +1,13 @@
+// The flags `alplan home` and `alplan bench home` share: how the simulated
+// seniors behave and how the home plans (home/home_settings.h).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include "home/home_settings.h"
+
+namespace alplan::cli {
+
+void add_home_run_options(CLI::App& cmd, home::HomeSettings& s);
+
+}  // namespace alplan::cli
