@@ -7,6 +7,9 @@ void add_home_run_options(CLI::App& cmd, home::HomeSettings& s) {
       ->check(CLI::Range(0.0, 40.0));
   cmd.add_option("--episodes-per-hour", s.seniors.episodes_per_hour, "Stress episodes per senior and hour (drawn homes)")
       ->check(CLI::Range(0.0, 60.0));
+  cmd.add_option("--stress-follow", s.stress_follow_readings,
+                 "Readings the stress detector's baseline follows a calm senior over")
+      ->check(CLI::Range(1, 100000));
   cmd.add_option("--failure-chance", s.failure_chance, "Chance that a new plan meets a drawn failure")
       ->check(CLI::Range(0.0, 1.0));
   cmd.add_option("--planner-expansions", s.planner_expansions,

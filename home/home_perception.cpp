@@ -10,20 +10,22 @@ namespace {
 
 // The detector `alplan deliberate` uses: trained on the simulator's
 // labelled database, not on the home's seniors.
-std::unique_ptr<perception::StressDetector> make_detector(std::uint64_t seed) {
+std::unique_ptr<perception::StressDetector> make_detector(std::uint64_t seed, std::size_t follow_readings) {
   perception::SimulatedModelSpec spec;
   spec.subjects = 24;
   spec.recording_s = 150;
   spec.seed = seed + 1;
   spec.classifier = {};
+  perception::StressCalibration calibration;
+  calibration.follow_readings = follow_readings;
   return std::make_unique<perception::ClassifierStressDetector>(perception::train_simulated_stress_classifier(spec),
-                                                                perception::StressSmoothing{});
+                                                                perception::StressSmoothing{}, calibration);
 }
 
 }  // namespace
 
 HomePerception::HomePerception(const HomeMap& map, const HomeSettings& settings, EventLog& log)
-    : log_(log), detector_(make_detector(settings.seed)), looks_(settings, log) {
+    : log_(log), detector_(make_detector(settings.seed, settings.stress_follow_readings)), looks_(settings, log) {
   std::map<std::string, std::vector<Episode>> script;
   for (const ScriptedEpisode& e : settings.script) {
     if (!map.has_senior(e.senior)) throw std::invalid_argument("the script names " + e.senior + ", not a senior of the home");

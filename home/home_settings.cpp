@@ -34,6 +34,7 @@ nlohmann::json HomeSettings::json() const {
                       {"dispatch", dispatch},
                       {"replan_expansions", replan_expansions},
                       {"object_return_s", object_return_s},
+                      {"stress_follow_readings", stress_follow_readings},
                       {"planning_time", planning_time}};
   // Only when set: a simulated run's settings stay as logs before --live
   // had them, so those logs still replay.
@@ -82,6 +83,7 @@ HomeSettings HomeSettings::from_json(const nlohmann::json& j) {
     s.dispatch = j.value("dispatch", false);
     s.replan_expansions = j.value("replan_expansions", s.planner_expansions);
     s.object_return_s = j.value("object_return_s", 0.0);  // before, nothing came back
+    s.stress_follow_readings = j.value("stress_follow_readings", std::size_t{30});
     s.planning_time = j.at("planning_time").get<double>();
   } catch (const nlohmann::json::exception& e) {
     throw std::invalid_argument(std::string("the run's settings: ") + e.what());
