@@ -237,18 +237,26 @@ void TemporalRpg::Exploration::reach(FactId f, double time, Achiever achiever, d
   double& current = fact_time_.at(f, generation_);
   double& current_cost = fact_cost_.at(f, generation_);
   if (time > current + 1e-9) return;
+  // A fact that holds now stays the state's: an action may reach it earlier
+  // (it need not be ordered after the fact's writer in the partial plan),
+  // which the time keeps, but the relaxed plan needs no action for it. Else
+  // a state where the goal holds, reached by a precondition-free action,
+  // had h = 1, was never tested as a goal, and the search claimed no plan.
+  const bool held = achiever_.at(f, generation_).kind == AchieverKind::State;
   if (time > current - 1e-9) {
     // As early: keep the cheaper achiever (h_add), so that what is already
     // there (a lit match) beats what would have to be started.
-    if (cost < current_cost) {
+    if (cost < current_cost && !held) {
       current_cost = cost;
       achiever_.at(f, generation_) = achiever;
     }
     return;
   }
   current = time;
-  current_cost = cost;
-  achiever_.at(f, generation_) = achiever;
+  if (!held) {
+    current_cost = cost;
+    achiever_.at(f, generation_) = achiever;
+  }
   queue_.push({time, f});
 }
 

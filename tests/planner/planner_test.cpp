@@ -401,3 +401,20 @@ TEST_CASE("deferred evaluation: one evaluation per expansion, the same kind of p
   REQUIRE(m.status == Status::Solved);
   CHECK(m.best()->engine.find("deferred") == std::string::npos);
 }
+
+TEST_CASE("a goal reached by an action without preconditions is recognised (the relaxation keeps held facts)") {
+  // finish spoils q while p holds; clear makes p false first. The state
+  // after clear and finish holds the goal; the relaxation could reach g
+  // earlier with finish again, and counting it made h 1, so the goal was
+  // never tested and the search claimed there was no plan.
+  const char* domain = R"(
+(define (domain spoiler) (:requirements :strips :conditional-effects)
+  (:predicates (p) (q) (g))
+  (:action finish :parameters () :precondition (and) :effect (and (g) (when (p) (not (q)))))
+  (:action clear :parameters () :precondition (p) :effect (not (p))))
+)";
+  const auto task = ground_text(domain, "(define (problem s) (:domain spoiler) (:init (p) (q)) (:goal (and (g) (q))))");
+  const PlannerResult result = solve(task);
+  REQUIRE(result.status == Status::Solved);
+  CHECK(result.best()->text.find("(clear)") < result.best()->text.find("(finish)"));
+}
