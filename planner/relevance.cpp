@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "planner/linear_metric.h"
+
 namespace alplan {
 namespace {
 
@@ -51,6 +53,18 @@ class RelevanceMarks {
     for (const GroundComparison& n : c.numeric) comparison(n);
     for (const GroundFormula& f : c.complex) formula(f);
   }
+  // Either way: a conditional effect may be wanted (its condition made
+  // true) or unwanted (made false before the action).
+  void either_way(const ConditionSet& c) {
+    for (const std::vector<FactId>* facts : {&c.positive, &c.negative}) {
+      for (FactId f : *facts) {
+        fact(f, true);
+        fact(f, false);
+      }
+    }
+    for (const GroundComparison& n : c.numeric) comparison(n);
+    for (const GroundFormula& f : c.complex) formula(f);
+  }
 
   std::vector<std::pair<FactId, bool>> facts_;
   std::vector<NumericVarId> variables_;
@@ -89,36 +103,13 @@ struct Changers {
   }
 };
 
-// Whether minimising the metric makes this variable's changes unwelcome
-// only: every effect on it adds a non-negative constant.
-bool only_grows_by_constants(const GroundTask& task, const Changers& changers, NumericVarId v) {
-  for (ActionId a : changers.assigners[v]) {
-    const GroundAction& action = task.actions[a];
-    for (const HappeningEffects* e : {&action.start, &action.end}) {
-      std::vector<const NumericAssignment*> all;
-      for (const NumericAssignment& n : e->numeric) all.push_back(&n);
-      for (const ConditionalEffect& c : e->conditional) {
-        for (const NumericAssignment& n : c.numeric) all.push_back(&n);
-      }
-      for (const NumericAssignment* n : all) {
-        if (n->variable != v) continue;
-        const bool constant = n->value.kind == GroundExpression::Kind::Constant;
-        const bool grows = (n->assign == pddl::AssignOperator::Increase && constant && n->value.value >= 0) ||
-                           (n->assign == pddl::AssignOperator::Decrease && constant && n->value.value <= 0);
-        if (!grows) return false;
-      }
-    }
-  }
-  return true;
-}
-
-void mark_metric(const GroundTask& task, const Changers& changers, RelevanceMarks& marks) {
-  if (!task.metric) return;
-  RelevanceMarks metric_variables(task);
-  metric_variables.expression(task.metric->expression);
-  for (NumericVarId v : metric_variables.variables_) {
-    if (!task.metric->minimize || !only_grows_by_constants(task, changers, v)) marks.variable(v);
-  }
+// A metric that only grows as a plan grows (linear_metric.h: minimised,
+// non-negative weights on fluents that actions only increase by
+// non-negative constants) never wants an action for its effect on it;
+// any other metric makes its variables relevant.
+void mark_metric(const GroundTask& task, RelevanceMarks& marks) {
+  if (!task.metric || linear_metric(task)) return;
+  marks.expression(task.metric->expression);
 }
 
 void mark_action(const GroundAction& a, RelevanceMarks& marks) {
@@ -127,7 +118,7 @@ void mark_action(const GroundAction& a, RelevanceMarks& marks) {
   for (const HappeningEffects* e : {&a.start, &a.end}) {
     for (const NumericAssignment& n : e->numeric) marks.expression(n.value);
     for (const ConditionalEffect& c : e->conditional) {
-      marks.condition(c.condition);
+      marks.either_way(c.condition);
       for (const NumericAssignment& n : c.numeric) marks.expression(n.value);
     }
   }
@@ -139,7 +130,7 @@ std::vector<bool> relevant_actions(const GroundTask& task, const std::vector<Act
   const Changers changers(task);
   RelevanceMarks marks(task);
   marks.condition(task.goal);
-  mark_metric(task, changers, marks);
+  mark_metric(task, marks);
   for (ActionId a : keep) marks.action(a);
   std::size_t next_fact = 0, next_variable = 0, next_action = 0;
   while (next_fact < marks.facts_.size() || next_variable < marks.variables_.size() ||

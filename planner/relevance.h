@@ -17,10 +17,11 @@
 // reachable action at every evaluation.
 //
 // Conservative where the analysis would need care: every condition of a
-// relevant action counts (conditional effects' too), a derived fact makes
-// its bodies relevant both ways, a general formula's literals count both
-// ways, and a metric variable counts unless the metric is minimised and
-// every effect on it only adds a non-negative constant (action costs).
+// relevant action counts, a conditional effect's both ways (it may be
+// unwanted, its condition then made false first), a derived fact makes its
+// bodies relevant both ways, a general formula's literals count both ways,
+// and the metric's variables count unless the metric only grows as a plan
+// grows (linear_metric.h: action costs).
 #pragma once
 
 #include <memory>

@@ -143,3 +143,46 @@ TEST_CASE("a workspace keeps the relevant view for tasks sharing the ground acti
   CHECK(workspace->relevance == relevance);
   CHECK(same_ground_actions(workspace->index->task(), *relevance->view.task));
 }
+
+namespace {
+
+// `finish` reaches g but, when p holds, spoils q; `clear` makes p false.
+// With p and q at first, the only plan clears p before finishing.
+const char* kSpoiler = R"(
+(define (domain spoiler) (:requirements :strips :conditional-effects :fluents)
+  (:predicates (p) (q) (g))
+  (:functions (score))
+  (:action finish :parameters () :precondition (and) :effect (and (g) (when (p) (not (q)))))
+  (:action clear :parameters () :precondition (p) :effect (not (p)))
+  (:action earn :parameters () :precondition (g) :effect (increase (score) 1)))
+)";
+
+}  // namespace
+
+TEST_CASE("an action that keeps a conditional effect from firing is relevant") {
+  const auto loaded = test::load_task_text(
+      kSpoiler, "(define (problem s) (:domain spoiler) (:init (p) (q) (= (score) 0)) (:goal (and (g) (q))))");
+  const auto task = ground(*loaded.domain, *loaded.problem);
+  const std::vector<bool> relevant = relevant_actions(*task);
+  for (ActionId a = 0; a < task->actions.size(); ++a) {
+    const std::string name = task->action_name(task->actions[a]);
+    INFO(name);
+    CHECK(relevant[a] == (name != "(earn)"));
+  }
+  const PlannerResult result = Planner(task, PlannerOptions{}).plan();
+  REQUIRE(result.best());
+  CHECK(result.best()->text.find("(clear)") != std::string::npos);
+}
+
+TEST_CASE("a metric that rewards an action keeps the action") {
+  const auto loaded = test::load_task_text(
+      kSpoiler, "(define (problem s) (:domain spoiler) (:init (= (score) 0)) (:goal (g))"
+                " (:metric minimize (- 0 (score))))");
+  const auto task = ground(*loaded.domain, *loaded.problem);
+  const std::vector<bool> relevant = relevant_actions(*task);
+  bool earn = false;
+  for (ActionId a = 0; a < task->actions.size(); ++a) {
+    if (task->action_name(task->actions[a]) == "(earn)") earn = relevant[a];
+  }
+  CHECK(earn);
+}
