@@ -102,7 +102,8 @@ class HomeRun {
         base_(calm_problem(*loaded_.home.files.problem)), perception_(goals(loaded_.map, log)),
         world_(repair::initial_world(base_), {}),
         belief_(base_, observation_options()),
-        events_(event_options()) {
+        events_(event_options()),
+        returns_(base_, settings.object_return_s) {
     planner_.anytime = settings.planner_expansions > 0;
     planner_.anytime_expansions = settings.planner_expansions;
     planner_.anytime_min_weight = 3.0;
@@ -249,9 +250,7 @@ class HomeRun {
         ++summary_.comforted;
         summary_.within_window += within;
         perception_->comforted(*g, t);
-        if (settings_.object_return_s > 0) {
-          world_.schedule(returns_after_comfort(world_.observe(), base_, g->senior, t, settings_.object_return_s));
-        }
+        collect_from(g->senior, t);
         g = goals.erase(g);
       } else if (t > g->window_end + 1e-6) {
         LogEvent e{"window_missed", t, g->senior, {}, {}};
@@ -259,11 +258,16 @@ class HomeRun {
         log_.write(e);
         ++summary_.windows_missed;
         perception_->missed(*g, t);
+        collect_from(g->senior, t);  // what was handed over in vain
         g = goals.erase(g);
       } else {
         ++g;
       }
     }
+  }
+
+  void collect_from(const std::string& senior, double t) {
+    if (settings_.object_return_s > 0) world_.schedule(returns_.collect_from(world_.observe(), senior, t));
   }
 
   void log_plan(double t, const repair::ExecutingPlan& plan, const std::string& reason, double seconds) {
@@ -285,7 +289,7 @@ class HomeRun {
       const std::vector<repair::ExogenousEvent> failure =
           events_.draw(plan, current_problem_, &loaded_.home.ontology, ++serial_);
       world_.schedule(failure);
-      if (settings_.object_return_s > 0) world_.schedule(returns_after_failure(failure, settings_.object_return_s));
+      if (settings_.object_return_s > 0) world_.schedule(returns_.after_failure(failure));
     }
   }
 
@@ -439,6 +443,7 @@ class HomeRun {
   repair::WorldSimulator world_;
   repair::Belief belief_;
   repair::RandomEventGenerator events_;
+  ObjectReturns returns_;
   std::mt19937_64 events_random_{settings_.seed * 104729 + 3};
   PlannerOptions planner_, replanner_;
   std::unique_ptr<repair::RepairStrategy> strategy_;

@@ -9,7 +9,8 @@ nlohmann::json HomeSettings::json() const {
   for (const ScriptedEpisode& e : script) {
     script_json.push_back({{"senior", e.senior}, {"start", e.start}, {"emotion", e.emotion}});
   }
-  nlohmann::json j = {{"domains_dir", domains_dir},
+  nlohmann::json j = {{"log_version", kHomeLogVersion},
+                      {"domains_dir", domains_dir},
                       {"home_file", home_file},
                       {"generate", {{"seniors", generate_seniors}, {"robots", generate_robots},
                                     {"rooms", generate_rooms}, {"objects", generate_objects}}},
@@ -44,6 +45,16 @@ nlohmann::json HomeSettings::json() const {
 
 HomeSettings HomeSettings::from_json(const nlohmann::json& j) {
   HomeSettings s;
+  int version = 0;  // not settings at all
+  if (j.is_object()) {
+    const auto v = j.find("log_version");
+    version = v == j.end() ? 1 : v->is_number_integer() ? v->get<int>() : 0;
+  }
+  if (version != kHomeLogVersion) {
+    throw std::invalid_argument("the run's settings are of home log version " + std::to_string(version) +
+                                "; this alplan replays version " + std::to_string(kHomeLogVersion) +
+                                " (the planner and the simulation have changed since: run the home again)");
+  }
   try {
     s.domains_dir = j.at("domains_dir").get<std::string>();
     s.home_file = j.at("home_file").get<std::string>();
@@ -54,7 +65,7 @@ HomeSettings HomeSettings::from_json(const nlohmann::json& j) {
     s.generate_objects = g.at("objects").get<int>();
     s.strategy = j.at("strategy").get<std::string>();
     s.observe = j.at("observe").get<std::string>();
-    s.live = j.value("live", false);  // logs written before --live have none
+    s.live = j.value("live", false);  // written only for live runs
     s.until = j.at("until").get<double>();
     s.seed = j.at("seed").get<std::uint64_t>();
     const nlohmann::json& m = j.at("seniors_model");
@@ -62,8 +73,7 @@ HomeSettings HomeSettings::from_json(const nlohmann::json& j) {
     s.seniors.calm_start_s = m.at("calm_start_s").get<double>();
     s.seniors.face_accuracy = m.at("face_accuracy").get<double>();
     s.seniors.recovery_s = m.at("recovery_s").get<double>();
-    // Logs written before seniors drifted replay without drift.
-    s.seniors.drift_bpm = m.value("drift_bpm", 0.0);
+    s.seniors.drift_bpm = m.at("drift_bpm").get<double>();
     s.seniors.terrified_share = m.at("terrified_share").get<double>();
     s.seniors.sad_share = m.at("sad_share").get<double>();
     for (const nlohmann::json& e : j.at("script")) {
@@ -78,12 +88,11 @@ HomeSettings HomeSettings::from_json(const nlohmann::json& j) {
     s.terrified_window_s = j.at("windows").at("terrified_s").get<double>();
     s.other_window_s = j.at("windows").at("other_s").get<double>();
     s.planner_expansions = j.at("planner_expansions").get<std::uint64_t>();
-    s.planner_node_limit = j.value("planner_node_limit", s.planner_node_limit);
-    // Logs written before dispatching planned with every robot.
-    s.dispatch = j.value("dispatch", false);
-    s.replan_expansions = j.value("replan_expansions", s.planner_expansions);
-    s.object_return_s = j.value("object_return_s", 0.0);  // before, nothing came back
-    s.stress_follow_readings = j.value("stress_follow_readings", std::size_t{30});
+    s.planner_node_limit = j.at("planner_node_limit").get<std::size_t>();
+    s.dispatch = j.at("dispatch").get<bool>();
+    s.replan_expansions = j.at("replan_expansions").get<std::uint64_t>();
+    s.object_return_s = j.at("object_return_s").get<double>();
+    s.stress_follow_readings = j.at("stress_follow_readings").get<std::size_t>();
     s.planning_time = j.at("planning_time").get<double>();
   } catch (const nlohmann::json::exception& e) {
     throw std::invalid_argument(std::string("the run's settings: ") + e.what());

@@ -20,6 +20,13 @@ struct ScriptedEpisode {
   std::string emotion;  // terrified, sad, bored
 };
 
+// What a log's settings mean: one more whenever the same settings would make
+// a run behave differently (the planner's search, the simulation's models),
+// so that replay refuses a log it cannot reproduce instead of reporting a
+// difference. 2: relevance analysis, deferred anytime, dispatch, objects
+// that come back, drifting seniors (2026-11-25).
+inline constexpr int kHomeLogVersion = 2;
+
 struct HomeSettings {
   std::string domains_dir;  // domain.pddl and types.ttl
   // The home: a problem file (its goal and emotions are ignored: the run

@@ -8,6 +8,7 @@
 // Scenarios 1 and 2) and most goals then had no plan at all.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -17,15 +18,27 @@
 
 namespace alplan::home {
 
-// For each object `failure` makes unavailable: available again
-// `return_s` after it went.
-std::vector<repair::ExogenousEvent> returns_after_failure(const std::vector<repair::ExogenousEvent>& failure,
-                                                          double return_s);
+class ObjectReturns {
+ public:
+  // `home`: the problem whose :init says where each object belongs.
+  ObjectReturns(const pddl::Problem& home, double return_s);
 
-// For each object `world` shows given to `senior`: at `t + return_s` it is
-// no longer the senior's, empty, available, and back in the room the home's
-// problem `home` first placed it in (objects the home never placed stay).
-std::vector<repair::ExogenousEvent> returns_after_comfort(const repair::WorldState& world, const pddl::Problem& home,
-                                                          const std::string& senior, double t, double return_s);
+  // For each object `failure` makes unavailable: available again
+  // `return_s` after it went.
+  std::vector<repair::ExogenousEvent> after_failure(const std::vector<repair::ExogenousEvent>& failure) const;
+
+  // For each object `world` shows given to `senior` (comforted, or their
+  // window missed) and not already on its way back: at `t + return_s` it
+  // is no longer the senior's, empty, available, and back in the room it
+  // belongs in (objects the home never placed stay where they are).
+  std::vector<repair::ExogenousEvent> collect_from(const repair::WorldState& world, const std::string& senior, double t);
+
+ private:
+  std::map<std::string, std::string> room_of_;
+  double return_s_;
+  // Each handed-over object's collection time: one already due later is
+  // not scheduled twice (it could come back while given to someone else).
+  std::map<repair::AtomKey, double> collecting_;
+};
 
 }  // namespace alplan::home

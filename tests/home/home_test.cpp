@@ -158,3 +158,23 @@ TEST_CASE("a senior's resting heart rate drifts slowly unless told not to", "[ho
 }
 
 }  // namespace alplan::home
+
+namespace alplan::home {
+
+TEST_CASE("replay refuses settings of another log version, naming both", "[home]") {
+  const HomeSettings s = default_home_settings(kAssistedLiving);
+  nlohmann::json j = s.json();
+  CHECK(HomeSettings::from_json(j).json() == j);
+  j.erase("log_version");
+  try {
+    HomeSettings::from_json(j);
+    FAIL("an old log's settings were accepted");
+  } catch (const std::invalid_argument& e) {
+    CHECK(std::string(e.what()).find("version 1") != std::string::npos);
+    CHECK(std::string(e.what()).find("version " + std::to_string(kHomeLogVersion)) != std::string::npos);
+  }
+  j["log_version"] = "two";
+  CHECK_THROWS_AS(HomeSettings::from_json(j), std::invalid_argument);
+}
+
+}  // namespace alplan::home

@@ -21,7 +21,7 @@ TEST_CASE("an object taken away is back in service after a while", "[home]") {
   const std::vector<repair::ExogenousEvent> failure{
       repair::becomes_unavailable(100.0, "glass1"), repair::becomes_unavailable(100.0, "glass2"),
       repair::object_appears(0.0, {"mug_new1", "mug", "kitchen", 1.0})};
-  const std::vector<repair::ExogenousEvent> back = returns_after_failure(failure, 1800.0);
+  const std::vector<repair::ExogenousEvent> back = ObjectReturns(pddl::Problem{}, 1800.0).after_failure(failure);
   REQUIRE(back.size() == 2);
   CHECK(has(back, 1900.0, {"available", "glass1"}, true));
   CHECK(has(back, 1900.0, {"available", "glass2"}, true));
@@ -37,14 +37,19 @@ TEST_CASE("a remedy handed to a senior is collected, emptied and put back in its
   world.set({"given", "glass1", "s1"}, true);
   world.set({"filled", "glass1"}, true);
   world.set({"given", "radio1", "s2"}, true);
-  const std::vector<repair::ExogenousEvent> back = returns_after_comfort(world, *home.ast, "s1", 500.0, 600.0);
+  ObjectReturns returns(*home.ast, 600.0);
+  const std::vector<repair::ExogenousEvent> back = returns.collect_from(world, "s1", 500.0);
   REQUIRE(back.size() == 4);
   CHECK(has(back, 1100.0, {"given", "glass1", "s1"}, false));
   CHECK(has(back, 1100.0, {"filled", "glass1"}, false));
   CHECK(has(back, 1100.0, {"available", "glass1"}, true));
   CHECK(has(back, 1100.0, {"be", "glass1", "kitchen"}, true));
   // Another senior's remedy stays with them.
-  CHECK(returns_after_comfort(world, *home.ast, "s3", 500.0, 600.0).empty());
+  CHECK(returns.collect_from(world, "s3", 500.0).empty());
+  // Already on its way back: not collected twice (it could come back again
+  // while given to someone else); once back and given anew, it is.
+  CHECK(returns.collect_from(world, "s1", 800.0).empty());
+  CHECK(returns.collect_from(world, "s1", 1200.0).size() == 4);
 }
 
 }  // namespace alplan::home
