@@ -349,11 +349,18 @@ class HomeRun {
     return take_pending(t);
   }
 
-  void keep_unplanned() {
+  // The problem as an external planner would get it: time 0 is `now`
+  // (the home plans from now in the task's own time), so that `alplan
+  // plan` on the file meets the same deadlines.
+  void keep_unplanned(double now) {
     if (settings_.unplanned_dir.empty()) return;
     std::filesystem::create_directories(settings_.unplanned_dir);
     const std::string stem = settings_.unplanned_dir + "/unplanned-" + std::to_string(++unplanned_);
-    std::ofstream(stem + ".pddl") << pddl::write_problem(current_problem_);
+    pddl::Problem from_now = current_problem_;
+    for (pddl::TimedInitialLiteral& til : from_now.timed_literals) til.time -= now;
+    std::erase_if(from_now.timed_literals, [](const pddl::TimedInitialLiteral& til) { return til.time <= 0.0; });
+    std::ofstream(stem + ".pddl") << "; planned at " << now << " s of the run; times below are from then\n"
+                                  << pddl::write_problem(from_now);
     if (unplanned_ == 1) std::ofstream(settings_.unplanned_dir + "/domain.pddl") << pddl::write_domain(*loaded_.home.files.domain);
   }
 
@@ -390,7 +397,7 @@ class HomeRun {
     const repair::PlanningOutcome planned =
         repair::plan_in_process(loaded_.home.domain, current_problem_, t, planner_);
     if (!planned.plan) {
-      keep_unplanned();
+      keep_unplanned(t);
       explain(t, motivation, "no plan reaches the goals in course in time",
               planned.message + "; the seniors are looked at again when their windows close");
       summary_.planning_seconds.push_back(planned.seconds);
