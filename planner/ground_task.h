@@ -96,6 +96,15 @@ struct GroundDurationConstraint {
   Moment moment = Moment::Start;
 };
 
+// Linear continuous change while a durative action runs (PDDL 2.1 level 4):
+// `variable` moves by `rate` per time unit (down for Decrease); the rate is
+// evaluated in the state where the action starts.
+struct ContinuousEffect {
+  NumericVarId variable = kNoId;
+  pddl::AssignOperator assign = pddl::AssignOperator::Increase;  // or Decrease
+  GroundExpression rate;
+};
+
 struct GroundAction {
   std::uint32_t schema = 0;  // index into NormalizedTask::actions
   std::vector<ObjectId> args;
@@ -103,6 +112,7 @@ struct GroundAction {
   ConditionSet at_start, over_all, at_end;  // instantaneous: at_start
   HappeningEffects start, end;               // instantaneous: start
   std::vector<GroundDurationConstraint> duration;
+  std::vector<ContinuousEffect> continuous;
 };
 
 struct GroundAxiom {

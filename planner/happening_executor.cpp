@@ -151,8 +151,17 @@ void HappeningExecutor::load(const std::vector<ScheduledStep>& steps, const Exec
   state_ = start.state;
   derive(task_, state_);
   running_.clear();
+  rates_.clear();
   for (std::size_t s = 0; s < steps_.size(); ++s) {
-    if (steps_[s].started_before) running_.emplace(s, steps_[s].action);
+    if (!steps_[s].started_before) continue;
+    running_.emplace(s, steps_[s].action);
+    try {
+      start_rates(s, state_);
+    } catch (const EvaluationError&) {
+      // An undefined rate of an action already running: its change is
+      // unknown; the validator then sees none (the observed state is what
+      // counts at the next happening).
+    }
   }
   next_ = 0;
   time_ = start.now;
@@ -294,16 +303,38 @@ std::optional<Violation> HappeningExecutor::apply(const std::vector<Event>& even
   return std::nullopt;
 }
 
-std::optional<Violation> HappeningExecutor::check_invariants(double until) {
+void HappeningExecutor::start_rates(std::size_t scheduled, const ExplicitState& state) {
+  const GroundAction& action = task_.actions[steps_[scheduled].action];
+  if (action.continuous.empty()) return;
+  EvaluationContext context;
+  context.duration = steps_[scheduled].duration;
+  std::vector<std::pair<NumericVarId, double>>& rates = rates_[scheduled];
+  for (const ContinuousEffect& c : action.continuous) {
+    const double rate = evaluate(c.rate, state, context);
+    rates.emplace_back(c.variable, c.assign == pddl::AssignOperator::Decrease ? -rate : rate);
+  }
+}
+
+void HappeningExecutor::advance(ExplicitState& state, double elapsed) const {
+  if (elapsed <= 0.0) return;
+  for (const auto& [scheduled, rates] : rates_) {
+    for (const auto& [variable, rate] : rates) {
+      const double current = state.value(variable);
+      state.set_value(variable, (std::isnan(current) ? 0.0 : current) + rate * elapsed);
+    }
+  }
+}
+
+std::optional<Violation> HappeningExecutor::check_invariants(const ExplicitState& state, double at, double until) {
   for (const auto& [scheduled, action] : running_) {
     const ConditionSet& invariant = task_.actions[action].over_all;
     if (invariant.empty()) continue;
     EvaluationContext context;
     context.duration = steps_[scheduled].duration;
-    if (auto failed = first_unsatisfied(invariant, state_, context, 0.0)) {
+    if (auto failed = first_unsatisfied(invariant, state, context, rates_.empty() ? 0.0 : kNumericSlack)) {
       Violation v;
       v.kind = Violation::Kind::UnsatisfiedInvariant;
-      v.time = time_;
+      v.time = at;
       v.until = until;
       v.action = steps_[scheduled].name;
       v.step = steps_[scheduled].step;
@@ -317,6 +348,7 @@ std::optional<Violation> HappeningExecutor::check_invariants(double until) {
 
 std::optional<Violation> HappeningExecutor::step() {
   const std::vector<Event>& events = happenings_[next_];
+  advance(state_, happening_times_[next_] - time_);
   time_ = happening_times_[next_];
   ++next_;
   const Event* current = &events.front();
@@ -329,6 +361,11 @@ std::optional<Violation> HappeningExecutor::step() {
     if (events.size() > 1) {
       if (auto v = check_mutex(events)) return v;
     }
+    for (const Event& e : events) {
+      current = &e;
+      if (e.point == Point::Start) start_rates(e.scheduled, state_);
+    }
+    current = &events.front();
     if (auto v = apply(events)) return v;
   } catch (const EvaluationError& error) {
     Violation v = violation(Violation::Kind::UndefinedValue, *current);
@@ -336,8 +373,13 @@ std::optional<Violation> HappeningExecutor::step() {
     return v;
   }
   for (const Event& e : events) {
+    if (e.point == Point::End) {
+      running_.erase(e.scheduled);
+      rates_.erase(e.scheduled);
+    }
+  }
+  for (const Event& e : events) {
     if (e.point == Point::Start) running_.emplace(e.scheduled, steps_[e.scheduled].action);
-    if (e.point == Point::End) running_.erase(e.scheduled);
   }
   if (next_ - 1 == last_action_happening_ && !steps_.empty()) {
     last_action_state_ = state_;
@@ -345,7 +387,14 @@ std::optional<Violation> HappeningExecutor::step() {
   }
   if (next_ < happenings_.size() && !running_.empty()) {
     try {
-      return check_invariants(happening_times_[next_]);
+      if (auto v = check_invariants(state_, time_, happening_times_[next_])) return v;
+      if (rates_.empty()) return std::nullopt;
+      // Change is linear between happenings: the ends of the interval are
+      // its extremes, so the state just before the next happening is the
+      // other point an invariant must hold at.
+      ExplicitState before_next = state_;
+      advance(before_next, happening_times_[next_] - time_);
+      return check_invariants(before_next, time_, happening_times_[next_]);
     } catch (const EvaluationError& error) {
       Violation v;
       v.kind = Violation::Kind::UndefinedValue;

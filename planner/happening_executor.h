@@ -80,7 +80,11 @@ class HappeningExecutor {
   std::optional<Violation> check_conditions(const Event& e);
   std::optional<Violation> check_mutex(const std::vector<Event>& events);
   std::optional<Violation> apply(const std::vector<Event>& events);
-  std::optional<Violation> check_invariants(double until);
+  std::optional<Violation> check_invariants(const ExplicitState& state, double at, double until);
+  // Continuous change (PDDL 2.1 level 4): the rates an action runs with,
+  // fixed in the state where it starts; `advance` moves the state along them.
+  void start_rates(std::size_t scheduled, const ExplicitState& state);
+  void advance(ExplicitState& state, double elapsed) const;
   Footprint footprint(const Event& e) const;
   std::string event_name(const Event& e) const;
   EvaluationContext context_of(const Event& e) const;
@@ -98,6 +102,7 @@ class HappeningExecutor {
   double time_ = 0.0;
   ExplicitState state_;
   std::map<std::size_t, std::size_t> running_;  // scheduled step -> its action
+  std::map<std::size_t, std::vector<std::pair<NumericVarId, double>>> rates_;  // scheduled step -> signed rates
   // The state right after the last happening that holds an action (VAL
   // evaluates the metric there, before any later timed literal).
   std::size_t last_action_happening_ = 0;

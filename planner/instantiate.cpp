@@ -361,6 +361,10 @@ void Instantiator::primitive(const PrimitiveEffect& e, std::vector<ObjectId>& bi
     }
     return;
   }
+  if (e.kind == PrimitiveEffect::Kind::Continuous) {
+    action.continuous.push_back({numeric_.intern(key(e.target, binding)), e.assign, expression(e.value, binding)});
+    return;
+  }
   ConditionSet condition = this->condition(e.condition, binding);
   if (condition.never) return;
   HappeningEffects& target = e.moment == Moment::End ? action.end : action.start;
@@ -383,6 +387,7 @@ void Instantiator::primitive(const PrimitiveEffect& e, std::vector<ObjectId>& bi
     case PrimitiveEffect::Kind::Delete:
       if (std::optional<FactId> id = fact(key(e.atom, binding))) del->push_back(*id);
       break;
+    case PrimitiveEffect::Kind::Continuous: break;  // handled above
     case PrimitiveEffect::Kind::Numeric:
       numeric->push_back({numeric_.intern(key(e.target, binding)), e.assign, expression(e.value, binding)});
       break;

@@ -17,6 +17,10 @@ bool increasing_only(const GroundTask& task, NumericVarId v) {
     return true;
   };
   for (const GroundAction& action : task.actions) {
+    // Changed with time, its value depends on the schedule.
+    for (const ContinuousEffect& c : action.continuous) {
+      if (c.variable == v) return false;
+    }
     for (const HappeningEffects* e : {&action.start, &action.end}) {
       if (!check(e->numeric)) return false;
       for (const ConditionalEffect& c : e->conditional) {

@@ -136,7 +136,7 @@ ActionSchema convert_durative(const pddl::DurativeAction& a, FormulaConverter& c
 void mark_fluents(NormalizedTask& task, const std::vector<std::string>& exogenous) {
   for (const ActionSchema& schema : task.actions) {
     for (const PrimitiveEffect& e : schema.effects) {
-      if (e.kind == PrimitiveEffect::Kind::Numeric) {
+      if (e.kind == PrimitiveEffect::Kind::Numeric || e.kind == PrimitiveEffect::Kind::Continuous) {
         task.functions[e.target.function].fluent = true;
       } else {
         task.predicates[e.atom.predicate].fluent = true;

@@ -1,5 +1,7 @@
 // Conditions to negation normal form, durative conditions split by time,
 // effects flattened into primitive effects.
+#include <algorithm>
+#include <optional>
 #include <stdexcept>
 
 #include "planner/normalize_internal.h"
@@ -161,7 +163,7 @@ LiftedExpression FormulaConverter::expression(const pddl::NumericExpression& e, 
     case K::Duration: result.kind = LiftedExpression::Kind::Duration; return result;
     case K::TotalTime: result.kind = LiftedExpression::Kind::TotalTime; return result;
     case K::ContinuousTime:
-      unsupported(e.location, "continuous change (#t) is not supported");
+      unsupported(e.location, "#t outside the form (* #t rate) of a continuous effect (non-linear change) is not supported");
       return result;
     case K::IsViolated:
       unsupported(e.location, "PDDL 3 preferences (is-violated) are not supported");
@@ -321,6 +323,10 @@ void FormulaConverter::effect(const pddl::Effect& e, EffectContext& context, Var
       p.forall = context.forall;
       p.condition = make_and(context.conditions);
       p.condition_moment = context.condition_timed ? context.condition_moment : context.moment;
+      if (e.kind == EKind::Numeric && context.durative && !context.timed) {
+        if (continuous(e, context, scope, p)) schema.effects.push_back(std::move(p));
+        return;
+      }
       if (e.kind == EKind::Numeric) {
         p.kind = PrimitiveEffect::Kind::Numeric;
         p.target.function = names_.functions.at(e.atom.name);
@@ -331,13 +337,70 @@ void FormulaConverter::effect(const pddl::Effect& e, EffectContext& context, Var
         p.kind = e.kind == EKind::Add ? PrimitiveEffect::Kind::Add : PrimitiveEffect::Kind::Delete;
         p.atom = atom(e.atom, scope);
       }
-      if (context.durative && !context.timed && p.kind != PrimitiveEffect::Kind::Numeric) {
+      if (context.durative && !context.timed) {
         unsupported(e.location, "an untimed effect in a durative action");
       }
       schema.effects.push_back(std::move(p));
       return;
     }
   }
+}
+
+namespace {
+
+bool mentions(const pddl::NumericExpression& e, pddl::NumericExpression::Kind kind) {
+  if (e.kind == kind) return true;
+  return std::any_of(e.operands.begin(), e.operands.end(), [&](const auto& o) { return mentions(o, kind); });
+}
+
+}  // namespace
+
+// COLIN's linear continuous change (Coles et al., JAIR 2012): the value
+// moves by rate x elapsed time while the action runs, the rate fixed when
+// it starts. So #t must be a factor of the whole right-hand side.
+bool FormulaConverter::continuous(const pddl::Effect& e, const EffectContext& context, const VariableScope& scope,
+                                  PrimitiveEffect& p) {
+  using K = pddl::NumericExpression::Kind;
+  const pddl::NumericExpression& value = *e.value;
+  if (!mentions(value, K::ContinuousTime)) {
+    unsupported(e.location, "an untimed effect in a durative action");
+    return false;
+  }
+  if (e.assign != pddl::AssignOperator::Increase && e.assign != pddl::AssignOperator::Decrease) {
+    unsupported(e.location, "continuous change by " + std::string(pddl::to_string(e.assign)) +
+                                " (only increase and decrease by (* #t rate) are supported)");
+    return false;
+  }
+  if (!context.conditions.empty()) {
+    unsupported(e.location, "a conditional continuous effect");
+    return false;
+  }
+  std::optional<pddl::NumericExpression> rate;
+  if (value.kind == K::ContinuousTime) {
+    rate = pddl::NumericExpression{};
+    rate->kind = K::Number;
+    rate->value = 1.0;
+  } else if (value.kind == K::Multiply && value.operands.size() == 2) {
+    for (int side = 0; side < 2; ++side) {
+      if (value.operands[side].kind == K::ContinuousTime && !mentions(value.operands[1 - side], K::ContinuousTime)) {
+        rate = value.operands[1 - side];
+      }
+    }
+  }
+  if (!rate) {
+    unsupported(value.location, "continuous change that is not (* #t rate) (non-linear in #t)");
+    return false;
+  }
+  if (mentions(*rate, K::Duration)) {
+    unsupported(value.location, "a continuous rate that depends on ?duration");
+    return false;
+  }
+  p.kind = PrimitiveEffect::Kind::Continuous;
+  p.target.function = names_.functions.at(e.atom.name);
+  for (const pddl::Term& t : e.atom.args) p.target.args.push_back(term(t, scope));
+  p.assign = e.assign;
+  p.value = expression(*rate, scope);
+  return true;
 }
 
 }  // namespace alplan::detail

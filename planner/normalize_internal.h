@@ -50,6 +50,9 @@ class FormulaConverter {
  private:
   struct EffectContext;
   void effect(const pddl::Effect& e, EffectContext& context, VariableScope& scope, ActionSchema& schema);
+  // An untimed numeric effect of a durative action: continuous change.
+  // False (and the reason recorded as unsupported) unless it is linear.
+  bool continuous(const pddl::Effect& e, const EffectContext& context, const VariableScope& scope, PrimitiveEffect& p);
   std::vector<QuantifiedVariable> bind_all(const std::vector<pddl::TypedName>& variables, VariableScope& scope);
   LiftedTerm term(const pddl::Term& t, const VariableScope& scope);
   void unsupported(pddl::SourceLocation location, const std::string& what);

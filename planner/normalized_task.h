@@ -65,9 +65,12 @@ struct LiftedCondition {
 
 enum class Moment : unsigned char { Start, End };
 
-// One add, delete or numeric change, with what encloses it.
+// One add, delete or numeric change, with what encloses it. A continuous
+// effect (PDDL 2.1 level 4, `(increase f (* #t rate))` untimed in a durative
+// action) keeps `assign` Increase or Decrease and its rate in `value`: the
+// change per time unit while the action runs.
 struct PrimitiveEffect {
-  enum class Kind : unsigned char { Add, Delete, Numeric };
+  enum class Kind : unsigned char { Add, Delete, Numeric, Continuous };
   Kind kind = Kind::Add;
   Moment moment = Moment::Start;  // instantaneous actions use Start
   std::vector<QuantifiedVariable> forall;
@@ -99,8 +102,9 @@ struct ActionSchema {
   LiftedCondition at_start, over_all, at_end;
   std::vector<PrimitiveEffect> effects;
   std::vector<LiftedDurationConstraint> duration;
-  // Set when the schema has #t effects: the planner and validator refuse it
-  // with this message naming the construct and its position.
+  // Set when the schema has a construct the planner cannot handle (non-linear
+  // continuous change, ...): the planner and validator refuse it with this
+  // message naming the construct and its position.
   std::string unsupported;
 };
 

@@ -25,8 +25,11 @@ bool interfere(const Footprint& a, const Footprint& b) {
 }  // namespace
 
 PartialPlan::PartialPlan(const TaskIndex& index, double epsilon, double release,
-                         const std::vector<RunningAction>& running)
+                         const std::vector<RunningAction>& running, const std::vector<double>& values)
     : index_(&index), epsilon_(epsilon), release_(release) {
+  if (index.continuous()) {
+    continuous_.emplace(index.continuous(), values.empty() ? index.task().initial_values : values);
+  }
   for (const RunningAction& r : running) {
     const std::uint32_t node = network_.size();
     std::vector<TemporalEdge> edges{{0, node, std::max(r.min_duration, release_)}};
@@ -121,7 +124,32 @@ bool PartialPlan::append(const StepRecord& step) {
     values_.add_constraints(end_fp.reads_values, end_fp.writes_values, end, epsilon_, edges, node_of_step_);
     // The new start itself precedes the ends of the others it touches.
   }
-  if (!network_.add_nodes(new_nodes, edges)) return false;
+  std::vector<NumericVarId> invariant_reads;
+  if (continuous_) {
+    // Over-all conditions this snap checks read their variables at its time.
+    const SnapNodes at = snap_nodes(step, node);
+    if (step.continuous) invariant_reads = continuous_->invariant_reads(*step.continuous, at);
+    if (!invariant_reads.empty()) {
+      values_.add_constraints(invariant_reads, {}, node, epsilon_, edges, node_of_step_);
+      Footprint reads;
+      reads.reads_values = invariant_reads;
+      order_before_pending(reads, node, step.snap.kind == SnapKind::End ? step.snap.index : kNoId, edges);
+    }
+    const SimpleTemporalNetwork before = network_;
+    if (!network_.add_nodes(new_nodes, edges)) return false;
+    // An end with nothing of its own still stops its action's change.
+    static const ContinuousStep kNothing;
+    const bool scheduled = step.snap.kind == SnapKind::TimedLiteral
+                               ? continuous_->resolve(network_)
+                               : continuous_->add(step.continuous ? *step.continuous : kNothing, at, network_);
+    if (!scheduled) {
+      network_ = before;
+      return false;
+    }
+  } else if (!network_.add_nodes(new_nodes, edges)) {
+    return false;
+  }
+  values_.record(invariant_reads, {}, index);
   facts_.record(fp.reads, fp.writes, index);
   values_.record(fp.reads_values, fp.writes_values, index);
   steps_.push_back(step);
@@ -131,9 +159,42 @@ bool PartialPlan::append(const StepRecord& step) {
   return true;
 }
 
+double PartialPlan::node_time(std::uint32_t node) const {
+  return continuous_ && continuous_->active() ? continuous_->time(node) : network_.earliest(node);
+}
+
+SnapNodes PartialPlan::snap_nodes(const StepRecord& step, std::uint32_t node) const {
+  SnapNodes at{step.snap.kind, step.snap.index, node, node, node};
+  if (step.snap.kind == SnapKind::Start) at.end_node = node + 1;
+  if (step.snap.kind == SnapKind::End) {
+    for (const PendingEnd& p : pending_) {
+      if (p.action == step.snap.index) at.start_node = p.start_node;
+    }
+  }
+  return at;
+}
+
+bool PartialPlan::require_final(const std::vector<LinearCondition>& conditions) {
+  if (!continuous_) return conditions.empty();
+  return continuous_->require_final(conditions, network_);
+}
+
+void PartialPlan::set_changing_values(SearchState& state) const {
+  if (!continuous_ || node_of_step_.empty()) return;
+  const ContinuousModel& model = *index_->continuous();
+  for (NumericVarId v = 0; v < state.values().size(); ++v) {
+    if (model.changing(v)) state.set_value(v, continuous_->value_at(v, node_of_step_.back()));
+  }
+}
+
+std::pair<double, double> PartialPlan::changing_bounds(NumericVarId v, double value) const {
+  if (!continuous_ || !index_->continuous()->changing(v)) return {value, value};
+  return continuous_->bounds(v, node_of_step_.empty() ? 0 : node_of_step_.back(), network_);
+}
+
 double PartialPlan::pending_end_time(ActionId action) const {
   for (const PendingEnd& p : pending_) {
-    if (p.action == action) return network_.earliest(p.node);
+    if (p.action == action) return node_time(p.node);
   }
   return 0.0;
 }
@@ -168,7 +229,7 @@ double PartialPlan::makespan() const {
   for (std::uint32_t s = 0; s < steps_.size(); ++s) {
     if (steps_[s].snap.kind != SnapKind::TimedLiteral) latest = std::max(latest, time_of(s));
   }
-  for (const PendingEnd& p : pending_) latest = std::max(latest, network_.earliest(p.node));
+  for (const PendingEnd& p : pending_) latest = std::max(latest, node_time(p.node));
   return latest;
 }
 

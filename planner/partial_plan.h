@@ -21,6 +21,7 @@
 #include <optional>
 #include <vector>
 
+#include "planner/continuous_schedule.h"
 #include "planner/search_state.h"
 #include "planner/simple_temporal_network.h"
 #include "planner/snap_action.h"
@@ -35,14 +36,19 @@ struct StepRecord {
   std::uint32_t start_step = kNoId;  // End: the step of its start (kNoId: running before the plan)
   double min_duration = 0.0;         // Start and End: the duration window
   double max_duration = kInfiniteDuration;
+  // What the snap does to and asks of continuously changing variables; null
+  // in tasks without continuous change.
+  std::shared_ptr<const ContinuousStep> continuous = nullptr;
 };
 
 class PartialPlan {
  public:
   // `running` are actions already running when the plan begins; their
   // bounds count from the origin.
+  // `values` are the numeric values the plan starts from (the task's initial
+  // values when empty); only continuous change reads them.
   PartialPlan(const TaskIndex& index, double epsilon, double release = 0.0,
-              const std::vector<RunningAction>& running = {});
+              const std::vector<RunningAction>& running = {}, const std::vector<double>& values = {});
 
   // Appends a step and its constraints; false (and no change) when the
   // network becomes inconsistent, e.g. a deadline can no longer be met.
@@ -50,7 +56,16 @@ class PartialPlan {
 
   std::size_t size() const { return steps_.size(); }
   const std::vector<StepRecord>& steps() const { return steps_; }
-  double time_of(std::uint32_t step) const { return network_.earliest(node_of_step_[step]); }
+  double time_of(std::uint32_t step) const { return node_time(node_of_step_[step]); }
+  // With continuous change: the conditions every plan from here must meet at
+  // its end (the goal's on changing variables); false when they cannot.
+  bool require_final(const std::vector<LinearCondition>& conditions);
+  // With continuous change: sets the changing variables of `state` (the
+  // state after the last step) to their values in the schedule found.
+  void set_changing_values(SearchState& state) const;
+  // With continuous change: the range of a changing variable after the last
+  // step over every schedule the plan allows (its value when none changes).
+  std::pair<double, double> changing_bounds(NumericVarId v, double value) const;
   // The earliest time the end of a running action can come.
   double pending_end_time(ActionId action) const;
   // The latest time the end of a running action can come with every other
@@ -93,6 +108,9 @@ class PartialPlan {
   void order_before_pending(const Footprint& fp, std::uint32_t node, ActionId except,
                             std::vector<TemporalEdge>& edges) const;
 
+  double node_time(std::uint32_t node) const;
+  SnapNodes snap_nodes(const StepRecord& step, std::uint32_t node) const;
+
   const TaskIndex* index_;
   double epsilon_;
   double release_;  // no step before this time
@@ -101,6 +119,7 @@ class PartialPlan {
   std::vector<PendingEnd> pending_;
   SimpleTemporalNetwork network_;
   Ledger facts_, values_;
+  std::optional<ContinuousSchedule> continuous_;
 };
 
 }  // namespace alplan

@@ -31,11 +31,13 @@ std::string plan_text(const Plan& plan) {
   return out;
 }
 
-// Whether a schedule can rule out a future: a timed initial literal, or a
-// durative action whose duration is bounded above.
+// Whether a schedule can rule out a future: a timed initial literal, a
+// durative action whose duration is bounded above, or continuous change
+// (states then hold the values of one schedule among many).
 bool deadlines_possible(const GroundTask& task) {
   if (!task.timed_literals.empty()) return true;
   for (const GroundAction& a : task.actions) {
+    if (!a.continuous.empty()) return true;
     for (const GroundDurationConstraint& d : a.duration) {
       if (d.comparison != pddl::Comparison::GreaterEqual) return true;
     }
@@ -409,7 +411,8 @@ PlannerResult Planner::search_from(const PlanningStart& start, const std::functi
     if (outcome.status == SearchStatus::Exhausted) {
       if (outcome.root_dead_end) {
         proof = "the goal is unreachable even in the relaxation (temporal relaxed planning graph)";
-        const PartialPlan root(index, options_.epsilon, search_start.release, search_start.state.running());
+        const PartialPlan root(index, options_.epsilon, search_start.release, search_start.state.running(),
+                               search_start.state.values());
         heuristic.evaluate(search_start.state, root);
         std::string facts;
         for (FactId f : heuristic.unreached_goals()) facts += (facts.empty() ? "" : " ") + task_->fact_name(f);

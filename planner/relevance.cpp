@@ -83,6 +83,7 @@ struct Changers {
         axioms(task.facts.size()) {
     for (ActionId a = 0; a < task.actions.size(); ++a) {
       for (const HappeningEffects* e : {&task.actions[a].start, &task.actions[a].end}) add(a, *e);
+      for (const ContinuousEffect& c : task.actions[a].continuous) push(assigners[c.variable], a);
     }
     for (const GroundAxiom& x : task.axioms) axioms[x.head].push_back(&x);
   }
@@ -115,6 +116,7 @@ void mark_metric(const GroundTask& task, RelevanceMarks& marks) {
 void mark_action(const GroundAction& a, RelevanceMarks& marks) {
   for (const ConditionSet* c : {&a.at_start, &a.over_all, &a.at_end}) marks.condition(*c);
   for (const GroundDurationConstraint& d : a.duration) marks.expression(d.value);
+  for (const ContinuousEffect& c : a.continuous) marks.expression(c.rate);
   for (const HappeningEffects* e : {&a.start, &a.end}) {
     for (const NumericAssignment& n : e->numeric) marks.expression(n.value);
     for (const ConditionalEffect& c : e->conditional) {

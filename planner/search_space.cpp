@@ -38,7 +38,7 @@ bool SearchSpace::dominated(const SearchNode& candidate, NodeId stored) const {
 PartialPlan SearchSpace::partial_plan(NodeId id) const {
   std::vector<const StepRecord*> chain;
   for (NodeId n = id; n != 0; n = nodes_[n].parent) chain.push_back(&nodes_[n].step);
-  PartialPlan plan(index_, epsilon_, release_, nodes_[0].state.running());
+  PartialPlan plan(index_, epsilon_, release_, nodes_[0].state.running(), nodes_[0].state.values());
   for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
     // Every stored step was consistent when it was added; appending the same
     // steps in the same order reproduces the same network.
@@ -64,6 +64,7 @@ std::optional<Child> SearchSpace::schedule(NodeId id, const PartialPlan& plan, S
   if (s.step.snap.kind == SnapKind::Start) {
     s.state.set_start_step(s.step.snap.index, static_cast<std::uint32_t>(extended.size() - 1));
   }
+  extended.set_changing_values(s.state);
   Child child{SearchNode{}, std::move(extended)};
   child.node.parent = id;
   child.node.step = s.step;
@@ -155,10 +156,16 @@ std::optional<Solution> SearchSpace::goal_reached(NodeId id, const PartialPlan& 
     if (!next || !complete.append(step)) return std::nullopt;
     state = std::move(*next);
   }
-  try {
-    if (!holds(index_.task().goal, state, EvaluationContext{}, 0.0)) return std::nullopt;
-  } catch (const EvaluationError&) {
-    return std::nullopt;
+  if (const ContinuousModel* model = index_.continuous().get()) {
+    if (!model->holds_fixed_part(index_.task().goal, state, std::nan(""))) return std::nullopt;
+    const std::optional<std::vector<LinearCondition>> final_conditions = model->goal(index_.task().goal, state);
+    if (!final_conditions || !complete.require_final(*final_conditions)) return std::nullopt;
+  } else {
+    try {
+      if (!holds(index_.task().goal, state, EvaluationContext{}, 0.0)) return std::nullopt;
+    } catch (const EvaluationError&) {
+      return std::nullopt;
+    }
   }
   Solution solution;
   solution.steps = complete.steps();

@@ -18,13 +18,28 @@ double updated(double current, pddl::AssignOperator op, double value) {
   return value;
 }
 
+// Member by member: GCC 12 reports the shared_ptr inside a nested aggregate
+// initialiser as maybe uninitialised.
+Successor successor(Snap snap, const SearchState& state, std::uint32_t start_step = kNoId, double min = 0.0,
+                    double max = kInfiniteDuration) {
+  Successor s;
+  s.step.snap = snap;
+  s.step.start_step = start_step;
+  s.step.min_duration = min;
+  s.step.max_duration = max;
+  s.state = state;
+  return s;
+}
+
 }  // namespace
 
-DurationWindow duration_window(const GroundAction& action, Moment moment, const SearchState& state) {
+DurationWindow duration_window(const GroundAction& action, Moment moment, const SearchState& state,
+                               const ContinuousModel* model) {
   DurationWindow window;
   try {
     for (const GroundDurationConstraint& d : action.duration) {
       if (d.moment != moment) continue;
+      if (model && model->changing(d.value)) continue;
       const double v = evaluate(d.value, state, EvaluationContext{});
       if (d.comparison != pddl::Comparison::LessEqual) window.min = std::max(window.min, v);
       if (d.comparison != pddl::Comparison::GreaterEqual) window.max = std::min(window.max, v);
@@ -73,15 +88,30 @@ bool SuccessorGenerator::apply_effects(const HappeningEffects& effects, const Se
   return true;
 }
 
+bool SuccessorGenerator::condition_holds(const ConditionSet& c, const SearchState& state, double duration) const {
+  if (const ContinuousModel* model = index_.continuous().get()) return model->holds_fixed_part(c, state, duration);
+  EvaluationContext context;
+  context.duration = duration;
+  try {
+    return holds(c, state, context, 0.0);
+  } catch (const EvaluationError&) {
+    return false;
+  }
+}
+
+bool SuccessorGenerator::attach_continuous(const GroundAction& action, const SearchState& before, double duration,
+                                           StepRecord& step) const {
+  const ContinuousModel* model = index_.continuous().get();
+  if (!model) return true;
+  std::optional<ContinuousStep> part = model->step(action, step.snap.kind, before, duration);
+  if (!part) return false;
+  if (!part->empty()) step.continuous = std::make_shared<const ContinuousStep>(std::move(*part));
+  return true;
+}
+
 bool SuccessorGenerator::invariants_hold(const SearchState& state) const {
   for (const RunningAction& r : state.running()) {
-    EvaluationContext context;
-    context.duration = r.min_duration;
-    try {
-      if (!holds(index_.task().actions[r.action].over_all, state, context, 0.0)) return false;
-    } catch (const EvaluationError&) {
-      return false;
-    }
+    if (!condition_holds(index_.task().actions[r.action].over_all, state, r.min_duration)) return false;
   }
   return true;
 }
@@ -93,20 +123,17 @@ void SuccessorGenerator::add_end(const SearchState& state, std::size_t running_i
   EvaluationContext context;
   const bool fixed = running.min_duration == running.max_duration;
   context.duration = fixed ? running.min_duration : std::nan("");
-  try {
-    if (!holds(action.at_end, state, context, 0.0)) return;
-  } catch (const EvaluationError&) {
-    return;
-  }
+  if (!condition_holds(action.at_end, state, context.duration)) return;
   double min = running.min_duration, max = running.max_duration;
   if (!action.duration.empty() && running.start_step != kNoId) {
-    const DurationWindow at_end = duration_window(action, Moment::End, state);
+    const DurationWindow at_end = duration_window(action, Moment::End, state, index_.continuous().get());
     if (!at_end.valid) return;
     min = std::max(min, at_end.min);
     max = std::min(max, at_end.max);
     if (min > max + 1e-9) return;
   }
-  Successor s{{{SnapKind::End, running.action}, running.start_step, min, max}, state};
+  Successor s = successor({SnapKind::End, running.action}, state, running.start_step, min, max);
+  if (!attach_continuous(action, state, context.duration, s.step)) return;
   s.state.finish(running_index);
   if (!apply_effects(action.end, state, context.duration, s.state)) return;
   if (!invariants_hold(s.state)) return;
@@ -117,7 +144,7 @@ void SuccessorGenerator::add_timed_literal(const SearchState& state, std::vector
   const std::uint32_t next = state.next_timed_literal();
   if (next >= index_.task().timed_literals.size()) return;
   const GroundTimedLiteral& til = index_.task().timed_literals[next];
-  Successor s{{{SnapKind::TimedLiteral, next}}, state};
+  Successor s = successor({SnapKind::TimedLiteral, next}, state);
   s.state.set_fact(til.fact, til.positive);
   s.state.set_next_timed_literal(next + 1);
   derive(index_.task(), s.state);
@@ -127,25 +154,17 @@ void SuccessorGenerator::add_timed_literal(const SearchState& state, std::vector
 void SuccessorGenerator::add_action(const SearchState& state, ActionId id, std::vector<Successor>& out) const {
   const GroundAction& action = index_.task().actions[id];
   // Conditions on ?duration are checked per duration choice below.
-  auto condition_holds = [&](double duration) {
-    EvaluationContext context;
-    context.duration = duration;
-    try {
-      return holds(action.at_start, state, context, 0.0);
-    } catch (const EvaluationError&) {
-      return false;
-    }
-  };
   if (!action.durative) {
-    if (!condition_holds(std::nan(""))) return;
-    Successor s{{{SnapKind::Instant, id}}, state};
+    if (!condition_holds(action.at_start, state, std::nan(""))) return;
+    Successor s = successor({SnapKind::Instant, id}, state);
+    if (!attach_continuous(action, state, std::nan(""), s.step)) return;
     if (apply_effects(action.start, state, std::nan(""), s.state) && invariants_hold(s.state)) {
       out.push_back(std::move(s));
     }
     return;
   }
   if (state.is_running(id)) return;
-  const DurationWindow window = duration_window(action, Moment::Start, state);
+  const DurationWindow window = duration_window(action, Moment::Start, state, index_.continuous().get());
   if (!window.valid) return;
   // With effects or conditions on ?duration the duration is fixed at start:
   // the shortest and, when bounded and different, the longest are tried.
@@ -157,9 +176,10 @@ void SuccessorGenerator::add_action(const SearchState& state, ActionId id, std::
     choices.emplace_back(window.min, window.max);
   }
   for (const auto& [min, max] : choices) {
-    Successor s{{{SnapKind::Start, id}, kNoId, min, max}, state};
+    Successor s = successor({SnapKind::Start, id}, state, kNoId, min, max);
     const double duration = min == max ? min : std::nan("");
-    if (!condition_holds(duration)) continue;
+    if (!condition_holds(action.at_start, state, duration)) continue;
+    if (!attach_continuous(action, state, duration, s.step)) continue;
     if (!apply_effects(action.start, state, duration, s.state)) continue;
     // The new action's invariant must hold right after its start, and so
     // must everyone else's.

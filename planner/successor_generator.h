@@ -45,6 +45,13 @@ class SuccessorGenerator {
   void add_action(const SearchState& state, ActionId action, std::vector<Successor>& out) const;
   bool apply_effects(const HappeningEffects& effects, const SearchState& before, double duration,
                      SearchState& after) const;
+  // A condition's part the state decides: all of it, or with continuous
+  // change all but the comparisons on changing values.
+  bool condition_holds(const ConditionSet& c, const SearchState& state, double duration) const;
+  // Attaches the snap's constraints on changing values; false when a value
+  // they need is undefined.
+  bool attach_continuous(const GroundAction& action, const SearchState& before, double duration,
+                         StepRecord& step) const;
 
   const TaskIndex& index_;
 };
@@ -55,6 +62,9 @@ struct DurationWindow {
   double max = kInfiniteDuration;
   bool valid = true;  // false when a bound is undefined or min > max
 };
-DurationWindow duration_window(const GroundAction& action, Moment moment, const SearchState& state);
+// Constraints on continuously changing values are left out (`model`): the
+// schedule enforces them.
+DurationWindow duration_window(const GroundAction& action, Moment moment, const SearchState& state,
+                               const ContinuousModel* model = nullptr);
 
 }  // namespace alplan

@@ -152,6 +152,13 @@ std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const Gr
       condition_reads(action.at_end, x.end[a]);
       condition_reads(action.over_all, x.end[a]);
       effect_footprint(action.end, x.end[a]);
+      // A continuous effect changes its variable from the start to the end:
+      // both snaps write it, so readers and writers are ordered around them.
+      for (const ContinuousEffect& c : action.continuous) {
+        x.start[a].writes_values.push_back(c.variable);
+        x.end[a].writes_values.push_back(c.variable);
+        variables(c.rate, x.start[a].reads_values);
+      }
       finish(x.start[a]);
       finish(x.end[a]);
       x.duration_dependent[a] = effects_mention_duration(action.start) || effects_mention_duration(action.end) ||
@@ -180,6 +187,8 @@ std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const Gr
       x.by_fact[f].push_back(a);
     }
   }
+  x.continuous = ContinuousModel::build(t);
+  if (x.continuous && x.continuous->unsupported() && !x.unsupported) x.unsupported = x.continuous->unsupported();
   if (!t.axioms.empty()) {
     DerivedSupport derived(t);
     for (std::vector<Footprint>* list : {&x.instant, &x.start, &x.end}) {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "planner/continuous_change.h"
 #include "planner/ground_task.h"
 #include "planner/snap_action.h"
 
@@ -34,6 +35,8 @@ class TaskIndex {
   const std::vector<ActionId>& unindexed() const { return actions_->unindexed; }
   // Effects or conditions read ?duration: the duration must be fixed at start.
   bool duration_dependent(ActionId action) const { return actions_->duration_dependent[action]; }
+  // Continuous change (PDDL 2.1 level 4): null when the task has none.
+  const std::shared_ptr<const ContinuousModel>& continuous() const { return actions_->continuous; }
   // The first construct of the task the planner refuses, with its position.
   const std::optional<std::string>& unsupported() const { return unsupported_; }
 
@@ -44,6 +47,7 @@ class TaskIndex {
     std::vector<ActionId> unindexed;
     std::vector<bool> duration_dependent;
     std::optional<std::string> unsupported;
+    std::shared_ptr<const ContinuousModel> continuous;
   };
   static std::shared_ptr<const ActionTables> index_actions(const GroundTask& task);
   void index_rest();

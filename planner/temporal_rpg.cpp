@@ -176,6 +176,12 @@ std::shared_ptr<const TemporalRpg::Graph> TemporalRpg::build(const TaskIndex& in
     r.durative = g.durative;
     adds(g.start, r.start_add, r.start_numeric_effects);
     if (g.durative) adds(g.end, r.end_add, r.end_numeric_effects);
+    for (const ContinuousEffect& c : g.continuous) {
+      graph->continuous_effects.push_back({c.variable, c.assign, c.rate});
+      r.start_numeric_effects.push_back(&graph->continuous_effects.back());
+      // Once more at the end, for an action already running in the state.
+      if (g.durative) r.end_numeric_effects.push_back(&graph->continuous_effects.back());
+    }
     r.start_pre = g.at_start.positive;
     numeric_list(g.at_start, r.start_numeric);
     if (g.durative) {
@@ -355,7 +361,7 @@ std::vector<FactId> TemporalRpg::unreached_goals() const {
 }
 
 double TemporalRpg::Exploration::duration_of(ActionId a) {
-  const DurationWindow w = duration_window(rpg_.index_.task().actions[a], Moment::Start, *state_);
+  const DurationWindow w = duration_window(rpg_.index_.task().actions[a], Moment::Start, *state_, rpg_.index_.continuous().get());
   return w.valid ? w.min : -1.0;
 }
 
@@ -470,9 +476,14 @@ HeuristicValue TemporalRpg::Exploration::run(const SearchState& state, const Par
     axiom_count_.values[x] = static_cast<std::uint32_t>(task.axioms[x].body.positive.size());
     axiom_count_.stamps[x] = generation_;
   }
+  const ContinuousModel* continuous = rpg_.index_.continuous().get();
   for (NumericVarId v = 0; v < bounds_.size(); ++v) {
     const double x = state.value(v);
     bounds_[v] = std::isnan(x) ? Interval{kInfinity, -kInfinity} : Interval{x, x};
+    if (continuous && continuous->changing(v) && !std::isnan(x)) {
+      const auto [lo, hi] = plan.changing_bounds(v, x);
+      if (lo <= hi) bounds_[v] = Interval{lo, hi};
+    }
     supporter_[v] = kNoId;
   }
   for (FactId f : parked_facts_) parked_on_[f].clear();

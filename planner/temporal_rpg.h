@@ -10,6 +10,7 @@
 #pragma once
 
 #include <limits>
+#include <deque>
 #include <memory>
 #include <vector>
 
@@ -114,6 +115,10 @@ struct TemporalRpg::Graph {
   std::vector<std::vector<NumericVarId>> comparison_variables;
   std::vector<FactId> goal_facts;  // sorted
   std::vector<std::uint32_t> goal_numeric;
+  // Continuous effects relaxed to an increase or decrease at the start by
+  // their rate (the relaxation only reads its sign); a deque, so that the
+  // actions' pointers into it stay valid.
+  std::deque<NumericAssignment> continuous_effects;
 };
 
 }  // namespace alplan

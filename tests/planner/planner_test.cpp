@@ -219,14 +219,14 @@ TEST_CASE("a goal the relaxation cannot reach before a deadline is named in the 
         "reaches (done)");
 }
 
-TEST_CASE("continuous effects are rejected with the construct and its position") {
+TEST_CASE("non-linear continuous effects are rejected with the construct and its position") {
   auto task = ground_text(R"(
 (define (domain tank) (:requirements :durative-actions :fluents :continuous-effects)
   (:predicates (open))
   (:functions (level))
   (:durative-action fill :parameters () :duration (= ?duration 5)
     :condition (at start (open))
-    :effect (increase (level) (* #t 2))))
+    :effect (increase (level) (* #t (* #t 2)))))
 )", R"((define (problem p) (:domain tank) (:init (open) (= (level) 0)) (:goal (>= (level) 4))))");
   PlannerResult result = solve(task);
   CHECK(result.status == Status::Unsupported);
