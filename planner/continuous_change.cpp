@@ -126,6 +126,11 @@ bool linear_shape(const GroundExpression& e, const ContinuousModel& model) {
   }
 }
 
+void collect(const GroundExpression& e, std::vector<NumericVarId>& out) {
+  if (e.kind == K::Variable) out.push_back(e.variable);
+  for (const GroundExpression& o : e.operands) collect(o, out);
+}
+
 bool mentions(const GroundExpression& e, const std::vector<bool>& changing) {
   if (e.kind == K::Variable) return changing[e.variable];
   return std::any_of(e.operands.begin(), e.operands.end(), [&](const auto& o) { return mentions(o, changing); });
@@ -206,6 +211,34 @@ ContinuousModel::ContinuousModel(const GroundTask& task) : task_(&task), changin
       }
     }
   }
+  writers_.resize(task.numeric.size());
+  for (ActionId a = 0; a < task.actions.size(); ++a) {
+    std::vector<NumericVarId> written;
+    for (const ContinuousEffect& c : task.actions[a].continuous) written.push_back(c.variable);
+    for (const HappeningEffects* h : {&task.actions[a].start, &task.actions[a].end}) {
+      for (const NumericAssignment& n : h->numeric) written.push_back(n.variable);
+    }
+    std::sort(written.begin(), written.end());
+    written.erase(std::unique(written.begin(), written.end()), written.end());
+    for (NumericVarId v : written) {
+      if (changing_[v]) writers_[v].push_back(a);
+    }
+  }
+  comparisons_.resize(task.numeric.size());
+  auto index = [&](const ConditionSet& c) {
+    for (const GroundComparison& cmp : c.numeric) {
+      std::vector<NumericVarId> read;
+      collect(cmp.left, read);
+      collect(cmp.right, read);
+      for (NumericVarId v : read) {
+        if (changing_[v] && (comparisons_[v].empty() || comparisons_[v].back() != &cmp)) comparisons_[v].push_back(&cmp);
+      }
+    }
+  };
+  for (const GroundAction& a : task.actions) {
+    for (const ConditionSet* c : {&a.at_start, &a.over_all, &a.at_end}) index(*c);
+  }
+  index(task.goal);
   for (const GroundAxiom& x : task.axioms) {
     for (const GroundComparison& cmp : x.body.numeric) {
       if (changing(cmp) && !unsupported_) {
@@ -213,6 +246,18 @@ ContinuousModel::ContinuousModel(const GroundTask& task) : task_(&task), changin
       }
     }
   }
+}
+
+bool ContinuousModel::conditions_hold_at(NumericVarId v, const SearchState& state) const {
+  try {
+    for (const GroundComparison* cmp : comparisons_[v]) {
+      // ?duration is unknown here: such a condition counts as failing.
+      if (!holds(*cmp, state, EvaluationContext{}, 0.0)) return false;
+    }
+  } catch (const EvaluationError&) {
+    return false;
+  }
+  return true;
 }
 
 bool ContinuousModel::holds_fixed_part(const ConditionSet& c, const SearchState& state, double duration) const {

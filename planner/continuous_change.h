@@ -79,6 +79,13 @@ class ContinuousModel {
   // The goal's comparisons on changing variables.
   std::optional<std::vector<LinearCondition>> goal(const ConditionSet& goal, const SearchState& state) const;
 
+  // Whether every condition of an action or the goal on the variable holds
+  // with it at `value` (the others at theirs in `state`). Where one fails,
+  // the heuristic asks the schedule for the variable's range (an LP).
+  bool conditions_hold_at(NumericVarId v, const SearchState& state) const;
+  // The actions that change a variable, continuously or at a snap.
+  const std::vector<ActionId>& writers(NumericVarId v) const { return writers_[v]; }
+
   // Whether a condition holds, its comparisons on changing variables left
   // to the schedule.
   bool holds_fixed_part(const ConditionSet& c, const SearchState& state, double duration) const;
@@ -88,6 +95,8 @@ class ContinuousModel {
 
   const GroundTask* task_;
   std::vector<bool> changing_;
+  std::vector<std::vector<const GroundComparison*>> comparisons_;  // by changing variable
+  std::vector<std::vector<ActionId>> writers_;                     // by changing variable
   std::optional<std::string> unsupported_;
 };
 

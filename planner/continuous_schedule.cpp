@@ -36,7 +36,7 @@ void ContinuousSchedule::Affine::add(const Affine& other, double k) {
 
 ContinuousSchedule::ContinuousSchedule(std::shared_ptr<const ContinuousModel> model,
                                        const std::vector<double>& initial_values)
-    : model_(std::move(model)), values_(initial_values.size()), times_(1, 0.0) {
+    : model_(std::move(model)), values_(initial_values.size()), last_change_(initial_values.size(), 0), times_(1, 0.0) {
   for (std::size_t v = 0; v < initial_values.size(); ++v) {
     // Increasing an undefined value starts it from 0, as VAL does.
     values_[v].base.constant = std::isnan(initial_values[v]) ? 0.0 : initial_values[v];
@@ -150,7 +150,8 @@ bool ContinuousSchedule::apply_effects(const std::vector<LinearAssignment>& effe
   return true;
 }
 
-bool ContinuousSchedule::add(const ContinuousStep& step, const SnapNodes& at, const SimpleTemporalNetwork& network) {
+bool ContinuousSchedule::add(const ContinuousStep& step, const SnapNodes& at, const SimpleTemporalNetwork& network,
+                             bool solve) {
   ContinuousSchedule next = *this;
   auto ending = std::find_if(next.running_.begin(), next.running_.end(),
                              [&](const Running& r) { return at.kind == SnapKind::End && r.action == at.action; });
@@ -176,28 +177,40 @@ bool ContinuousSchedule::add(const ContinuousStep& step, const SnapNodes& at, co
     }
   }
   next.check_invariants(written, at, at.kind == SnapKind::Start ? at.action : kNoId);
-  if (!next.solve(network)) return false;
+  for (NumericVarId v : written) next.last_change_[v] = at.node;
+  if (solve && !next.solve(network)) return false;
   *this = std::move(next);
   return true;
 }
 
 bool ContinuousSchedule::require_final(const std::vector<LinearCondition>& conditions,
                                        const SimpleTemporalNetwork& network) {
-  if (conditions.empty()) return resolve(network);
+  if (conditions.empty()) return solve(network, true);
   ContinuousSchedule next = *this;
   const SnapNodes nowhere;
   for (const LinearCondition& c : conditions) next.require(c, 0, nowhere);
-  if (!next.solve(network)) return false;
+  if (!next.solve(network, true)) return false;
   *this = std::move(next);
   return true;
 }
 
 bool ContinuousSchedule::resolve(const SimpleTemporalNetwork& network) { return solve(network); }
 
-bool ContinuousSchedule::solve(const SimpleTemporalNetwork& network) {
-  if (rows_.empty()) {
+bool ContinuousSchedule::solve(const SimpleTemporalNetwork& network, bool least) {
+  // The network's earliest times are the least schedule there is: when they
+  // meet every linear constraint they are the program's optimum, unsolved.
+  if (satisfied_by(network.earliest_times())) {
     times_ = network.earliest_times();
     return true;
+  }
+  // Most steps fit after the schedule found before them: that schedule,
+  // pushed along the new constraints, is feasible if it meets them all, if
+  // not always the least.
+  if (!least) {
+    if (std::optional<std::vector<double>> pushed = pushed_schedule(network); pushed && satisfied_by(*pushed)) {
+      times_ = std::move(*pushed);
+      return true;
+    }
   }
   std::optional<std::vector<double>> x = alplan::solve(program(network));
   if (!x) return false;
@@ -234,6 +247,54 @@ LinearProgram ContinuousSchedule::program(const SimpleTemporalNetwork& network) 
   }
   program.rows.insert(program.rows.end(), rows_.begin(), rows_.end());
   return program;
+}
+
+std::optional<std::vector<double>> ContinuousSchedule::pushed_schedule(const SimpleTemporalNetwork& network) const {
+  constexpr double kTolerance = 1e-9;
+  std::vector<double> times = times_;
+  times.resize(network.size(), 0.0);
+  for (std::uint32_t n = 0; n < network.size(); ++n) times[n] = std::max(times[n], network.earliest(n));
+  for (std::uint32_t pass = 0; pass <= network.size(); ++pass) {
+    bool changed = false;
+    for (const TemporalEdge& e : network.edges()) {
+      if (times[e.to] < times[e.from] + e.weight - kTolerance) {
+        times[e.to] = times[e.from] + e.weight;
+        changed = true;
+      }
+    }
+    if (!changed) return times[0] == 0.0 ? std::optional<std::vector<double>>(std::move(times)) : std::nullopt;
+  }
+  return std::nullopt;
+}
+
+std::vector<std::pair<ActionId, std::vector<NumericVarId>>> ContinuousSchedule::failing_at_end(
+    const SimpleTemporalNetwork& network) const {
+  std::vector<std::pair<ActionId, std::vector<NumericVarId>>> failing;
+  for (const Running& r : running_) {
+    if (r.invariants.empty()) continue;
+    ContinuousSchedule ended = *this;
+    const SnapNodes own{SnapKind::End, r.action, r.end_node, r.start_node, r.end_node};
+    for (const LinearCondition& c : r.invariants) ended.require(c, r.end_node, own);
+    if (ended.satisfied_by(times_) || ended.solve(network)) continue;
+    std::vector<NumericVarId> read;
+    for (const LinearCondition& c : r.invariants) {
+      for (const auto& [v, coefficient] : c.form.terms) read.push_back(v);
+    }
+    std::sort(read.begin(), read.end());
+    read.erase(std::unique(read.begin(), read.end()), read.end());
+    failing.emplace_back(r.action, std::move(read));
+  }
+  return failing;
+}
+
+bool ContinuousSchedule::satisfied_by(const std::vector<double>& times) const {
+  constexpr double kTolerance = 1e-9;
+  for (const LinearRow& row : rows_) {
+    double x = 0.0;
+    for (const auto& [n, c] : row.coefficients) x += c * times[n];
+    if (x < row.lower - kTolerance || x > row.upper + kTolerance) return false;
+  }
+  return true;
 }
 
 double ContinuousSchedule::value_at(NumericVarId v, std::uint32_t node) const {

@@ -46,7 +46,9 @@ class ContinuousSchedule {
 
   // Adds the snap's constraints and effects; false (and no change) when the
   // network and the linear constraints cannot all hold.
-  bool add(const ContinuousStep& step, const SnapNodes& at, const SimpleTemporalNetwork& network);
+  // `solve` false: the caller knows the constraints hold (a replay) and
+  // solves once at the end with resolve().
+  bool add(const ContinuousStep& step, const SnapNodes& at, const SimpleTemporalNetwork& network, bool solve = true);
   // Conditions that must hold once every step is done (the goal's).
   bool require_final(const std::vector<LinearCondition>& conditions, const SimpleTemporalNetwork& network);
   // The schedule again after the network alone changed (a timed literal).
@@ -57,11 +59,21 @@ class ContinuousSchedule {
   double time(std::uint32_t node) const { return times_[node]; }
   // A changing variable's value at a node's time in the current solution.
   double value_at(NumericVarId v, std::uint32_t node) const;
+  // The time point of the last step that changed the variable (its value
+  // right after it is the variable's value "now": a later step not ordered
+  // after its next change would extrapolate past it); 0 when none has.
+  std::uint32_t last_change(NumericVarId v) const { return last_change_[v]; }
   // The least and greatest value a changing variable can have at a node's
   // time over every schedule the constraints allow (COLIN's bounds, which
   // its heuristic starts from); infinite where unbounded.
   std::pair<double, double> bounds(NumericVarId v, std::uint32_t node, const SimpleTemporalNetwork& network) const;
   std::size_t rows() const { return rows_.size(); }
+  // Running actions whose over-all conditions cannot hold at their ends if
+  // nothing changes the rates and values from now on, with the variables
+  // those conditions read: unless another action changes one of them before
+  // the end, the plan cannot be finished.
+  std::vector<std::pair<ActionId, std::vector<NumericVarId>>> failing_at_end(
+      const SimpleTemporalNetwork& network) const;
 
  private:
   struct Affine {
@@ -86,11 +98,15 @@ class ContinuousSchedule {
   void require(const LinearCondition& c, std::uint32_t node, const SnapNodes& at);
   void check_invariants(const std::vector<NumericVarId>& written, const SnapNodes& at, ActionId except);
   bool apply_effects(const std::vector<LinearAssignment>& effects, const SnapNodes& at);
-  bool solve(const SimpleTemporalNetwork& network);
+  // `least`: the least schedule, not only a feasible one.
+  bool solve(const SimpleTemporalNetwork& network, bool least = false);
+  std::optional<std::vector<double>> pushed_schedule(const SimpleTemporalNetwork& network) const;
   LinearProgram program(const SimpleTemporalNetwork& network) const;
+  bool satisfied_by(const std::vector<double>& times) const;
 
   std::shared_ptr<const ContinuousModel> model_;
   std::vector<Trajectory> values_;  // by variable; only changing ones are used
+  std::vector<std::uint32_t> last_change_;  // by variable
   std::vector<Running> running_;
   std::vector<LinearRow> rows_;     // over network nodes
   std::vector<double> times_;

@@ -84,6 +84,16 @@ void PartialPlan::order_before_pending(const Footprint& fp, std::uint32_t node, 
   }
 }
 
+void PartialPlan::replay(const StepRecord& step) {
+  replaying_ = true;
+  append(step);
+  replaying_ = false;
+}
+
+void PartialPlan::settle() {
+  if (continuous_) continuous_->resolve(network_);
+}
+
 bool PartialPlan::append(const StepRecord& step) {
   const std::uint32_t index = static_cast<std::uint32_t>(steps_.size());
   const Footprint& fp = index_->footprint(step.snap);
@@ -140,8 +150,9 @@ bool PartialPlan::append(const StepRecord& step) {
     // An end with nothing of its own still stops its action's change.
     static const ContinuousStep kNothing;
     const bool scheduled = step.snap.kind == SnapKind::TimedLiteral
-                               ? continuous_->resolve(network_)
-                               : continuous_->add(step.continuous ? *step.continuous : kNothing, at, network_);
+                               ? replaying_ || continuous_->resolve(network_)
+                               : continuous_->add(step.continuous ? *step.continuous : kNothing, at, network_,
+                                                  !replaying_);
     if (!scheduled) {
       network_ = before;
       return false;
@@ -183,13 +194,18 @@ void PartialPlan::set_changing_values(SearchState& state) const {
   if (!continuous_ || node_of_step_.empty()) return;
   const ContinuousModel& model = *index_->continuous();
   for (NumericVarId v = 0; v < state.values().size(); ++v) {
-    if (model.changing(v)) state.set_value(v, continuous_->value_at(v, node_of_step_.back()));
+    if (model.changing(v)) state.set_value(v, continuous_->value_at(v, continuous_->last_change(v)));
   }
 }
 
 std::pair<double, double> PartialPlan::changing_bounds(NumericVarId v, double value) const {
   if (!continuous_ || !index_->continuous()->changing(v)) return {value, value};
-  return continuous_->bounds(v, node_of_step_.empty() ? 0 : node_of_step_.back(), network_);
+  return continuous_->bounds(v, continuous_->last_change(v), network_);
+}
+
+std::vector<std::pair<ActionId, std::vector<NumericVarId>>> PartialPlan::invariants_failing_at_end() const {
+  if (!continuous_) return {};
+  return continuous_->failing_at_end(network_);
 }
 
 double PartialPlan::pending_end_time(ActionId action) const {

@@ -53,6 +53,10 @@ class PartialPlan {
   // Appends a step and its constraints; false (and no change) when the
   // network becomes inconsistent, e.g. a deadline can no longer be met.
   bool append(const StepRecord& step);
+  // Appends a step known to fit (replaying a stored chain): with continuous
+  // change the linear program is left unsolved until `settle()`.
+  void replay(const StepRecord& step);
+  void settle();
 
   std::size_t size() const { return steps_.size(); }
   const std::vector<StepRecord>& steps() const { return steps_; }
@@ -66,6 +70,8 @@ class PartialPlan {
   // With continuous change: the range of a changing variable after the last
   // step over every schedule the plan allows (its value when none changes).
   std::pair<double, double> changing_bounds(NumericVarId v, double value) const;
+  // With continuous change: see ContinuousSchedule::failing_at_end.
+  std::vector<std::pair<ActionId, std::vector<NumericVarId>>> invariants_failing_at_end() const;
   // The earliest time the end of a running action can come.
   double pending_end_time(ActionId action) const;
   // The latest time the end of a running action can come with every other
@@ -120,6 +126,7 @@ class PartialPlan {
   SimpleTemporalNetwork network_;
   Ledger facts_, values_;
   std::optional<ContinuousSchedule> continuous_;
+  bool replaying_ = false;
 };
 
 }  // namespace alplan

@@ -42,8 +42,9 @@ PartialPlan SearchSpace::partial_plan(NodeId id) const {
   for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
     // Every stored step was consistent when it was added; appending the same
     // steps in the same order reproduces the same network.
-    plan.append(**it);
+    plan.replay(**it);
   }
+  plan.settle();
   return plan;
 }
 

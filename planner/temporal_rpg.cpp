@@ -77,6 +77,7 @@ class TemporalRpg::Exploration {
   void park(FactId fact, ActionId a, bool end);
   double duration_of(ActionId a);
   HeuristicValue extract(const SearchState& state, double goal_time);
+  bool continuous_dead_end();
   bool goals_reached() const { return goals_left_ == 0 && satisfiable(rpg_.goal_numeric_); }
 
   TemporalRpg& rpg_;
@@ -84,6 +85,7 @@ class TemporalRpg::Exploration {
   const PartialPlan* plan_ = nullptr;
   std::uint32_t generation_ = 0;
   Stamped<double> fact_time_, fact_cost_, end_ready_, enabled_time_, started_at_, start_cost_;
+  Stamped<double> start_time_;  // infinite until started in this evaluation
   Stamped<Achiever> achiever_;
   Stamped<std::uint32_t> start_count_, end_count_, axiom_count_;
   Stamped<char> processed_, parked_start_, parked_end_, counted_start_, counted_end_;
@@ -133,6 +135,7 @@ TemporalRpg::TemporalRpg(const TaskIndex& index, TemporalRpgOptions options, std
   x.supporter_.resize(task.numeric.size(), kNoId);
   x.parked_on_.resize(facts);
   x.started_at_.resize(actions, 0.0);
+  x.start_time_.resize(actions, kInfinity);
 }
 
 TemporalRpg::~TemporalRpg() = default;
@@ -395,6 +398,7 @@ void TemporalRpg::Exploration::try_start(ActionId a, double time) {
     return;
   }
   const double start = fit.start;
+  start_time_.at(a, generation_) = start;
   const double cost = 1.0 + cost_of(r.start_pre);
   if (!r.durative) {
     for (FactId f : r.start_add) reach(f, start + epsilon, {AchieverKind::Instant, a}, cost);
@@ -480,7 +484,7 @@ HeuristicValue TemporalRpg::Exploration::run(const SearchState& state, const Par
   for (NumericVarId v = 0; v < bounds_.size(); ++v) {
     const double x = state.value(v);
     bounds_[v] = std::isnan(x) ? Interval{kInfinity, -kInfinity} : Interval{x, x};
-    if (continuous && continuous->changing(v) && !std::isnan(x)) {
+    if (continuous && continuous->changing(v) && !std::isnan(x) && !continuous->conditions_hold_at(v, state)) {
       const auto [lo, hi] = plan.changing_bounds(v, x);
       if (lo <= hi) bounds_[v] = Interval{lo, hi};
     }
@@ -526,7 +530,43 @@ HeuristicValue TemporalRpg::Exploration::run(const SearchState& state, const Par
     reached = goals_reached();
   }
   if (!reached) return HeuristicValue{};
-  return extract(state, goal_time);
+  HeuristicValue value = extract(state, goal_time);
+  if (rpg_.index_.continuous() && continuous_dead_end()) return HeuristicValue{};
+  return value;
+}
+
+// A running action whose over-all condition on changing values fails at
+// its end unless something changes them first: a dead end when no action
+// that changes them can start (in the relaxation) before that end, nor a
+// running one end. The exploration goes on past the goal to see. (It takes
+// the running action's end at its earliest; a plan that delayed the end
+// to let help arrive is given up, as POPF gives up other orderings.)
+bool TemporalRpg::Exploration::continuous_dead_end() {
+  const std::vector<std::pair<ActionId, std::vector<NumericVarId>>> failing = plan_->invariants_failing_at_end();
+  if (failing.empty()) return false;
+  double horizon = 0.0;
+  for (const auto& [action, variables] : failing) horizon = std::max(horizon, plan_->pending_end_time(action));
+  while (!queue_.empty() && queue_.top().time < horizon) {
+    const Event e = queue_.top();
+    queue_.pop();
+    if (e.time > fact_time_.at(e.fact, generation_) || processed_.at(e.fact, generation_)) continue;
+    processed_.at(e.fact, generation_) = 1;
+    process(e.fact, e.time);
+  }
+  const ContinuousModel& model = *rpg_.index_.continuous();
+  for (const auto& [action, variables] : failing) {
+    const double end = plan_->pending_end_time(action);
+    bool helped = false;
+    for (NumericVarId v : variables) {
+      for (ActionId w : model.writers(v)) {
+        if (w == action) continue;
+        const double by = state_->is_running(w) ? plan_->pending_end_time(w) : start_time_.at(w, generation_);
+        if (by < end) helped = true;
+      }
+    }
+    if (!helped) return true;
+  }
+  return false;
 }
 
 HeuristicValue TemporalRpg::Exploration::extract(const SearchState& state, double goal_time) {
