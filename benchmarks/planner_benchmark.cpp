@@ -2,7 +2,8 @@
 // temporal RPG heuristic, generating successors, updating the simple
 // temporal network, and whole searches (states expanded per second).
 //   build/benchmarks/planner_benchmark
-// and the first plan for each of the paper's scenarios, grounding included.
+// and the first plan for each of the paper's scenarios and for three problems
+// with continuous change (domains/continuous), grounding included.
 #include <benchmark/benchmark.h>
 
 #include <fstream>
@@ -170,6 +171,25 @@ void paper_scenario(benchmark::State& state) {
   }
 }
 
+// Continuous change (domains/continuous): a first plan, grounding included;
+// expansions per second show what the linear programs cost the search.
+void continuous_first_plan(benchmark::State& state, const char* domain_name, const char* problem_name) {
+  const std::string dir = std::string(ALPLAN_SOURCE_DIR) + "/domains/continuous/" + domain_name + "/";
+  const std::string name = std::string(problem_name) + ".pddl";
+  const auto domain = alplan::pddl::parse_domain(read(dir + "domain.pddl"), "domain.pddl");
+  const auto problem = alplan::pddl::parse_problem(read(dir + name), name);
+  if (!domain.ok() || !problem.ok()) return state.SkipWithError("parse failed");
+  std::size_t expanded = 0;
+  for (auto _ : state) {
+    alplan::PlannerOptions options;
+    options.time_limit = 30.0;
+    alplan::PlannerResult result = alplan::Planner(alplan::ground(*domain.ast, *problem.ast), options).plan();
+    if (result.status != alplan::PlannerResult::Status::Solved) return state.SkipWithError("not solved");
+    expanded += result.statistics.expanded;
+  }
+  state.counters["expanded/s"] = benchmark::Counter(static_cast<double>(expanded), benchmark::Counter::kIsRate);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -185,6 +205,12 @@ int main(int argc, char** argv) {
   benchmark::RegisterBenchmark("StnUpdateWithPropagation", stn_update_with_propagation)
       ->Arg(16)->Arg(64)->Arg(256)->Unit(benchmark::kMicrosecond);
   benchmark::RegisterBenchmark("PaperScenarioFirstPlan", paper_scenario)->DenseRange(1, 3)->Unit(benchmark::kMillisecond);
+  for (const auto& [domain, problem] : {std::pair{"generator", "p03"}, std::pair{"rover-energy", "p02"},
+                                        std::pair{"tank", "p02"}}) {
+    benchmark::RegisterBenchmark((std::string("ContinuousFirstPlan/") + domain + "-" + problem).c_str(),
+                                 continuous_first_plan, domain, problem)
+        ->Unit(benchmark::kMillisecond);
+  }
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

@@ -77,7 +77,7 @@ class TemporalRpg::Exploration {
   void park(FactId fact, ActionId a, bool end);
   double duration_of(ActionId a);
   HeuristicValue extract(const SearchState& state, double goal_time);
-  bool continuous_dead_end();
+  bool continuous_dead_end(HeuristicValue& value);
   bool goals_reached() const { return goals_left_ == 0 && satisfiable(rpg_.goal_numeric_); }
 
   TemporalRpg& rpg_;
@@ -531,7 +531,7 @@ HeuristicValue TemporalRpg::Exploration::run(const SearchState& state, const Par
   }
   if (!reached) return HeuristicValue{};
   HeuristicValue value = extract(state, goal_time);
-  if (rpg_.index_.continuous() && continuous_dead_end()) return HeuristicValue{};
+  if (rpg_.index_.continuous() && continuous_dead_end(value)) return HeuristicValue{};
   return value;
 }
 
@@ -541,7 +541,10 @@ HeuristicValue TemporalRpg::Exploration::run(const SearchState& state, const Par
 // running one end. The exploration goes on past the goal to see. (It takes
 // the running action's end at its earliest; a plan that delayed the end
 // to let help arrive is given up, as POPF gives up other orderings.)
-bool TemporalRpg::Exploration::continuous_dead_end() {
+// Where help can arrive, the relaxed plan did not count it (the interval
+// relaxation sees no shortfall): one more step per such action, and the
+// helpers that can start now are helpful, so that hill-climbing tries them.
+bool TemporalRpg::Exploration::continuous_dead_end(HeuristicValue& value) {
   const std::vector<std::pair<ActionId, std::vector<NumericVarId>>> failing = plan_->invariants_failing_at_end();
   if (failing.empty()) return false;
   double horizon = 0.0;
@@ -554,17 +557,26 @@ bool TemporalRpg::Exploration::continuous_dead_end() {
     process(e.fact, e.time);
   }
   const ContinuousModel& model = *rpg_.index_.continuous();
+  const GroundTask& task = rpg_.index_.task();
   for (const auto& [action, variables] : failing) {
     const double end = plan_->pending_end_time(action);
     bool helped = false;
     for (NumericVarId v : variables) {
       for (ActionId w : model.writers(v)) {
         if (w == action) continue;
-        const double by = state_->is_running(w) ? plan_->pending_end_time(w) : start_time_.at(w, generation_);
-        if (by < end) helped = true;
+        const bool running = state_->is_running(w);
+        const double by = running ? plan_->pending_end_time(w) : start_time_.at(w, generation_);
+        if (by >= end) continue;
+        helped = true;
+        const std::vector<FactId>& pre = task.actions[w].at_start.positive;
+        if (!running && rpg_.options_.helpful_actions &&
+            std::all_of(pre.begin(), pre.end(), [&](FactId f) { return state_->fact(f); })) {
+          value.helpful.push_back({task.actions[w].durative ? SnapKind::Start : SnapKind::Instant, w});
+        }
       }
     }
     if (!helped) return true;
+    value.h += 1.0;
   }
   return false;
 }

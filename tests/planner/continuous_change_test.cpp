@@ -8,6 +8,7 @@
 #include "planner/planner.h"
 #include "planner/validator.h"
 #include "tests/support/task_loader.h"
+#include "tests/support/test_paths.h"
 
 using namespace alplan;
 using Status = PlannerResult::Status;
@@ -207,4 +208,46 @@ TEST_CASE("continuous change: what is not linear is refused by name and place") 
   CHECK_THAT(refusal("(assign (x) (* #t 2))"), Catch::Contains("continuous change by assign"));
   CHECK_THAT(refusal("(increase (x) (* #t ?duration))"), Catch::Contains("depends on ?duration"));
   CHECK_THAT(refusal("(increase (x) (* #t (y))) (increase (y) (* #t 1))"), Catch::Contains("itself changes"));
+}
+
+namespace {
+
+std::string continuous_file(const std::string& domain, const std::string& file) {
+  return test::source_dir() + "/domains/continuous/" + domain + "/" + file;
+}
+
+const char* const kContinuousDomains[] = {"generator", "robot-battery", "rover-energy", "tank"};
+
+}  // namespace
+
+TEST_CASE("continuous domains: the hand-written plans of every problem are valid") {
+  for (const char* domain : kContinuousDomains) {
+    for (int n = 1; n <= 4; ++n) {
+      const std::string problem = "p0" + std::to_string(n);
+      INFO(domain << " " << problem);
+      const test::LoadedTask task =
+          test::load_task(continuous_file(domain, "domain.pddl"), continuous_file(domain, problem + ".pddl"));
+      const PlanReadResult plan = read_plan(test::read_text(continuous_file(domain, problem + ".plan")), problem + ".plan");
+      REQUIRE(plan.ok());
+      const ValidationResult v = PlanValidator(task.normalized).validate(plan.plan);
+      CHECK(v.valid);
+    }
+  }
+}
+
+// The problems solved in seconds (benchmarks/README.md has the rest).
+TEST_CASE("continuous domains: the planner solves the smaller problems, validly") {
+  const std::pair<const char*, const char*> solved[] = {
+      {"generator", "p01"},    {"generator", "p02"},    {"generator", "p03"}, {"robot-battery", "p01"},
+      {"rover-energy", "p01"}, {"rover-energy", "p02"}, {"tank", "p01"},      {"tank", "p02"}};
+  for (const auto& [domain, problem] : solved) {
+    INFO(domain << " " << problem);
+    const test::LoadedTask task = test::load_task(continuous_file(domain, "domain.pddl"),
+                                                  continuous_file(domain, std::string(problem) + ".pddl"));
+    PlannerOptions options;
+    options.time_limit = 30.0;
+    const PlannerResult r = Planner(ground(task.normalized), options).plan();
+    REQUIRE(r.status == Status::Solved);
+    CHECK(r.best()->validation.valid);
+  }
 }
