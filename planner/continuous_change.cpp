@@ -248,16 +248,36 @@ ContinuousModel::ContinuousModel(const GroundTask& task) : task_(&task), changin
   }
 }
 
-bool ContinuousModel::conditions_hold_at(NumericVarId v, const SearchState& state) const {
-  try {
-    for (const GroundComparison* cmp : comparisons_[v]) {
-      // ?duration is unknown here: such a condition counts as failing.
-      if (!holds(*cmp, state, EvaluationContext{}, 0.0)) return false;
+ContinuousModel::NeededBounds ContinuousModel::needed_bounds(NumericVarId v, const SearchState& state) const {
+  NeededBounds needed;
+  for (const GroundComparison* cmp : comparisons_[v]) {
+    if (needed.least && needed.greatest) break;
+    try {
+      if (holds(*cmp, state, EvaluationContext{}, 0.0)) continue;
+      const std::optional<LinearCondition> l = compared(*task_, *cmp, *this, state, std::nan(""));
+      double coefficient = 0.0;
+      if (l) {
+        for (const auto& [var, c] : l->form.terms) {
+          if (var == v) coefficient += c;
+        }
+      }
+      // form (op) 0: a larger form helps >=, a smaller helps <=.
+      const bool larger = l && (l->comparison == pddl::Comparison::GreaterEqual ||
+                                l->comparison == pddl::Comparison::Greater);
+      const bool smaller = l && (l->comparison == pddl::Comparison::LessEqual || l->comparison == pddl::Comparison::Less);
+      if (!l || coefficient == 0.0 || (!larger && !smaller)) {
+        needed.least = needed.greatest = true;
+      } else if (larger == (coefficient > 0.0)) {
+        needed.greatest = true;
+      } else {
+        needed.least = true;
+      }
+    } catch (const EvaluationError&) {
+      // ?duration, or an undefined value: the condition is not decided here.
+      needed.least = needed.greatest = true;
     }
-  } catch (const EvaluationError&) {
-    return false;
   }
-  return true;
+  return needed;
 }
 
 bool ContinuousModel::holds_fixed_part(const ConditionSet& c, const SearchState& state, double duration) const {

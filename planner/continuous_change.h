@@ -79,10 +79,14 @@ class ContinuousModel {
   // The goal's comparisons on changing variables.
   std::optional<std::vector<LinearCondition>> goal(const ConditionSet& goal, const SearchState& state) const;
 
-  // Whether every condition of an action or the goal on the variable holds
-  // with it at `value` (the others at theirs in `state`). Where one fails,
-  // the heuristic asks the schedule for the variable's range (an LP).
-  bool conditions_hold_at(NumericVarId v, const SearchState& state) const;
+  // Which ends of a changing variable's range the heuristic needs: for each
+  // condition of an action or the goal on it that fails in `state`, the
+  // least value if a smaller one would help, the greatest if a larger one
+  // would. Each end costs the schedule a linear program.
+  struct NeededBounds {
+    bool least = false, greatest = false;
+  };
+  NeededBounds needed_bounds(NumericVarId v, const SearchState& state) const;
   // The actions that change a variable, continuously or at a snap.
   const std::vector<ActionId>& writers(NumericVarId v) const { return writers_[v]; }
 

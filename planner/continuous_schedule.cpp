@@ -219,13 +219,16 @@ bool ContinuousSchedule::solve(const SimpleTemporalNetwork& network, bool least)
 }
 
 std::pair<double, double> ContinuousSchedule::bounds(NumericVarId v, std::uint32_t node,
-                                                     const SimpleTemporalNetwork& network) const {
+                                                     const SimpleTemporalNetwork& network, bool least,
+                                                     bool greatest) const {
   const Affine a = at(v, node);
   if (a.terms.empty()) return {a.constant, a.constant};
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
   LinearProgram lp = program(network);
-  std::pair<double, double> range{-kInfinity, kInfinity};
+  const double value = value_at(v, node);
+  std::pair<double, double> range{least ? -kInfinity : value, greatest ? kInfinity : value};
   for (double sign : {1.0, -1.0}) {
+    if ((sign > 0 && !least) || (sign < 0 && !greatest)) continue;
     std::fill(lp.objective.begin(), lp.objective.end(), 0.0);
     for (const auto& [n, c] : a.terms) lp.objective[n] += sign * c;
     const LinearSolution s = solve_program(lp);
@@ -242,7 +245,21 @@ LinearProgram ContinuousSchedule::program(const SimpleTemporalNetwork& network) 
   const std::uint32_t nodes = network.size();
   program.add_column(0.0, 0.0, 0.0);  // the origin
   for (std::uint32_t n = 1; n < nodes; ++n) program.add_column(1.0, 0.0, std::numeric_limits<double>::infinity());
-  for (const TemporalEdge& e : network.edges()) {
+  // The network repeats a pair of nodes once per fact or variable that
+  // orders them: one row per pair, the strongest bound, and none for a
+  // lower bound of 0 or less from the origin (the columns have it). A time's
+  // lower bound from the origin goes on its column.
+  std::vector<TemporalEdge> edges = network.edges();
+  std::sort(edges.begin(), edges.end(), [](const TemporalEdge& a, const TemporalEdge& b) {
+    return a.from != b.from ? a.from < b.from : a.to != b.to ? a.to < b.to : a.weight > b.weight;
+  });
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const TemporalEdge& e = edges[i];
+    if (i > 0 && edges[i - 1].from == e.from && edges[i - 1].to == e.to) continue;
+    if (e.from == 0) {
+      program.column_lower[e.to] = std::max(program.column_lower[e.to], e.weight);
+      continue;
+    }
     program.rows.push_back({{{e.to, 1.0}, {e.from, -1.0}}, e.weight, std::numeric_limits<double>::infinity()});
   }
   program.rows.insert(program.rows.end(), rows_.begin(), rows_.end());

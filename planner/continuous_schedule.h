@@ -66,7 +66,9 @@ class ContinuousSchedule {
   // The least and greatest value a changing variable can have at a node's
   // time over every schedule the constraints allow (COLIN's bounds, which
   // its heuristic starts from); infinite where unbounded.
-  std::pair<double, double> bounds(NumericVarId v, std::uint32_t node, const SimpleTemporalNetwork& network) const;
+  // Only the ends asked for are computed; the others stay at the value.
+  std::pair<double, double> bounds(NumericVarId v, std::uint32_t node, const SimpleTemporalNetwork& network,
+                                   bool least = true, bool greatest = true) const;
   std::size_t rows() const { return rows_.size(); }
   // Running actions whose over-all conditions cannot hold at their ends if
   // nothing changes the rates and values from now on, with the variables

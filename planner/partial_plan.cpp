@@ -198,9 +198,10 @@ void PartialPlan::set_changing_values(SearchState& state) const {
   }
 }
 
-std::pair<double, double> PartialPlan::changing_bounds(NumericVarId v, double value) const {
+std::pair<double, double> PartialPlan::changing_bounds(NumericVarId v, double value, bool least,
+                                                      bool greatest) const {
   if (!continuous_ || !index_->continuous()->changing(v)) return {value, value};
-  return continuous_->bounds(v, continuous_->last_change(v), network_);
+  return continuous_->bounds(v, continuous_->last_change(v), network_, least, greatest);
 }
 
 std::vector<std::pair<ActionId, std::vector<NumericVarId>>> PartialPlan::invariants_failing_at_end() const {

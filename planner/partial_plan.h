@@ -69,7 +69,8 @@ class PartialPlan {
   void set_changing_values(SearchState& state) const;
   // With continuous change: the range of a changing variable after the last
   // step over every schedule the plan allows (its value when none changes).
-  std::pair<double, double> changing_bounds(NumericVarId v, double value) const;
+  std::pair<double, double> changing_bounds(NumericVarId v, double value, bool least = true,
+                                            bool greatest = true) const;
   // With continuous change: see ContinuousSchedule::failing_at_end.
   std::vector<std::pair<ActionId, std::vector<NumericVarId>>> invariants_failing_at_end() const;
   // The earliest time the end of a running action can come.

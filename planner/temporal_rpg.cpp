@@ -484,9 +484,12 @@ HeuristicValue TemporalRpg::Exploration::run(const SearchState& state, const Par
   for (NumericVarId v = 0; v < bounds_.size(); ++v) {
     const double x = state.value(v);
     bounds_[v] = std::isnan(x) ? Interval{kInfinity, -kInfinity} : Interval{x, x};
-    if (continuous && continuous->changing(v) && !std::isnan(x) && !continuous->conditions_hold_at(v, state)) {
-      const auto [lo, hi] = plan.changing_bounds(v, x);
-      if (lo <= hi) bounds_[v] = Interval{lo, hi};
+    if (continuous && continuous->changing(v) && !std::isnan(x)) {
+      const ContinuousModel::NeededBounds needed = continuous->needed_bounds(v, state);
+      if (needed.least || needed.greatest) {
+        const auto [lo, hi] = plan.changing_bounds(v, x, needed.least, needed.greatest);
+        if (lo <= hi) bounds_[v] = Interval{lo, hi};
+      }
     }
     supporter_[v] = kNoId;
   }
