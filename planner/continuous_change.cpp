@@ -253,8 +253,11 @@ ContinuousModel::NeededBounds ContinuousModel::needed_bounds(NumericVarId v, con
   for (const GroundComparison* cmp : comparisons_[v]) {
     if (needed.least && needed.greatest) break;
     try {
-      if (holds(*cmp, state, EvaluationContext{}, 0.0)) continue;
-      const std::optional<LinearCondition> l = compared(*task_, *cmp, *this, state, std::nan(""));
+      // ?duration at 0, the lower end of the relaxation's [0, inf).
+      EvaluationContext context;
+      context.duration = 0.0;
+      if (holds(*cmp, state, context, 0.0)) continue;
+      const std::optional<LinearCondition> l = compared(*task_, *cmp, *this, state, 0.0);
       double coefficient = 0.0;
       if (l) {
         for (const auto& [var, c] : l->form.terms) {

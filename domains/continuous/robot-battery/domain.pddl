@@ -40,7 +40,6 @@
     :duration (= ?duration (moving_time ?loc1 ?loc2))
     :condition (and (at start (be ?robot ?loc1))
                     (over all (path ?loc1 ?loc2))
-                    (at start (>= (battery ?robot) (+ (reserve ?robot) (* ?duration (drain_rate ?robot)))))
                     (over all (>= (battery ?robot) (reserve ?robot))))
     :effect (and (at start (not (be ?robot ?loc1)))
                  (at end (be ?robot ?loc2))
