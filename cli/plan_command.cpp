@@ -39,6 +39,7 @@ struct PlanOptions {
   double weight = 3.0;
   std::string order = PlannerOptions{}.order;
   bool deferred_evaluation = PlannerOptions{}.deferred_evaluation;
+  std::optional<std::uint64_t> ehc_expansions;
   bool prune_irrelevant = PlannerOptions{}.prune_irrelevant;
   std::string out;
   bool json = false;
@@ -147,6 +148,7 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
   planner_options.weight = options.weight;
   planner_options.order = options.order;
   planner_options.deferred_evaluation = options.deferred_evaluation;
+  if (options.ehc_expansions) planner_options.ehc_expansions = *options.ehc_expansions;
   planner_options.prune_irrelevant = options.prune_irrelevant;
   planner_options.anytime = options.anytime;
   planner_options.epsilon = options.epsilon;
@@ -249,6 +251,8 @@ void add_plan_command(CLI::App& app, int& exit_code) {
                   "How wastar (and anytime search) orders nodes: metric (cost and makespan so far and to come, "
                   "for a minimised metric that only grows) or steps (default)")
       ->check(CLI::IsMember({"metric", "steps"}));
+  cmd->add_option("--ehc-expansions", options->ehc_expansions,
+                  "EHC gives up after this many expansions and GBFS and wastar take turns (default 20000)");
   cmd->add_flag("--deferred", options->deferred_evaluation,
                 "GBFS and wastar evaluate a node when they expand it, not when they generate it");
   cmd->add_flag("!--no-relevance", options->prune_irrelevant,
