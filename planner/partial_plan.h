@@ -37,8 +37,11 @@ struct StepRecord {
   double min_duration = 0.0;         // Start and End: the duration window
   double max_duration = kInfiniteDuration;
   // What the snap does to and asks of continuously changing variables; null
-  // in tasks without continuous change.
-  std::shared_ptr<const ContinuousStep> continuous = nullptr;
+  // in tasks without continuous change. Owned by the successor generator that
+  // made the step, which lives as long as the search space (a raw pointer
+  // keeps the record trivially copyable: partial plans copy their steps for
+  // every child).
+  const ContinuousStep* continuous = nullptr;
 };
 
 class PartialPlan {

@@ -18,19 +18,6 @@ double updated(double current, pddl::AssignOperator op, double value) {
   return value;
 }
 
-// Member by member: GCC 12 reports the shared_ptr inside a nested aggregate
-// initialiser as maybe uninitialised.
-Successor successor(Snap snap, const SearchState& state, std::uint32_t start_step = kNoId, double min = 0.0,
-                    double max = kInfiniteDuration) {
-  Successor s;
-  s.step.snap = snap;
-  s.step.start_step = start_step;
-  s.step.min_duration = min;
-  s.step.max_duration = max;
-  s.state = state;
-  return s;
-}
-
 }  // namespace
 
 DurationWindow duration_window(const GroundAction& action, Moment moment, const SearchState& state,
@@ -89,7 +76,7 @@ bool SuccessorGenerator::apply_effects(const HappeningEffects& effects, const Se
 }
 
 bool SuccessorGenerator::condition_holds(const ConditionSet& c, const SearchState& state, double duration) const {
-  if (const ContinuousModel* model = index_.continuous().get()) return model->holds_fixed_part(c, state, duration);
+  if (continuous_) return continuous_->holds_fixed_part(c, state, duration);
   EvaluationContext context;
   context.duration = duration;
   try {
@@ -101,11 +88,10 @@ bool SuccessorGenerator::condition_holds(const ConditionSet& c, const SearchStat
 
 bool SuccessorGenerator::attach_continuous(const GroundAction& action, const SearchState& before, double duration,
                                            StepRecord& step) const {
-  const ContinuousModel* model = index_.continuous().get();
-  if (!model) return true;
-  std::optional<ContinuousStep> part = model->step(action, step.snap.kind, before, duration);
+  if (!continuous_) return true;
+  std::optional<ContinuousStep> part = continuous_->step(action, step.snap.kind, before, duration);
   if (!part) return false;
-  if (!part->empty()) step.continuous = std::make_shared<const ContinuousStep>(std::move(*part));
+  if (!part->empty()) step.continuous = &continuous_steps_.emplace_back(std::move(*part));
   return true;
 }
 
@@ -126,13 +112,13 @@ void SuccessorGenerator::add_end(const SearchState& state, std::size_t running_i
   if (!condition_holds(action.at_end, state, context.duration)) return;
   double min = running.min_duration, max = running.max_duration;
   if (!action.duration.empty() && running.start_step != kNoId) {
-    const DurationWindow at_end = duration_window(action, Moment::End, state, index_.continuous().get());
+    const DurationWindow at_end = duration_window(action, Moment::End, state, continuous_);
     if (!at_end.valid) return;
     min = std::max(min, at_end.min);
     max = std::min(max, at_end.max);
     if (min > max + 1e-9) return;
   }
-  Successor s = successor({SnapKind::End, running.action}, state, running.start_step, min, max);
+  Successor s{{{SnapKind::End, running.action}, running.start_step, min, max}, state};
   if (!attach_continuous(action, state, context.duration, s.step)) return;
   s.state.finish(running_index);
   if (!apply_effects(action.end, state, context.duration, s.state)) return;
@@ -144,7 +130,7 @@ void SuccessorGenerator::add_timed_literal(const SearchState& state, std::vector
   const std::uint32_t next = state.next_timed_literal();
   if (next >= index_.task().timed_literals.size()) return;
   const GroundTimedLiteral& til = index_.task().timed_literals[next];
-  Successor s = successor({SnapKind::TimedLiteral, next}, state);
+  Successor s{{{SnapKind::TimedLiteral, next}}, state};
   s.state.set_fact(til.fact, til.positive);
   s.state.set_next_timed_literal(next + 1);
   derive(index_.task(), s.state);
@@ -156,7 +142,7 @@ void SuccessorGenerator::add_action(const SearchState& state, ActionId id, std::
   // Conditions on ?duration are checked per duration choice below.
   if (!action.durative) {
     if (!condition_holds(action.at_start, state, std::nan(""))) return;
-    Successor s = successor({SnapKind::Instant, id}, state);
+    Successor s{{{SnapKind::Instant, id}}, state};
     if (!attach_continuous(action, state, std::nan(""), s.step)) return;
     if (apply_effects(action.start, state, std::nan(""), s.state) && invariants_hold(s.state)) {
       out.push_back(std::move(s));
@@ -164,7 +150,7 @@ void SuccessorGenerator::add_action(const SearchState& state, ActionId id, std::
     return;
   }
   if (state.is_running(id)) return;
-  const DurationWindow window = duration_window(action, Moment::Start, state, index_.continuous().get());
+  const DurationWindow window = duration_window(action, Moment::Start, state, continuous_);
   if (!window.valid) return;
   // With effects or conditions on ?duration the duration is fixed at start:
   // the shortest and, when bounded and different, the longest are tried.
@@ -176,7 +162,7 @@ void SuccessorGenerator::add_action(const SearchState& state, ActionId id, std::
     choices.emplace_back(window.min, window.max);
   }
   for (const auto& [min, max] : choices) {
-    Successor s = successor({SnapKind::Start, id}, state, kNoId, min, max);
+    Successor s{{{SnapKind::Start, id}, kNoId, min, max}, state};
     const double duration = min == max ? min : std::nan("");
     if (!condition_holds(action.at_start, state, duration)) continue;
     if (!attach_continuous(action, state, duration, s.step)) continue;

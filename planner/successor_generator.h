@@ -12,6 +12,7 @@
 // slightly more lenient comparisons too.
 #pragma once
 
+#include <deque>
 #include <vector>
 
 #include "planner/partial_plan.h"
@@ -27,7 +28,7 @@ struct Successor {
 
 class SuccessorGenerator {
  public:
-  explicit SuccessorGenerator(const TaskIndex& index) : index_(index) {}
+  explicit SuccessorGenerator(const TaskIndex& index) : index_(index), continuous_(index.continuous().get()) {}
 
   // Every applicable snap: ends of running actions first, then the next
   // timed literal, then starts and instantaneous actions.
@@ -54,6 +55,11 @@ class SuccessorGenerator {
                          StepRecord& step) const;
 
   const TaskIndex& index_;
+  const ContinuousModel* continuous_;  // null without continuous change
+  // The continuous parts of the steps generated so far, which the steps
+  // point to. Only grows, and only with continuous change; generating is
+  // otherwise free of side effects.
+  mutable std::deque<ContinuousStep> continuous_steps_;
 };
 
 // Duration bounds of an action in a state, from its constraints at `moment`.
