@@ -62,6 +62,10 @@ ContinuousSchedule::Affine ContinuousSchedule::evaluate(const LinearForm& form, 
 }
 
 void ContinuousSchedule::require(const LinearCondition& c, std::uint32_t node, const SnapNodes& at) {
+  rows_.push_back(row_for(c, node, at));
+}
+
+LinearRow ContinuousSchedule::row_for(const LinearCondition& c, std::uint32_t node, const SnapNodes& at) const {
   const Affine a = evaluate(c.form, node, at);
   LinearRow row;
   row.coefficients = a.terms;
@@ -72,7 +76,7 @@ void ContinuousSchedule::require(const LinearCondition& c, std::uint32_t node, c
     case pddl::Comparison::GreaterEqual: row.lower = -a.constant; break;
     case pddl::Comparison::Equal: row.lower = row.upper = -a.constant; break;
   }
-  rows_.push_back(std::move(row));
+  return row;
 }
 
 namespace {
@@ -287,12 +291,22 @@ std::optional<std::vector<double>> ContinuousSchedule::pushed_schedule(const Sim
 std::vector<std::pair<ActionId, std::vector<NumericVarId>>> ContinuousSchedule::failing_at_end(
     const SimpleTemporalNetwork& network) const {
   std::vector<std::pair<ActionId, std::vector<NumericVarId>>> failing;
-  for (const Running& r : running_) {
-    if (r.invariants.empty()) continue;
-    ContinuousSchedule ended = *this;
+  auto end_rows = [&](const Running& r) {
+    std::vector<LinearRow> rows;
     const SnapNodes own{SnapKind::End, r.action, r.end_node, r.start_node, r.end_node};
-    for (const LinearCondition& c : r.invariants) ended.require(c, r.end_node, own);
-    if (ended.satisfied_by(times_) || ended.solve(network)) continue;
+    for (const LinearCondition& c : r.invariants) rows.push_back(row_for(c, r.end_node, own));
+    return rows;
+  };
+  // Every end at once first: feasible together, each is feasible alone, and
+  // that is the common case (one program instead of one per action).
+  std::vector<LinearRow> all;
+  for (const Running& r : running_) {
+    const std::vector<LinearRow> rows = end_rows(r);
+    all.insert(all.end(), rows.begin(), rows.end());
+  }
+  if (all.empty() || feasible_with(all, network)) return failing;
+  for (const Running& r : running_) {
+    if (r.invariants.empty() || feasible_with(end_rows(r), network)) continue;
     std::vector<NumericVarId> read;
     for (const LinearCondition& c : r.invariants) {
       for (const auto& [v, coefficient] : c.form.terms) read.push_back(v);
@@ -302,6 +316,26 @@ std::vector<std::pair<ActionId, std::vector<NumericVarId>>> ContinuousSchedule::
     failing.emplace_back(r.action, std::move(read));
   }
   return failing;
+}
+
+bool ContinuousSchedule::feasible_with(const std::vector<LinearRow>& extra, const SimpleTemporalNetwork& network) const {
+  // The current schedule meets every row so far; if it meets the extra ones
+  // too, no program is needed.
+  if (times_.size() == network.size() && rows_satisfied(extra, times_)) return true;
+  LinearProgram lp = program(network);
+  lp.rows.insert(lp.rows.end(), extra.begin(), extra.end());
+  std::fill(lp.objective.begin(), lp.objective.end(), 0.0);  // feasibility only
+  return solve_program(lp).status == LinearSolution::Status::Optimal;
+}
+
+bool ContinuousSchedule::rows_satisfied(const std::vector<LinearRow>& rows, const std::vector<double>& times) {
+  constexpr double kTolerance = 1e-9;
+  for (const LinearRow& row : rows) {
+    double x = 0.0;
+    for (const auto& [n, c] : row.coefficients) x += c * times[n];
+    if (x < row.lower - kTolerance || x > row.upper + kTolerance) return false;
+  }
+  return true;
 }
 
 bool ContinuousSchedule::satisfied_by(const std::vector<double>& times) const {

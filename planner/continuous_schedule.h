@@ -105,6 +105,10 @@ class ContinuousSchedule {
   std::optional<std::vector<double>> pushed_schedule(const SimpleTemporalNetwork& network) const;
   LinearProgram program(const SimpleTemporalNetwork& network) const;
   bool satisfied_by(const std::vector<double>& times) const;
+  static bool rows_satisfied(const std::vector<LinearRow>& rows, const std::vector<double>& times);
+  // Whether the constraints so far and `extra` can all hold.
+  bool feasible_with(const std::vector<LinearRow>& extra, const SimpleTemporalNetwork& network) const;
+  LinearRow row_for(const LinearCondition& c, std::uint32_t node, const SnapNodes& at) const;
 
   std::shared_ptr<const ContinuousModel> model_;
   std::vector<Trajectory> values_;  // by variable; only changing ones are used
