@@ -175,6 +175,11 @@ ContinuousModel::ContinuousModel(const GroundTask& task) : task_(&task), changin
       }
     }
   }
+  check_linear(task);
+  index_readers_and_writers(task);
+}
+
+void ContinuousModel::check_linear(const GroundTask& task) {
   auto refuse = [&](const GroundAction& a, const std::string& what) {
     if (!unsupported_) unsupported_ = "the action " + task.action_name(a) + " has " + what;
   };
@@ -211,6 +216,16 @@ ContinuousModel::ContinuousModel(const GroundTask& task) : task_(&task), changin
       }
     }
   }
+  for (const GroundAxiom& x : task.axioms) {
+    for (const GroundComparison& cmp : x.body.numeric) {
+      if (changing(cmp) && !unsupported_) {
+        unsupported_ = "a derived predicate reads a continuously changing value: " + write_comparison(task, cmp);
+      }
+    }
+  }
+}
+
+void ContinuousModel::index_readers_and_writers(const GroundTask& task) {
   writers_.resize(task.numeric.size());
   for (ActionId a = 0; a < task.actions.size(); ++a) {
     std::vector<NumericVarId> written;
@@ -239,13 +254,6 @@ ContinuousModel::ContinuousModel(const GroundTask& task) : task_(&task), changin
     for (const ConditionSet* c : {&a.at_start, &a.over_all, &a.at_end}) index(*c);
   }
   index(task.goal);
-  for (const GroundAxiom& x : task.axioms) {
-    for (const GroundComparison& cmp : x.body.numeric) {
-      if (changing(cmp) && !unsupported_) {
-        unsupported_ = "a derived predicate reads a continuously changing value: " + write_comparison(task, cmp);
-      }
-    }
-  }
 }
 
 ContinuousModel::NeededBounds ContinuousModel::needed_bounds(NumericVarId v, const SearchState& state) const {

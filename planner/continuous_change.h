@@ -96,6 +96,8 @@ class ContinuousModel {
 
  private:
   explicit ContinuousModel(const GroundTask& task);
+  void check_linear(const GroundTask& task);
+  void index_readers_and_writers(const GroundTask& task);
 
   const GroundTask* task_;
   std::vector<bool> changing_;

@@ -338,15 +338,7 @@ bool ContinuousSchedule::rows_satisfied(const std::vector<LinearRow>& rows, cons
   return true;
 }
 
-bool ContinuousSchedule::satisfied_by(const std::vector<double>& times) const {
-  constexpr double kTolerance = 1e-9;
-  for (const LinearRow& row : rows_) {
-    double x = 0.0;
-    for (const auto& [n, c] : row.coefficients) x += c * times[n];
-    if (x < row.lower - kTolerance || x > row.upper + kTolerance) return false;
-  }
-  return true;
-}
+bool ContinuousSchedule::satisfied_by(const std::vector<double>& times) const { return rows_satisfied(rows_, times); }
 
 double ContinuousSchedule::value_at(NumericVarId v, std::uint32_t node) const {
   const Affine a = at(v, node);
