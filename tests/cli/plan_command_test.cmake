@@ -18,7 +18,8 @@ expect_run(0 "\"status\": \"solved\"" ${ALPLAN} plan --json --search wastar --we
 expect_run(10 "the goal can never hold ((at island))" ${ALPLAN} plan ${data}/mixed-domain.pddl
   ${data}/mixed-unreachable.pddl)
 expect_run(11 "limit" ${ALPLAN} plan --time-limit 0.3 ${floor}/domain.pddl ${floor}/instances/instance-5.pddl)
-expect_run(2 "#t" ${ALPLAN} plan ${data}/tank-continuous.pddl ${data}/tank-problem.pddl)
+expect_run(0 "(fill) [5.000]" ${ALPLAN} plan ${data}/tank-continuous.pddl ${data}/tank-problem.pddl)
+expect_run(2 "non-linear in #t" ${ALPLAN} plan ${data}/tank-nonlinear.pddl ${data}/tank-problem.pddl)
 expect_run(2 "no-such-file.pddl" ${ALPLAN} plan ${data}/no-such-file.pddl ${data}/tank-problem.pddl)
 expect_run(2 "search" ${ALPLAN} plan --search dfs ${data}/mixed-domain.pddl ${data}/mixed-problem.pddl)
 # --order: weighted A* by the metric or by steps; both solve, anything else is refused.

@@ -1,4 +1,4 @@
-; A continuous effect: the planner refuses it and names it.
+; A continuous effect (PDDL 2.1 level 4): the fill raises the level at 2 per time unit.
 (define (domain tank) (:requirements :durative-actions :fluents :continuous-effects)
   (:predicates (open))
   (:functions (level))
