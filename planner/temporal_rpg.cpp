@@ -42,7 +42,8 @@ Interval operator/(Interval a, Interval b) {
 // evaluations (the arrays are as long as the task has actions and facts).
 class TemporalRpg::Exploration {
  public:
-  explicit Exploration(TemporalRpg& rpg) : rpg_(rpg), windows_(rpg.index_.task()) {}
+  explicit Exploration(TemporalRpg& rpg)
+      : rpg_(rpg), continuous_(rpg.index_.continuous().get()), windows_(rpg.index_.task()) {}
   HeuristicValue run(const SearchState& state, const PartialPlan& plan);
 
  private:
@@ -81,6 +82,7 @@ class TemporalRpg::Exploration {
   bool goals_reached() const { return goals_left_ == 0 && satisfiable(rpg_.goal_numeric_); }
 
   TemporalRpg& rpg_;
+  const ContinuousModel* continuous_;  // null without continuous change: read once, not per action
   const SearchState* state_ = nullptr;
   const PartialPlan* plan_ = nullptr;
   std::uint32_t generation_ = 0;
@@ -364,7 +366,7 @@ std::vector<FactId> TemporalRpg::unreached_goals() const {
 }
 
 double TemporalRpg::Exploration::duration_of(ActionId a) {
-  const DurationWindow w = duration_window(rpg_.index_.task().actions[a], Moment::Start, *state_, rpg_.index_.continuous().get());
+  const DurationWindow w = duration_window(rpg_.index_.task().actions[a], Moment::Start, *state_, continuous_);
   return w.valid ? w.min : -1.0;
 }
 
@@ -480,12 +482,11 @@ HeuristicValue TemporalRpg::Exploration::run(const SearchState& state, const Par
     axiom_count_.values[x] = static_cast<std::uint32_t>(task.axioms[x].body.positive.size());
     axiom_count_.stamps[x] = generation_;
   }
-  const ContinuousModel* continuous = rpg_.index_.continuous().get();
   for (NumericVarId v = 0; v < bounds_.size(); ++v) {
     const double x = state.value(v);
     bounds_[v] = std::isnan(x) ? Interval{kInfinity, -kInfinity} : Interval{x, x};
-    if (continuous && continuous->changing(v) && !std::isnan(x)) {
-      const ContinuousModel::NeededBounds needed = continuous->needed_bounds(v, state);
+    if (continuous_ && continuous_->changing(v) && !std::isnan(x)) {
+      const ContinuousModel::NeededBounds needed = continuous_->needed_bounds(v, state);
       if (needed.least || needed.greatest) {
         const auto [lo, hi] = plan.changing_bounds(v, x, needed.least, needed.greatest);
         if (lo <= hi) bounds_[v] = Interval{lo, hi};
@@ -534,7 +535,7 @@ HeuristicValue TemporalRpg::Exploration::run(const SearchState& state, const Par
   }
   if (!reached) return HeuristicValue{};
   HeuristicValue value = extract(state, goal_time);
-  if (rpg_.index_.continuous() && continuous_dead_end(value)) return HeuristicValue{};
+  if (continuous_ && continuous_dead_end(value)) return HeuristicValue{};
   return value;
 }
 
@@ -559,7 +560,7 @@ bool TemporalRpg::Exploration::continuous_dead_end(HeuristicValue& value) {
     processed_.at(e.fact, generation_) = 1;
     process(e.fact, e.time);
   }
-  const ContinuousModel& model = *rpg_.index_.continuous();
+  const ContinuousModel& model = *continuous_;
   const GroundTask& task = rpg_.index_.task();
   for (const auto& [action, variables] : failing) {
     const double end = plan_->pending_end_time(action);
