@@ -49,6 +49,7 @@ struct BenchPlannersOptions {
   bool anytime = false;
   std::string search = "ehc";
   std::string order;  // "": the planner's default
+  std::vector<std::string> plan_args;
   SlurmFlags slurm;
 };
 
@@ -65,6 +66,7 @@ int run_planners(const BenchPlannersOptions& options) {
   o.anytime = options.anytime;
   o.search = options.search;
   o.order = options.order;
+  o.plan_args = options.plan_args;
   std::string error;
   if (!array_run(options.slurm, options.out, o.array, error)) {
     std::cerr << "error: " << error << "\n";
@@ -108,6 +110,9 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   p->add_option("--search", planners->search, "ehc, gbfs or wastar")->check(CLI::IsMember({"ehc", "gbfs", "wastar"}));
   p->add_option("--order", planners->order, "How wastar orders nodes: metric or steps")
       ->check(CLI::IsMember({"metric", "steps"}));
+  p->add_option("--plan-arg", planners->plan_args,
+                "A flag for every alplan plan run, as given (repeat it; e.g. --plan-arg=--deferred)")
+      ->allow_extra_args(false);
   add_slurm_options(p, planners->slurm);
   p->callback([planners, &exit_code] { exit_code = run_planners(*planners); });
 

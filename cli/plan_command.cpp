@@ -41,6 +41,7 @@ struct PlanOptions {
   bool deferred_evaluation = PlannerOptions{}.deferred_evaluation;
   std::optional<std::uint64_t> ehc_expansions;
   bool prune_irrelevant = PlannerOptions{}.prune_irrelevant;
+  bool resource_balance = PlannerOptions{}.resource_balance;
   std::string out;
   bool json = false;
   bool quiet = false;
@@ -150,6 +151,7 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
   planner_options.deferred_evaluation = options.deferred_evaluation;
   if (options.ehc_expansions) planner_options.ehc_expansions = *options.ehc_expansions;
   planner_options.prune_irrelevant = options.prune_irrelevant;
+  planner_options.resource_balance = options.resource_balance;
   planner_options.anytime = options.anytime;
   planner_options.epsilon = options.epsilon;
   planner_options.reserve_planning_time = options.reserve_planning_time;
@@ -257,6 +259,8 @@ void add_plan_command(CLI::App& app, int& exit_code) {
                 "GBFS and wastar evaluate a node when they expand it, not when they generate it");
   cmd->add_flag("!--no-relevance", options->prune_irrelevant,
                 "Search every ground action, not only those that can contribute to the goal");
+  cmd->add_flag("!--no-resource-balance", options->resource_balance,
+                "With continuous change: do not count the recharges and refuels the relaxed plan's consumption needs");
   cmd->add_option("--out", options->out, "Write the best plan to this file");
   cmd->add_flag("--json", options->json, "Print the result as JSON");
   cmd->add_flag("-q,--quiet", options->quiet, "Do not print warnings about the input");

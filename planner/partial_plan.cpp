@@ -204,6 +204,11 @@ std::pair<double, double> PartialPlan::changing_bounds(NumericVarId v, double va
   return continuous_->bounds(v, continuous_->last_change(v), network_, least, greatest);
 }
 
+double PartialPlan::changing_value_time(NumericVarId v) const {
+  if (!continuous_ || node_of_step_.empty()) return 0.0;
+  return continuous_->time(continuous_->last_change(v));
+}
+
 std::vector<std::pair<ActionId, std::vector<NumericVarId>>> PartialPlan::invariants_failing_at_end() const {
   if (!continuous_) return {};
   return continuous_->failing_at_end(network_);

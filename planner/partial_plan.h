@@ -74,6 +74,10 @@ class PartialPlan {
   // step over every schedule the plan allows (its value when none changes).
   std::pair<double, double> changing_bounds(NumericVarId v, double value, bool least = true,
                                             bool greatest = true) const;
+  // With continuous change: the time (in the current schedule) at which a
+  // changing variable has the value the state holds for it (its last change);
+  // 0 without continuous change.
+  double changing_value_time(NumericVarId v) const;
   // With continuous change: see ContinuousSchedule::failing_at_end.
   std::vector<std::pair<ActionId, std::vector<NumericVarId>>> invariants_failing_at_end() const;
   // The earliest time the end of a running action can come.

@@ -346,7 +346,8 @@ PlannerResult Planner::search_from(const PlanningStart& start, const std::functi
   // ordering by steps stays.
   std::shared_ptr<const LinearMetric> order_metric;
   if (options_.order == "metric" && linear) order_metric = std::make_shared<const LinearMetric>(std::move(*linear));
-  TemporalRpg heuristic(index, {options_.heuristic == "trpg", order_metric}, workspace_ ? workspace_->graph : nullptr);
+  TemporalRpg heuristic(index, {options_.heuristic == "trpg", options_.resource_balance, order_metric},
+                        workspace_ ? workspace_->graph : nullptr);
   if (workspace_) {
     workspace_->index = shared_index;
     workspace_->graph = heuristic.graph();

@@ -67,6 +67,9 @@ struct PlannerOptions {
   // GBFS and weighted A* evaluate a node when they expand it, under its
   // parent's h until then (search_engine.h); EHC is unchanged.
   bool deferred_evaluation = false;
+  // With continuous change: the heuristic counts the producers (recharges,
+  // refuels) the relaxed plan's consumption needs (planner/resource_shortfall.h).
+  bool resource_balance = true;
 };
 
 struct FoundPlan {

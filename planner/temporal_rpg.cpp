@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <queue>
 
 #include "planner/evaluation.h"
 #include "planner/fact_windows.h"
+#include "planner/resource_shortfall.h"
 #include "planner/successor_generator.h"
 
 namespace alplan {
@@ -43,7 +45,9 @@ Interval operator/(Interval a, Interval b) {
 class TemporalRpg::Exploration {
  public:
   explicit Exploration(TemporalRpg& rpg)
-      : rpg_(rpg), continuous_(rpg.index_.continuous().get()), windows_(rpg.index_.task()) {}
+      : rpg_(rpg), continuous_(rpg.index_.continuous().get()), windows_(rpg.index_.task()) {
+    if (continuous_ && rpg.options_.resource_balance) balance_.emplace(rpg.index_.task(), *continuous_);
+  }
   HeuristicValue run(const SearchState& state, const PartialPlan& plan);
 
  private:
@@ -79,6 +83,7 @@ class TemporalRpg::Exploration {
   double duration_of(ActionId a);
   HeuristicValue extract(const SearchState& state, double goal_time);
   bool continuous_dead_end(HeuristicValue& value);
+  std::vector<ActionId> shortfall_producers(const SearchState& state, double& extra);
   bool goals_reached() const { return goals_left_ == 0 && satisfiable(rpg_.goal_numeric_); }
 
   TemporalRpg& rpg_;
@@ -92,6 +97,11 @@ class TemporalRpg::Exploration {
   Stamped<std::uint32_t> start_count_, end_count_, axiom_count_;
   Stamped<char> processed_, parked_start_, parked_end_, counted_start_, counted_end_;
   std::vector<Interval> bounds_;
+  // A changing variable's greatest value now, where the bounds asked for it.
+  std::vector<double> greatest_now_;
+  std::vector<char> greatest_known_;
+  std::optional<ResourceBalance> balance_;
+  std::vector<NumericVarId> short_variables_;  // the last evaluation's, whose producers it counted
   std::vector<ActionId> supporter_;  // first action that widened each variable
   std::priority_queue<Event, std::vector<Event>, std::greater<Event>> queue_;
   std::size_t goals_left_ = 0;
@@ -134,6 +144,8 @@ TemporalRpg::TemporalRpg(const TaskIndex& index, TemporalRpgOptions options, std
   x.counted_end_.resize(actions, 0);
   x.axiom_count_.resize(task.axioms.size(), 0);
   x.bounds_.resize(task.numeric.size());
+  x.greatest_now_.resize(task.numeric.size());
+  x.greatest_known_.resize(task.numeric.size());
   x.supporter_.resize(task.numeric.size(), kNoId);
   x.parked_on_.resize(facts);
   x.started_at_.resize(actions, 0.0);
@@ -485,11 +497,16 @@ HeuristicValue TemporalRpg::Exploration::run(const SearchState& state, const Par
   for (NumericVarId v = 0; v < bounds_.size(); ++v) {
     const double x = state.value(v);
     bounds_[v] = std::isnan(x) ? Interval{kInfinity, -kInfinity} : Interval{x, x};
+    greatest_known_[v] = 0;
     if (continuous_ && continuous_->changing(v) && !std::isnan(x)) {
       const ContinuousModel::NeededBounds needed = continuous_->needed_bounds(v, state);
       if (needed.least || needed.greatest) {
         const auto [lo, hi] = plan.changing_bounds(v, x, needed.least, needed.greatest);
         if (lo <= hi) bounds_[v] = Interval{lo, hi};
+        if (balance_ && lo <= hi && needed.greatest) {
+          greatest_now_[v] = hi;
+          greatest_known_[v] = 1;
+        }
       }
     }
     supporter_[v] = kNoId;
@@ -548,6 +565,54 @@ HeuristicValue TemporalRpg::Exploration::run(const SearchState& state, const Par
 // Where help can arrive, the relaxed plan did not count it (the interval
 // relaxation sees no shortfall): one more step per such action, and the
 // helpers that can start now are helpful, so that hill-climbing tries them.
+// Producers the relaxed plan so far falls short of (resource_shortfall.h):
+// for each variable, the cheapest producer the exploration reaches (it goes
+// on past the goals until one starts) joins the relaxed plan with its
+// preconditions; the further applications it needs are `extra` steps.
+std::vector<ActionId> TemporalRpg::Exploration::shortfall_producers(const SearchState& state, double& extra) {
+  short_variables_.clear();
+  ShortfallInput input;
+  input.state = &state;
+  input.plan = plan_;
+  for (ActionId a = 0; a < rpg_.actions_.size(); ++a) {
+    if (counted_start_.stamps[a] == generation_ && counted_start_.values[a]) input.relaxed_starts.push_back(a);
+  }
+  input.min_duration = [this](ActionId a) { return rpg_.actions_[a].durative ? duration_of(a) : 0.0; };
+  input.greatest = [&](NumericVarId v) {
+    const double x = state.value(v);
+    if (std::isnan(x)) return kInfinity;
+    if (greatest_known_[v]) return greatest_now_[v];
+    return plan_->changing_bounds(v, x, false, true).second;
+  };
+  std::vector<ActionId> seeds;
+  for (const ResourceShortfall& s : balance_->shortfalls(input)) {
+    auto cheapest = [&]() -> ActionId {
+      ActionId best = kNoId;
+      for (ActionId w : s.producers) {
+        if (!(start_time_.at(w, generation_) < kInfinity)) continue;
+        if (best == kNoId || start_cost_.at(w, generation_) < start_cost_.at(best, generation_)) best = w;
+      }
+      return best;
+    };
+    ActionId producer = cheapest();
+    while (producer == kNoId && !queue_.empty()) {
+      const Event e = queue_.top();
+      queue_.pop();
+      if (e.time > fact_time_.at(e.fact, generation_) || processed_.at(e.fact, generation_)) continue;
+      processed_.at(e.fact, generation_) = 1;
+      process(e.fact, e.time);
+      producer = cheapest();
+    }
+    if (producer == kNoId) continue;  // none reachable: the search must find out
+    short_variables_.push_back(s.variable);
+    // A producer the relaxed plan has already gave what it could.
+    const bool counted = counted_start_.stamps[producer] == generation_ && counted_start_.values[producer];
+    if (!counted) seeds.push_back(producer);
+    extra += (s.applications - (counted ? 0.0 : 1.0)) * (rpg_.actions_[producer].durative ? 2.0 : 1.0);
+  }
+  return seeds;
+}
+
 bool TemporalRpg::Exploration::continuous_dead_end(HeuristicValue& value) {
   const std::vector<std::pair<ActionId, std::vector<NumericVarId>>> failing = plan_->invariants_failing_at_end();
   if (failing.empty()) return false;
@@ -565,9 +630,13 @@ bool TemporalRpg::Exploration::continuous_dead_end(HeuristicValue& value) {
   for (const auto& [action, variables] : failing) {
     const double end = plan_->pending_end_time(action);
     bool helped = false;
+    const std::optional<ContinuousStep> step = model.step(task.actions[action], SnapKind::Start, *state_, std::nan(""));
     for (NumericVarId v : variables) {
+      // A writer that moves v the way the invariant forbids is no help.
+      const int needed = step ? bound_direction(step->invariants, v) : 0;
       for (ActionId w : model.writers(v)) {
         if (w == action) continue;
+        if (needed != 0 && change_direction(model, task.actions[w], v, *state_) == -needed) continue;
         const bool running = state_->is_running(w);
         const double by = running ? plan_->pending_end_time(w) : start_time_.at(w, generation_);
         if (by >= end) continue;
@@ -580,7 +649,11 @@ bool TemporalRpg::Exploration::continuous_dead_end(HeuristicValue& value) {
       }
     }
     if (!helped) return true;
-    value.h += 1.0;
+    // The balance counted the help this action needs already.
+    const bool balanced = std::any_of(variables.begin(), variables.end(), [&](NumericVarId v) {
+      return std::find(short_variables_.begin(), short_variables_.end(), v) != short_variables_.end();
+    });
+    if (!balanced) value.h += 1.0;
   }
   return false;
 }
@@ -624,34 +697,50 @@ HeuristicValue TemporalRpg::Exploration::extract(const SearchState& state, doubl
     need_numeric(r.end_numeric);
     if (!state.is_running(a)) count_start(a);
   };
-  while (!open.empty() || !numeric_support.empty()) {
-    if (open.empty()) {
-      const ActionId a = numeric_support.back();
-      numeric_support.pop_back();
-      if (rpg_.actions_[a].durative) {
-        count_end(a);
+  auto drain = [&] {
+    while (!open.empty() || !numeric_support.empty()) {
+      if (open.empty()) {
+        const ActionId a = numeric_support.back();
+        numeric_support.pop_back();
+        if (rpg_.actions_[a].durative) {
+          count_end(a);
+        } else {
+          count_start(a);
+        }
+        continue;
+      }
+      const FactId f = open.back();
+      open.pop_back();
+      if (processed_.at(f, generation_) == 2) continue;
+      processed_.at(f, generation_) = 2;  // 2: supported in the relaxed plan
+      const Achiever a = achiever_.at(f, generation_);
+      switch (a.kind) {
+        case AchieverKind::Start:
+        case AchieverKind::Instant: count_start(a.index); break;
+        case AchieverKind::End: count_end(a.index); break;
+        case AchieverKind::Axiom: {
+          const std::vector<FactId>& body = task.axioms[a.index].body.positive;
+          open.insert(open.end(), body.begin(), body.end());
+          break;
+        }
+        default: break;
+      }
+    }
+  };
+  drain();
+  double extra = 0.0;
+  short_variables_.clear();
+  if (balance_) {
+    for (ActionId producer : shortfall_producers(state, extra)) {
+      if (rpg_.actions_[producer].durative) {
+        count_end(producer);
       } else {
-        count_start(a);
+        count_start(producer);
       }
-      continue;
     }
-    const FactId f = open.back();
-    open.pop_back();
-    if (processed_.at(f, generation_) == 2) continue;
-    processed_.at(f, generation_) = 2;  // 2: supported in the relaxed plan
-    const Achiever a = achiever_.at(f, generation_);
-    switch (a.kind) {
-      case AchieverKind::Start:
-      case AchieverKind::Instant: count_start(a.index); break;
-      case AchieverKind::End: count_end(a.index); break;
-      case AchieverKind::Axiom: {
-        const std::vector<FactId>& body = task.axioms[a.index].body.positive;
-        open.insert(open.end(), body.begin(), body.end());
-        break;
-      }
-      default: break;
-    }
+    drain();
   }
+  count += extra;
   // Every running action still owes its end.
   for (const RunningAction& r : state.running()) {
     if (!counted_end_.at(r.action, generation_)) count += 1.0;

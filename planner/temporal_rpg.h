@@ -7,6 +7,8 @@
 // in Metric-FF's relaxation without its layer counting). A relaxed plan is
 // extracted backwards from the goals; its snap count, plus the ends still
 // owed by running actions, is h. Its applicable snaps are the helpful ones.
+// With continuous change, the producers the relaxed plan's consumption needs
+// are added (Sapa's resource adjustment, planner/resource_shortfall.h).
 #pragma once
 
 #include <limits>
@@ -33,6 +35,9 @@ struct HeuristicValue {
 
 struct TemporalRpgOptions {
   bool helpful_actions = true;
+  // With continuous change: count the producers the relaxed plan's
+  // consumption needs (planner/resource_shortfall.h).
+  bool resource_balance = true;
   // Set: each evaluation also estimates the metric still to come
   // (HeuristicValue::cost), for a search ordered by the metric.
   std::shared_ptr<const LinearMetric> metric;

@@ -41,6 +41,7 @@ Run run_one(const SuiteProblem& p, const PlannerBenchOptions& options, const std
                                 "--out", plan_file, p.domain_file, p.problem_file};
   if (options.anytime) argv.push_back("--anytime");
   if (!options.order.empty()) argv.insert(argv.end(), {"--order", options.order});
+  argv.insert(argv.begin() + 2, options.plan_args.begin(), options.plan_args.end());
   // The child enforces the time limit itself and the runner kills it a
   // little later; memory is limited by the runner.
   RunLimits limits = options.limits;
@@ -317,7 +318,8 @@ int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions
     std::ofstream json(options.out_dir + "/runs.json");
     json << nlohmann::json{{"time_limit", options.limits.seconds}, {"memory_mib", options.limits.memory_mib},
                            {"anytime", options.anytime}, {"search", options.search},
-                           {"order", options.order}, {"worst_overrun_seconds", overrun}, {"runs", rows}}
+                           {"order", options.order}, {"plan_args", options.plan_args},
+                           {"worst_overrun_seconds", overrun}, {"runs", rows}}
                 .dump(2)
          << "\n";
   }

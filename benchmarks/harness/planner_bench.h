@@ -11,6 +11,7 @@
 
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 #include "benchmarks/harness/process_runner.h"
 #include "benchmarks/harness/slurm_array.h"
@@ -29,6 +30,9 @@ struct PlannerBenchOptions {
   bool anytime = false;
   std::string search = "ehc";
   std::string order;       // wastar's ordering, metric or steps ("": the planner's default)
+  // More flags for every `alplan plan` run, as given (an ablation:
+  // "--no-resource-balance", "--deferred").
+  std::vector<std::string> plan_args;
   // Local, or one role of a Slurm job array (slurm_array.h): the tasks
   // write their runs' plans to out_dir/plans as a local run does.
   ArrayRun array;

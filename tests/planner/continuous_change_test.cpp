@@ -129,10 +129,13 @@ TEST_CASE("continuous change: the generator is refuelled while it runs and never
   const PlanStep& generate = step_named(plan, "generate");
   // 100 units of burning from a 60 tank: both tanks, each started once the
   // level has fallen 20 below capacity (it rises by 2 per unit while pouring).
+  // The two may overlap: whatever the first's start, the level at the
+  // second's end is 110 - its start (from the generator's start), so it
+  // cannot start before 50.
   const PlanStep& first = step_named(plan, "refuel", 0);
   const PlanStep& second = step_named(plan, "refuel", 1);
   CHECK(*first.time >= *generate.time + 20.0 - 1e-6);
-  CHECK(*second.time >= *first.time + 10.0);
+  CHECK(*second.time >= *generate.time + 50.0 - 1e-6);
   CHECK(*second.duration + *second.time <= *generate.time + 100.0 + 1e-6);
   CHECK(r.best()->validation.makespan == Approx(100.0));
 }
@@ -235,11 +238,14 @@ TEST_CASE("continuous domains: the hand-written plans of every problem are valid
   }
 }
 
-// The problems solved in seconds (benchmarks/README.md has the rest).
+// The problems solved in about a second (benchmarks/README.md has the
+// rest); generator p04 and rover-energy p03 need the resource balance
+// (planner/resource_shortfall.h): without it they time out.
 TEST_CASE("continuous domains: the planner solves the smaller problems, validly") {
   const std::pair<const char*, const char*> solved[] = {
-      {"generator", "p01"},    {"generator", "p02"},    {"generator", "p03"}, {"robot-battery", "p01"},
-      {"rover-energy", "p01"}, {"rover-energy", "p02"}, {"tank", "p01"},      {"tank", "p02"}};
+      {"generator", "p01"},    {"generator", "p02"},    {"generator", "p03"},    {"generator", "p04"},
+      {"robot-battery", "p01"}, {"rover-energy", "p01"}, {"rover-energy", "p02"}, {"rover-energy", "p03"},
+      {"tank", "p01"},         {"tank", "p02"}};
   for (const auto& [domain, problem] : solved) {
     INFO(domain << " " << problem);
     const test::LoadedTask task = test::load_task(continuous_file(domain, "domain.pddl"),
