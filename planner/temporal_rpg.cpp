@@ -82,6 +82,7 @@ class TemporalRpg::Exploration {
   void park(FactId fact, ActionId a, bool end);
   double duration_of(ActionId a);
   HeuristicValue extract(const SearchState& state, double goal_time);
+  void add_helpful(const SearchState& state, HeuristicValue& value);
   bool continuous_dead_end(HeuristicValue& value);
   std::vector<ActionId> shortfall_producers(const SearchState& state, double& extra);
   bool goals_reached() const { return goals_left_ == 0 && satisfiable(rpg_.goal_numeric_); }
@@ -747,23 +748,26 @@ HeuristicValue TemporalRpg::Exploration::extract(const SearchState& state, doubl
     if (metric) value.cost += metric->end_cost[r.action];
   }
   value.h = count;
-  if (rpg_.options_.helpful_actions) {
-    // Helpful: relaxed-plan snaps whose preconditions hold now.
-    auto holds_now = [&](const std::vector<FactId>& pre) {
-      return std::all_of(pre.begin(), pre.end(), [&](FactId f) { return state.fact(f); });
-    };
-    for (ActionId a = 0; a < rpg_.actions_.size(); ++a) {
-      if (counted_end_.stamps[a] == generation_ && counted_end_.values[a] && state.is_running(a) &&
-          holds_now(rpg_.actions_[a].end_pre)) {
-        value.helpful.push_back({SnapKind::End, a});
-      }
-      if (counted_start_.stamps[a] == generation_ && counted_start_.values[a] &&
-          holds_now(task.actions[a].at_start.positive)) {
-        value.helpful.push_back({rpg_.actions_[a].durative ? SnapKind::Start : SnapKind::Instant, a});
-      }
+  if (rpg_.options_.helpful_actions) add_helpful(state, value);
+  return value;
+}
+
+// Helpful: relaxed-plan snaps whose preconditions hold now.
+void TemporalRpg::Exploration::add_helpful(const SearchState& state, HeuristicValue& value) {
+  const GroundTask& task = rpg_.index_.task();
+  auto holds_now = [&](const std::vector<FactId>& pre) {
+    return std::all_of(pre.begin(), pre.end(), [&](FactId f) { return state.fact(f); });
+  };
+  for (ActionId a = 0; a < rpg_.actions_.size(); ++a) {
+    if (counted_end_.stamps[a] == generation_ && counted_end_.values[a] && state.is_running(a) &&
+        holds_now(rpg_.actions_[a].end_pre)) {
+      value.helpful.push_back({SnapKind::End, a});
+    }
+    if (counted_start_.stamps[a] == generation_ && counted_start_.values[a] &&
+        holds_now(task.actions[a].at_start.positive)) {
+      value.helpful.push_back({rpg_.actions_[a].durative ? SnapKind::Start : SnapKind::Instant, a});
     }
   }
-  return value;
 }
 
 }  // namespace alplan
