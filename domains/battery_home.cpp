@@ -42,15 +42,21 @@ Graph paths_of(const pddl::Problem& problem) {
   return graph;
 }
 
-// Total shortest moving time from `from` to every location (Dijkstra; the
-// homes are small); infinite when some location cannot be reached.
-double total_time_from(const Graph& graph, const std::string& from) {
-  std::map<std::string, double> best{{from, 0.0}};
-  std::set<std::pair<double, std::string>> queue{{0.0, from}};
+// Shortest moving time from the nearest of `sources` to each location it
+// reaches (Dijkstra; the homes are small).
+std::map<std::string, double> distances_from(const Graph& graph, const std::vector<std::string>& sources) {
+  std::map<std::string, double> best;
+  std::set<std::pair<double, std::string>> queue;
+  for (const std::string& s : sources) {
+    best[s] = 0.0;
+    queue.insert({0.0, s});
+  }
   while (!queue.empty()) {
     const auto [d, at] = *queue.begin();
     queue.erase(queue.begin());
-    for (const auto& [to, t] : graph.at(at)) {
+    const auto next = graph.find(at);
+    if (next == graph.end()) continue;
+    for (const auto& [to, t] : next->second) {
       const auto known = best.find(to);
       if (known != best.end() && known->second <= d + t) continue;
       if (known != best.end()) queue.erase({known->second, to});
@@ -58,10 +64,24 @@ double total_time_from(const Graph& graph, const std::string& from) {
       queue.insert({d + t, to});
     }
   }
+  return best;
+}
+
+// Total shortest moving time from `from` to every location; infinite when
+// some location cannot be reached.
+double total_time_from(const Graph& graph, const std::string& from) {
+  const std::map<std::string, double> best = distances_from(graph, {from});
   if (best.size() < graph.size()) return std::numeric_limits<double>::infinity();
   double total = 0.0;
   for (const auto& [at, d] : best) total += d;
   return total;
+}
+
+double robot_value(const pddl::Problem& problem, const std::string& function, const std::string& robot) {
+  for (const pddl::NumericFact& f : problem.numeric_init) {
+    if (f.function.name == function && f.function.args.size() == 1 && f.function.args[0].name == robot) return f.value;
+  }
+  throw std::invalid_argument("battery: the home gives no (" + function + " " + robot + ")");
 }
 
 bool has_value(const pddl::Problem& problem, const std::string& function, const std::string& robot) {
@@ -138,6 +158,33 @@ void add_batteries(pddl::Problem& problem, const BatteryOptions& options) {
   const std::string dock = central_location(problem);
   if (dock.empty()) throw std::invalid_argument("battery: the home has no paths, so no place for a dock");
   problem.init.push_back(atom("dock", {dock}));
+}
+
+std::map<std::string, double> return_levels(const pddl::Problem& problem) {
+  const Graph graph = paths_of(problem);
+  std::vector<std::string> docks;
+  for (const pddl::Atom& a : problem.init) {
+    if (a.name == "dock" && a.args.size() == 1) docks.push_back(a.args[0].name);
+  }
+  const std::map<std::string, double> to_dock = distances_from(graph, docks);
+  double farthest = 0.0;
+  for (const auto& [location, next] : graph) {
+    const auto d = to_dock.find(location);
+    // A location no dock can be reached from: no level brings a robot home.
+    farthest = std::max(farthest, d == to_dock.end() ? std::numeric_limits<double>::infinity() : d->second);
+  }
+  std::map<std::string, double> levels;
+  for (const pddl::TypedName& o : problem.objects) {
+    if (std::find(o.types.begin(), o.types.end(), "robot") == o.types.end()) continue;
+    const double level =
+        robot_value(problem, "reserve", o.name) + robot_value(problem, "drain_rate", o.name) * farthest;
+    if (level > robot_value(problem, "capacity", o.name)) {
+      throw std::invalid_argument("battery: " + o.name + " needs " + std::to_string(level) +
+                                  " to reach a dock from the farthest room, more than its capacity");
+    }
+    levels[o.name] = level;
+  }
+  return levels;
 }
 
 }  // namespace alplan::domains

@@ -5,6 +5,7 @@
 // where the dock goes and what a battery starts with.
 #pragma once
 
+#include <map>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -42,5 +43,14 @@ std::string central_location(const pddl::Problem& problem);
 // rates from `options` (values the problem already gives stand), and, when
 // the problem has no (dock ...), one dock at the central location.
 void add_batteries(pddl::Problem& problem, const BatteryOptions& options);
+
+// Per robot, the level that takes it from the location farthest from a
+// dock to the nearest dock without going below its reserve: reserve +
+// drain rate x that moving time (paths are walked both ways in the homes).
+// A robot ending every mission at or above it can always get to a dock;
+// the domain's reserve alone keeps plans safe, not robots able to recharge.
+// Throws std::invalid_argument when a robot lacks a reserve, drain rate or
+// capacity, or a full battery is not enough.
+std::map<std::string, double> return_levels(const pddl::Problem& problem);
 
 }  // namespace alplan::domains

@@ -118,7 +118,8 @@ class HomeRun {
         world_(repair::initial_world(base_), {}),
         belief_(base_, observation_options()),
         events_(event_options()),
-        returns_(base_, settings.object_return_s) {
+        returns_(base_, settings.object_return_s),
+        return_levels_(settings.battery ? domains::return_levels(base_) : std::map<std::string, double>{}) {
     planner_.anytime = settings.planner_expansions > 0;
     planner_.anytime_expansions = settings.planner_expansions;
     planner_.anytime_min_weight = 3.0;
@@ -416,6 +417,31 @@ class HomeRun {
     return chosen;
   }
 
+  // With batteries, each robot of a mission must end it able to reach a
+  // dock (domains::return_levels): the domain's reserve keeps plans safe,
+  // this keeps a robot from being left at its reserve far from the dock,
+  // where it could not move at all (home/README.md, Batteries).
+  void require_return(pddl::Problem& problem, const std::vector<std::string>& robots) const {
+    if (!settings_.battery) return;
+    pddl::Condition all;
+    all.kind = pddl::Condition::Kind::And;
+    if (problem.goal) all.children.push_back(*problem.goal);
+    for (const std::string& r : robots) {
+      pddl::Condition enough;
+      enough.kind = pddl::Condition::Kind::Comparison;
+      enough.comparison = pddl::Comparison::GreaterEqual;
+      pddl::NumericExpression level, at_least;
+      level.kind = pddl::NumericExpression::Kind::Function;
+      level.function.name = "battery";
+      level.function.args.resize(1);
+      level.function.args[0].name = r;
+      at_least.value = return_levels_.at(r);
+      enough.expressions = {level, at_least};
+      all.children.push_back(enough);
+    }
+    problem.goal = all;
+  }
+
   // Plans every goal in course from what the robots believe at t, then
   // executes under the monitor until the plan ends; returns the time then.
   double mission(double t) {
@@ -432,6 +458,7 @@ class HomeRun {
     goal_problem.goal = all;
     current_problem_ = repair::reformulate(loaded_.home.domain, goal_problem, belief_.state(), {}, t, 0.0);
     const std::vector<std::string> robots = dispatch(current_problem_);
+    require_return(current_problem_, robots);
     const repair::PlanningOutcome planned =
         repair::plan_in_process(loaded_.home.domain, current_problem_, t, planner_);
     if (!planned.plan) {
@@ -489,6 +516,7 @@ class HomeRun {
   repair::Belief belief_;
   repair::RandomEventGenerator events_;
   ObjectReturns returns_;
+  std::map<std::string, double> return_levels_;  // with batteries: per robot, enough to reach a dock
   std::mt19937_64 events_random_{settings_.seed * 104729 + 3};
   PlannerOptions planner_, replanner_;
   std::unique_ptr<repair::RepairStrategy> strategy_;

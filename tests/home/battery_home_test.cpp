@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <map>
 #include <sstream>
 
 #include "domains/battery_home.h"
@@ -92,6 +93,19 @@ TEST_CASE("a home gains the battery file's dock and values: the central room, th
   CHECK_THROWS_AS(domains::add_batteries(again, wrong), std::invalid_argument);
 }
 
+TEST_CASE("a robot's return level takes it from the farthest room to the dock above its reserve", "[home][battery]") {
+  const domains::LoadedFiles file = domains::load_pddl(kBatteryDomain, kAssistedLiving + "/battery/home.pddl");
+  // The farthest rooms from corridor2 are the bedrooms, 30 + 50 s away:
+  // 80 s at 0.05 a second above the reserve of 20.
+  const std::map<std::string, double> levels = domains::return_levels(*file.problem);
+  CHECK(levels == std::map<std::string, double>{{"robot1", 24.0}, {"robot2", 24.0}});
+  pddl::Problem hungry = *file.problem;
+  for (pddl::NumericFact& f : hungry.numeric_init) {
+    if (f.function.name == "drain_rate") f.value = 2.0;  // 160 + 20 > 100
+  }
+  CHECK_THROWS_AS(domains::return_levels(hungry), std::invalid_argument);
+}
+
 TEST_CASE("the battery domain plans a recharge when a robot cannot reach the senior without one", "[home][battery]") {
   const domains::LoadedHome home = domains::load_home_files(
       kBatteryDomain, test::data_dir() + "/home/battery-recharge.pddl", kAssistedLiving + "/types.ttl");
@@ -125,6 +139,9 @@ TEST_CASE("a home run with batteries recharges, never goes below a reserve, logs
     CHECK_FALSE(b.below_reserve);
   }
   CHECK(summary.batteries.at("robot1").lowest < 30.0);  // senior1's robot drained
+  // Every mission ends with its robots able to reach the dock (24 here),
+  // so robot1 recharged beyond what serving alone would need.
+  for (const auto& [robot, b] : summary.batteries) CHECK(b.level >= 24.0 - kNumericSlack);
   CHECK(summary.json().contains("batteries"));
   CHECK(count(events, "battery") == 2);
   for (const LogEvent& e : events) {
