@@ -168,7 +168,9 @@ void add_home_command(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<HomeCommandOptions>();
   CLI::App* cmd = app.add_subcommand("home", kHomeHelp);
   home::HomeSettings& s = o->settings;
-  cmd->add_option("--home", o->home_file, "A home's problem file for domains/assisted_living/domain.pddl (--battery: battery/domain.pddl; its goal is ignored)");
+  cmd->add_option("--home", o->home_file,
+                  "A home's problem file for domains/assisted_living/domain.pddl (--battery: battery/domain.pddl; "
+                  "its goal is ignored)");
   cmd->add_option("--seniors", s.generate_seniors, "Generate a home with this many seniors (alplan gen home)")
       ->check(CLI::Range(1, 1000));
   cmd->add_option("--robots", s.generate_robots, "Robots of the generated home")->check(CLI::Range(1, 100));

@@ -17,8 +17,10 @@ AtomKey key_of(const pddl::Atom& atom) {
 std::vector<ActionInProgress> by_end(const std::map<std::string, ActionInProgress>& running) {
   std::vector<ActionInProgress> out;
   for (const auto& [name, a] : running) out.push_back(a);
-  std::stable_sort(out.begin(), out.end(),
-                   [](const ActionInProgress& a, const ActionInProgress& b) { return a.expected_end < b.expected_end; });
+  const auto earlier = [](const ActionInProgress& a, const ActionInProgress& b) {
+    return a.expected_end < b.expected_end;
+  };
+  std::stable_sort(out.begin(), out.end(), earlier);
   return out;
 }
 

@@ -68,7 +68,8 @@ std::size_t count(const std::vector<LogEvent>& events, const std::string& type) 
 
 }  // namespace
 
-TEST_CASE("a home gains the battery file's dock and values: the central room, the defaults", "[home][battery]") {
+TEST_CASE("a home gains the battery file's dock and values: the central room, the defaults",
+          "[home][battery]") {
   const domains::LoadedFiles plain = domains::load_pddl(kBatteryDomain, kAssistedLiving + "/home.pddl");
   const domains::LoadedFiles file = domains::load_pddl(kBatteryDomain, kAssistedLiving + "/battery/home.pddl");
   CHECK(domains::central_location(*plain.problem) == "corridor2");
@@ -93,7 +94,8 @@ TEST_CASE("a home gains the battery file's dock and values: the central room, th
   CHECK_THROWS_AS(domains::add_batteries(again, wrong), std::invalid_argument);
 }
 
-TEST_CASE("a robot's return level takes it from the farthest room to the dock above its reserve", "[home][battery]") {
+TEST_CASE("a robot's battery return level takes it from the farthest room to the dock above its reserve",
+          "[home][battery]") {
   const domains::LoadedFiles file = domains::load_pddl(kBatteryDomain, kAssistedLiving + "/battery/home.pddl");
   // The farthest rooms from corridor2 are the bedrooms, 30 + 50 s away:
   // 80 s at 0.05 a second above the reserve of 20.
@@ -106,7 +108,8 @@ TEST_CASE("a robot's return level takes it from the farthest room to the dock ab
   CHECK_THROWS_AS(domains::return_levels(hungry), std::invalid_argument);
 }
 
-TEST_CASE("the battery domain plans a recharge when a robot cannot reach the senior without one", "[home][battery]") {
+TEST_CASE("the battery domain plans a recharge when a robot cannot reach the senior without one",
+          "[home][battery]") {
   const domains::LoadedHome home = domains::load_home_files(
       kBatteryDomain, test::data_dir() + "/home/battery-recharge.pddl", kAssistedLiving + "/types.ttl");
   const std::string low = plan_of(*home.files.problem, home.domain);
@@ -120,7 +123,8 @@ TEST_CASE("the battery domain plans a recharge when a robot cannot reach the sen
   CHECK(plan_of(full, home.domain).find("recharge") == std::string::npos);
 }
 
-TEST_CASE("a home run with batteries recharges, never goes below a reserve, logs it and replays", "[home][battery]") {
+TEST_CASE("a home run with batteries recharges, never goes below a reserve, logs it and replays",
+          "[home][battery]") {
   const HomeSettings settings = low_battery_run();
   EventLog log;
   const HomeSummary summary = run_home(settings, log);

@@ -112,7 +112,8 @@ TEST_CASE("the world drains a moving robot's battery linearly and stops when the
   CHECK(world.lowest_values().at({"battery", "robot1"}) == Approx(23.5));
 }
 
-TEST_CASE("the world charges at the dock and an overrunning move drains until it really ends", "[battery]") {
+TEST_CASE("the world charges a battery at the dock and an overrunning move drains it until it really ends",
+          "[battery]") {
   const Loaded l = load();
   WorldSimulator world(initial_world(*l.files.problem), {action_overruns("(move robot1 bedroom1 corridor1)", 20.0)});
   const ActionId move = action_named(*l.task, "(move robot1 bedroom1 corridor1)");
