@@ -2,8 +2,9 @@
 # `alplan home --battery` as users run it: the default home with batteries
 # low enough that a robot must recharge; the log carries the batteries, the
 # summary and the report say each robot's lowest level and that none went
-# below its reserve, replay reproduces the run; bad battery values and
-# battery values without --battery are refused.
+# below its reserve, replay reproduces the run; `gen home --battery` makes
+# a problem the battery domain plans; bad battery values and battery values
+# without --battery are refused.
 # Usage: home_battery_test.sh ALPLAN WORKDIR
 set -euo pipefail
 alplan=$1
@@ -37,6 +38,11 @@ grep -q 'id="batteries"' report/index.html || fail "the report has no battery ta
 # A run without --battery logs no battery (its log and summary as before).
 expect 0 "summary:" "$alplan" home --until 60 --log plain.jsonl --quiet
 ! grep -q '"battery"' plain.jsonl || fail "a run without --battery logged a battery"
+
+# A generated home for the battery domain: a dock, batteries, and the planner plans it.
+"$alplan" gen home --battery --seniors 8 --robots 2 --seed 3 --out gen.pddl 2>/dev/null
+grep -q "(dock " gen.pddl && grep -q "(= (battery robot2) 100)" gen.pddl || fail "gen home --battery: no dock or battery"
+expect 0 "status: solved" "$alplan" plan "$here/../../domains/assisted_living/battery/domain.pddl" gen.pddl
 
 expect 2 "reserve" "$alplan" home --battery --battery-reserve 150 --until 60
 set +e
