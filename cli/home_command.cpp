@@ -78,6 +78,13 @@ void narrate(const home::LogEvent& e) {
   if (e.type == "comforted") {
     line(e.senior + " comforted: " + p.value("goal", "") + (p.value("within_window", false) ? ", within the window" : ", too late"));
   }
+  if (e.type == "battery") {
+    char text[160];
+    std::snprintf(text, sizeof text, "%s's battery: %.2f now, lowest %.2f, reserve %.2f%s", e.robot.c_str(),
+                  p.value("level", 0.0), p.value("lowest", 0.0), p.value("reserve", 0.0),
+                  p.value("below_reserve", false) ? ": WENT BELOW ITS RESERVE" : "");
+    line(text);
+  }
   if (e.type == "window_missed") line(e.senior + "'s window closed before " + p.value("goal", "") + ": looking again");
 }
 
@@ -87,6 +94,10 @@ void print_summary(const home::HomeSummary& s, bool live) {
   std::printf("         %zu plans (%zu merges), %zu failures, repairs:", s.plans, s.merges, s.failures);
   for (const auto& [strategy, n] : s.repairs) std::printf(" %s %zu", strategy.c_str(), n);
   std::printf(", %zu failed\n", s.repairs_failed);
+  for (const auto& [robot, b] : s.batteries) {
+    std::printf("         %s's battery: lowest %.2f, reserve %.2f, %s\n", robot.c_str(), b.lowest, b.reserve,
+                b.below_reserve ? "went below its reserve" : "never below its reserve");
+  }
   const nlohmann::json j = s.json();
   if (live) {
     std::printf("         planning p50 %.3f s, p95 %.3f s; %.1f s of wall time\n", j["planning_p50_s"].get<double>(),
@@ -157,7 +168,9 @@ void add_home_command(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<HomeCommandOptions>();
   CLI::App* cmd = app.add_subcommand("home", kHomeHelp);
   home::HomeSettings& s = o->settings;
-  cmd->add_option("--home", o->home_file, "A home's problem file for domains/assisted_living/domain.pddl (its goal is ignored)");
+  cmd->add_option("--home", o->home_file,
+                  "A home's problem file for domains/assisted_living/domain.pddl (--battery: battery/domain.pddl; "
+                  "its goal is ignored)");
   cmd->add_option("--seniors", s.generate_seniors, "Generate a home with this many seniors (alplan gen home)")
       ->check(CLI::Range(1, 1000));
   cmd->add_option("--robots", s.generate_robots, "Robots of the generated home")->check(CLI::Range(1, 100));

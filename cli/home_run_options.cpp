@@ -22,6 +22,22 @@ void add_home_run_options(CLI::App& cmd, home::HomeSettings& s) {
                  "Seconds until an object taken away or handed to a senior is back in its place (0: never)")
       ->check(CLI::NonNegativeNumber);
   cmd.add_flag("!--no-dispatch", s.dispatch, "Plan each mission with every robot, not the nearest one per senior");
+  add_battery_options(cmd, s);
+}
+
+void add_battery_options(CLI::App& cmd, home::HomeSettings& s) {
+  CLI::Option* battery = cmd.add_flag(
+      "--battery", s.battery,
+      "Robots with batteries: moves drain them, a dock recharges them (domains/assisted_living/battery/)");
+  domains::BatteryOptions& b = s.battery_options;
+  const auto level = [&](const char* name, double& value, const char* what) {
+    cmd.add_option(name, value, what)->check(CLI::NonNegativeNumber)->needs(battery);
+  };
+  level("--battery-capacity", b.capacity, "A full battery (with --battery; default 100)");
+  level("--battery-reserve", b.reserve, "The level no planned move may go below (with --battery; default 20)");
+  level("--battery-initial", b.initial, "Each robot's level at the start (with --battery; default 100)");
+  level("--battery-drain", b.drain_rate, "Drain per second of moving (with --battery; default 0.05)");
+  level("--battery-charge", b.charge_rate, "Charge per second at the dock (with --battery; default 0.5)");
 }
 
 }  // namespace alplan::cli

@@ -9,5 +9,7 @@
 namespace alplan::cli {
 
 void add_home_run_options(CLI::App& cmd, home::HomeSettings& s);
+// --battery and the battery's values (domains/battery_home.h); part of the above.
+void add_battery_options(CLI::App& cmd, home::HomeSettings& s);
 
 }  // namespace alplan::cli

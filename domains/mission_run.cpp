@@ -9,8 +9,13 @@
 namespace alplan::domains {
 
 LoadedHome load_home(const std::string& dir, const std::string& problem_file) {
-  LoadedFiles files = load_pddl(dir + "/domain.pddl", dir + "/" + problem_file);
-  repair::TypeOntology ontology = repair::TypeOntology::from_file(dir + "/types.ttl");
+  return load_home_files(dir + "/domain.pddl", dir + "/" + problem_file, dir + "/types.ttl");
+}
+
+LoadedHome load_home_files(const std::string& domain_file, const std::string& problem_file,
+                           const std::string& ontology_file) {
+  LoadedFiles files = load_pddl(domain_file, problem_file);
+  repair::TypeOntology ontology = repair::TypeOntology::from_file(ontology_file);
   pddl::Domain domain = repair::augment_domain(*files.domain, ontology);
   return {std::move(files), std::move(ontology), std::move(domain)};
 }

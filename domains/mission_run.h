@@ -46,6 +46,10 @@ std::vector<std::string> exogenous_predicates();
 
 // Throws domains::InputError (or repair::OntologyError) naming the file.
 LoadedHome load_home(const std::string& dir, const std::string& problem_file);
+// The same with each file named: a variant of the domain (battery/domain.pddl)
+// with the home's ontology.
+LoadedHome load_home_files(const std::string& domain_file, const std::string& problem_file,
+                           const std::string& ontology_file);
 
 struct MissionInput {
   const pddl::Domain* domain = nullptr;  // with the ontology's types (augment_domain)

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "domains/battery_home.h"
 #include "domains/emotion_goals.h"
 #include "domains/home_generator.h"
 #include "domains/mission_run.h"
@@ -16,6 +17,7 @@
 #include "home/object_returns.h"
 #include "home/robot_dispatch.h"
 #include "pddl_parser/writer.h"
+#include "planner/evaluation.h"
 #include "repair/monitor.h"
 #include "repair/observation.h"
 #include "repair/random_events.h"
@@ -30,7 +32,22 @@ struct LoadedRun {
   HomeMap map;
 };
 
-LoadedRun load(const HomeSettings& s) {
+// The domain the run plans with: the paper's, or its battery variant.
+std::string domain_file(const HomeSettings& s) {
+  return s.domains_dir + (s.battery ? "/battery/domain.pddl" : "/domain.pddl");
+}
+
+// With batteries, the home's problem gains what it lacks of them.
+domains::LoadedHome with_batteries(domains::LoadedHome home, const HomeSettings& s) {
+  if (!s.battery) return home;
+  pddl::Problem problem = *home.files.problem;
+  domains::add_batteries(problem, s.battery_options);
+  home.files.problem = std::make_shared<const pddl::Problem>(std::move(problem));
+  return home;
+}
+
+domains::LoadedHome load_files(const HomeSettings& s) {
+  const std::string ontology = s.domains_dir + "/types.ttl";
   if (s.generate_seniors > 0) {
     domains::HomeOptions options;
     options.seniors = s.generate_seniors;
@@ -40,19 +57,17 @@ LoadedRun load(const HomeSettings& s) {
     options.stressed = 1;  // the generator wants one; calm_problem takes every emotion away
     options.seed = s.seed;
     const domains::GeneratedHome generated = domains::generate_home(options);
-    domains::LoadedHome paper = domains::load_home(s.domains_dir, "home.pddl");
+    domains::LoadedHome paper = domains::load_home_files(domain_file(s), s.domains_dir + "/home.pddl", ontology);
     domains::LoadedFiles files = domains::load_pddl_text(pddl::write_domain(*paper.files.domain), "domain.pddl",
                                                          generated.problem, "generated-home.pddl");
-    domains::LoadedHome home{std::move(files), std::move(paper.ontology), std::move(paper.domain)};
-    HomeMap map = read_home_map(*home.files.problem);
-    return {std::move(home), std::move(map)};
+    return {std::move(files), std::move(paper.ontology), std::move(paper.domain)};
   }
   const std::string file = s.home_file.empty() ? s.domains_dir + "/home.pddl" : s.home_file;
-  domains::LoadedHome home = domains::load_home(s.domains_dir, "home.pddl");
-  if (file != s.domains_dir + "/home.pddl") {
-    domains::LoadedFiles files = domains::load_pddl(s.domains_dir + "/domain.pddl", file);
-    home.files.problem = files.problem;
-  }
+  return domains::load_home_files(domain_file(s), file, ontology);
+}
+
+LoadedRun load(const HomeSettings& s) {
+  domains::LoadedHome home = with_batteries(load_files(s), s);
   HomeMap map = read_home_map(*home.files.problem);
   return {std::move(home), std::move(map)};
 }
@@ -103,7 +118,8 @@ class HomeRun {
         world_(repair::initial_world(base_), {}),
         belief_(base_, observation_options()),
         events_(event_options()),
-        returns_(base_, settings.object_return_s) {
+        returns_(base_, settings.object_return_s),
+        return_levels_(settings.battery ? domains::return_levels(base_) : std::map<std::string, double>{}) {
     planner_.anytime = settings.planner_expansions > 0;
     planner_.anytime_expansions = settings.planner_expansions;
     planner_.anytime_min_weight = 3.0;
@@ -159,10 +175,30 @@ class HomeRun {
       summary_.false_alarms = score->false_alarms;
     }
     summary_.end_time = std::min(t, settings_.until);
+    report_batteries(summary_.end_time);
     return summary_;
   }
 
  private:
+  // Each robot's battery over the run, from the world's true values: into
+  // the summary and the log (one `battery` event per robot).
+  void report_batteries(double t) {
+    if (!settings_.battery) return;
+    for (const Placed& r : loaded_.map.robots) {
+      RobotBattery b;
+      b.level = world_.value({"battery", r.name}).value_or(0.0);
+      b.reserve = world_.value({"reserve", r.name}).value_or(0.0);
+      const auto low = world_.lowest_values().find({"battery", r.name});
+      b.lowest = low == world_.lowest_values().end() ? b.level : std::min(low->second, b.level);
+      b.below_reserve = b.lowest < b.reserve - kNumericSlack;
+      summary_.batteries[r.name] = b;
+      LogEvent e{"battery", t, {}, r.name, {}};
+      e.payload = {{"level", b.level}, {"lowest", b.lowest}, {"reserve", b.reserve},
+                   {"below_reserve", b.below_reserve}};
+      log_.write(e);
+    }
+  }
+
   repair::ObservationOptions observation_options() const {
     repair::ObservationOptions o;
     const auto model = repair::observation_model(settings_.observe);
@@ -302,6 +338,9 @@ class HomeRun {
         LogEvent e{m.kind == Kind::ActionStart ? "action_start" : "action_end", m.time, {},
                    robot_of(m.action, loaded_.map), {}};
         e.payload = {{"action", m.action}, {"plan_id", current_plan_}};
+        if (m.kind == Kind::ActionEnd && settings_.battery && !e.robot.empty()) {
+          e.payload["battery"] = world_.value({"battery", e.robot}).value_or(0.0);
+        }
         log_.write(e);
         return;
       }
@@ -378,6 +417,31 @@ class HomeRun {
     return chosen;
   }
 
+  // With batteries, each robot of a mission must end it able to reach a
+  // dock (domains::return_levels): the domain's reserve keeps plans safe,
+  // this keeps a robot from being left at its reserve far from the dock,
+  // where it could not move at all (home/README.md, Batteries).
+  void require_return(pddl::Problem& problem, const std::vector<std::string>& robots) const {
+    if (!settings_.battery) return;
+    pddl::Condition all;
+    all.kind = pddl::Condition::Kind::And;
+    if (problem.goal) all.children.push_back(*problem.goal);
+    for (const std::string& r : robots) {
+      pddl::Condition enough;
+      enough.kind = pddl::Condition::Kind::Comparison;
+      enough.comparison = pddl::Comparison::GreaterEqual;
+      pddl::NumericExpression level, at_least;
+      level.kind = pddl::NumericExpression::Kind::Function;
+      level.function.name = "battery";
+      level.function.args.resize(1);
+      level.function.args[0].name = r;
+      at_least.value = return_levels_.at(r);
+      enough.expressions = {level, at_least};
+      all.children.push_back(enough);
+    }
+    problem.goal = all;
+  }
+
   // Plans every goal in course from what the robots believe at t, then
   // executes under the monitor until the plan ends; returns the time then.
   double mission(double t) {
@@ -394,6 +458,7 @@ class HomeRun {
     goal_problem.goal = all;
     current_problem_ = repair::reformulate(loaded_.home.domain, goal_problem, belief_.state(), {}, t, 0.0);
     const std::vector<std::string> robots = dispatch(current_problem_);
+    require_return(current_problem_, robots);
     const repair::PlanningOutcome planned =
         repair::plan_in_process(loaded_.home.domain, current_problem_, t, planner_);
     if (!planned.plan) {
@@ -451,6 +516,7 @@ class HomeRun {
   repair::Belief belief_;
   repair::RandomEventGenerator events_;
   ObjectReturns returns_;
+  std::map<std::string, double> return_levels_;  // with batteries: per robot, enough to reach a dock
   std::mt19937_64 events_random_{settings_.seed * 104729 + 3};
   PlannerOptions planner_, replanner_;
   std::unique_ptr<repair::RepairStrategy> strategy_;
@@ -473,11 +539,17 @@ double quantile(std::vector<double> values, double q) {
 }
 
 nlohmann::json HomeSummary::json() const {
-  return {{"goals", goals},         {"comforted", comforted},     {"within_window", within_window},
+  nlohmann::json j = {{"goals", goals},         {"comforted", comforted},     {"within_window", within_window},
           {"windows_missed", windows_missed}, {"failures", failures}, {"plans", plans},
           {"merges", merges},       {"repairs", repairs},         {"repairs_failed", repairs_failed},
           {"planning_p50_s", quantile(planning_seconds, 0.5)}, {"planning_p95_s", quantile(planning_seconds, 0.95)},
           {"episodes", episodes},   {"episodes_detected", episodes_detected}, {"false_alarms", false_alarms}, {"end_time", end_time}};
+  if (batteries.empty()) return j;  // runs without batteries: as before
+  nlohmann::json& b = j["batteries"];
+  for (const auto& [robot, r] : batteries) {
+    b[robot] = {{"level", r.level}, {"lowest", r.lowest}, {"reserve", r.reserve}, {"below_reserve", r.below_reserve}};
+  }
+  return j;
 }
 
 HomeSummary run_home(const HomeSettings& settings, EventLog& log, const std::function<void(double)>& on_time) {

@@ -22,6 +22,13 @@
 
 namespace alplan::home {
 
+// A robot's battery over a run (`alplan home --battery`), from the
+// simulated world's true values.
+struct RobotBattery {
+  double level = 0.0, lowest = 0.0, reserve = 0.0;
+  bool below_reserve = false;  // lowest < reserve, beyond the validator's slack
+};
+
 struct HomeSummary {
   std::size_t goals = 0, comforted = 0, within_window = 0, windows_missed = 0;
   std::size_t failures = 0, plans = 0, merges = 0;
@@ -32,6 +39,7 @@ struct HomeSummary {
   // Scored against the simulation's truth.
   std::size_t episodes = 0, episodes_detected = 0, false_alarms = 0;
   double end_time = 0.0;
+  std::map<std::string, RobotBattery> batteries;  // by robot; with batteries only
 
   nlohmann::json json() const;
 };

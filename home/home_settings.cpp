@@ -40,6 +40,8 @@ nlohmann::json HomeSettings::json() const {
   // Only when set: a simulated run's settings stay as logs before --live
   // had them, so those logs still replay.
   if (live) j["live"] = true;
+  // Likewise only with batteries: runs without them keep their settings.
+  if (battery) j["battery"] = battery_options.json();
   return j;
 }
 
@@ -66,6 +68,10 @@ HomeSettings HomeSettings::from_json(const nlohmann::json& j) {
     s.strategy = j.at("strategy").get<std::string>();
     s.observe = j.at("observe").get<std::string>();
     s.live = j.value("live", false);  // written only for live runs
+    if (j.contains("battery")) {  // written only for runs with batteries
+      s.battery = true;
+      s.battery_options = domains::BatteryOptions::from_json(j.at("battery"));
+    }
     s.until = j.at("until").get<double>();
     s.seed = j.at("seed").get<std::uint64_t>();
     const nlohmann::json& m = j.at("seniors_model");

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "domains/battery_home.h"
 #include "home/simulated_senior.h"
 
 namespace alplan::home {
@@ -78,6 +79,12 @@ struct HomeSettings {
   // (home/robot_dispatch.h); off: with every robot.
   bool dispatch = true;
   double planning_time = 10.0;
+  // Robots with batteries (`alplan home --battery`, issue 15): the home runs
+  // domains_dir/battery/domain.pddl, its problem gains what it lacks of
+  // `battery_options` and a dock (domains/battery_home.h), and the world
+  // drains and charges the batteries as the robots move and recharge.
+  bool battery = false;
+  domains::BatteryOptions battery_options;
   // Not part of the run (left out of json()): where to write, as PDDL, each
   // problem the planner found no plan for, to study the search offline.
   std::string unplanned_dir;

@@ -8,6 +8,7 @@
 #include <map>
 
 #include "pddl_parser/writer.h"
+#include "planner/evaluation.h"
 #include "repair/timeline.h"
 
 namespace alplan::repair {
@@ -47,6 +48,18 @@ struct CommittedEnd {
   ActionId action = 0;
   double end = 0.0;
   double duration = 0.0;
+};
+
+// An action the world had not finished when the plan said it would (an
+// overrun): it goes on under its over-all condition (a move still draining
+// the battery) until the world reports it ended.
+struct Overrun {
+  std::shared_ptr<const GroundTask> task;
+  std::shared_ptr<const StateMapping> mapping;
+  ActionId action = 0;
+  double duration = 0.0;
+  std::string name;
+  bool reported = false;  // its invariant failed once: one failure, not one per look
 };
 
 // A foreseen failure no repair could mend yet, and what the monitor had
@@ -137,7 +150,10 @@ class Execution {
       if (take_arrivals(t)) continue;  // look again at the same time, with the merged plan
       const WorldState observed = belief_.state();
       const ExplicitState state = mapping_->to_explicit(observed);
-      std::optional<Violation> failure = timeline_->check_due(t, state);
+      // An overrun's own invariant first: a battery run down below its
+      // reserve is why the steps after it fail, not the other way round.
+      std::optional<Violation> failure = check_overruns(t, observed);
+      if (!failure) failure = timeline_->check_due(t, state);
       bool foreseen = false;
       if (!failure && options_.lookahead) {
         failure = timeline_->check_ahead(t, state);
@@ -410,7 +426,11 @@ class Execution {
         ++c;
         continue;
       }
-      if (world_.end_action(*c->task, c->action, t)) belief_.act(*c->task, c->action, false, c->duration);
+      if (world_.end_action(*c->task, c->action, t)) {
+        belief_.act(*c->task, c->action, false, c->duration);
+      } else {
+        overran(c->task, c->action, c->duration);
+      }
       tell(snap_event(MonitorEvent::Kind::ActionEnd, t, c->task->action_name(c->task->actions[c->action])));
       c = committed_.erase(c);
     }
@@ -422,6 +442,7 @@ class Execution {
           belief_.act(*plan_.task, a.action, false, a.duration);
         } else {
           report_.events.push_back(time_text(t) + ": " + a.name + " has not finished as planned");
+          overran(plan_.task, a.action, a.duration);
         }
         progress_.ended[s] = true;
         tell(snap_event(MonitorEvent::Kind::ActionEnd, t, a.name));
@@ -437,6 +458,49 @@ class Execution {
       report_.events.push_back(time_text(t) + ": start " + a.name);
       tell(snap_event(MonitorEvent::Kind::ActionStart, t, a.name));
     }
+  }
+
+  // Only actions that change values continuously are watched past their
+  // planned end: their invariants bind what keeps changing while they run
+  // on (a battery draining). A discrete action's overrun shows in the
+  // conditions of the steps after it, as it always has.
+  void overran(const std::shared_ptr<const GroundTask>& task, ActionId action, double duration) {
+    const GroundAction& a = task->actions[action];
+    if (a.over_all.empty() || a.continuous.empty()) return;
+    overruns_.push_back({task, std::make_shared<StateMapping>(*task), action, duration, task->action_name(a)});
+  }
+
+  // The over-all conditions of overrunning actions the world still runs,
+  // against what the robot observes (its battery gauge among the values);
+  // the timeline's own entries end where the plan said the actions would.
+  std::optional<Violation> check_overruns(double t, const WorldState& observed) {
+    if (overruns_.empty()) return std::nullopt;
+    std::map<std::string, double> running;
+    for (const ActionInProgress& a : world_.in_progress()) running[a.name] = a.expected_end;
+    std::erase_if(overruns_, [&](const Overrun& o) { return !running.count(o.name); });
+    for (Overrun& o : overruns_) {
+      if (o.reported) continue;
+      const GroundAction& a = o.task->actions[o.action];
+      EvaluationContext context;
+      context.duration = o.duration;
+      std::optional<Unsatisfied> failed;
+      try {
+        // The slack the validator gives values that change with time.
+        failed = first_unsatisfied(a.over_all, o.mapping->to_explicit(observed), context, kNumericSlack);
+      } catch (const EvaluationError&) {
+        continue;  // a value the world does not report: nothing to judge by
+      }
+      if (!failed) continue;
+      o.reported = true;
+      Violation v;
+      v.kind = Violation::Kind::UnsatisfiedInvariant;
+      v.time = t;
+      v.until = running[o.name];
+      v.action = o.name;
+      v.condition = describe(*o.task, a.over_all, *failed);
+      return v;
+    }
+    return std::nullopt;
   }
 
   double next_time(double t) const { return next_observation(*timeline_, committed_, t, options_.step_size); }
@@ -455,6 +519,7 @@ class Execution {
   std::unique_ptr<StateMapping> mapping_;
   Progress progress_{0};
   std::vector<CommittedEnd> committed_;
+  std::vector<Overrun> overruns_;
   ExecutionReport report_;
   std::unique_ptr<GroundingCache> grounding_;
   Belief belief_;

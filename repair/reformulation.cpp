@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
 #include <set>
 
 #include "planner/grounder.h"
@@ -61,7 +62,16 @@ pddl::Problem reformulate(const pddl::Domain& domain, const pddl::Problem& base,
   for (const AtomKey& a : observed.atoms) {
     if (known(a, predicates)) problem.init.push_back(atom_of(a));
   }
-  for (const auto& [key, value] : observed.values) {
+  // A value an action underway changes continuously (a robot mid-move
+  // drains its battery) starts the new plan at what it will be when that
+  // action ends: the action cannot be stopped, and the new plan can move the
+  // robot only after it arrives, so for a drain this is the level the plan
+  // has to work with (and for a charge, what it will have).
+  std::map<AtomKey, double> values = observed.values;
+  for (const ActionInProgress& a : in_progress) {
+    for (const auto& [key, rate] : a.rates) values[key] += rate * std::max(0.0, a.expected_end - now);
+  }
+  for (const auto& [key, value] : values) {
     if (!known(key, functions)) continue;
     pddl::NumericFact f;
     f.function = atom_of(key);

@@ -3,7 +3,8 @@
 // observed atoms and values as the initial state, the timed initial literals
 // still to come, the goal and the metric. Actions still running are
 // committed: their ends become timed initial literals at the world's
-// estimate of when they end. The result is an ordinary PDDL problem, so the
+// estimate of when they end, and a value they change continuously starts
+// at what it will be then. The result is an ordinary PDDL problem, so the
 // same text can go to a planner in another process.
 #pragma once
 

@@ -12,6 +12,7 @@ Timeline::Timeline(const ExecutingPlan& plan) : plan_(&plan) {
   for (std::size_t s = 0; s < plan.steps.size(); ++s) {
     const ScheduledAction& step = plan.steps[s];
     const GroundAction& action = task.actions[step.action];
+    continuous_ = continuous_ || !action.continuous.empty();
     entries_.push_back({K::AtStart, step.start, step.start, s, &action.at_start});
     happening_times_.push_back(step.start);
     if (!action.durative) continue;
@@ -32,7 +33,9 @@ std::optional<Violation> Timeline::violated(const TimelineEntry& entry, double t
   if (entry.condition->empty()) return std::nullopt;
   EvaluationContext context;
   if (entry.kind != K::Goal) context.duration = plan_->steps[entry.step].duration;
-  const double slack = entry.kind == K::OverAll ? 0.0 : kNumericSlack;
+  // Over all, values that change with time are compared with the slack the
+  // validator gives them (a battery planned down to its reserve exactly).
+  const double slack = entry.kind == K::OverAll && !continuous_ ? 0.0 : kNumericSlack;
   std::optional<Unsatisfied> failed;
   try {
     failed = first_unsatisfied(*entry.condition, observed, context, slack);

@@ -50,6 +50,7 @@ class Timeline {
   const ExecutingPlan* plan_;
   std::vector<TimelineEntry> entries_;
   std::vector<double> happening_times_;
+  bool continuous_ = false;  // some step changes values continuously
 };
 
 }  // namespace alplan::repair

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "planner/ground_task.h"
@@ -18,6 +19,10 @@ struct ActionInProgress {
   std::string name;
   double expected_end = 0.0;
   std::vector<AtomKey> adds, dels;  // what its end will change
+  // Its continuous effects (PDDL 2.1 linear change): each value it moves
+  // and by how much per second, signed, fixed when it started. A replan
+  // needs them: the change goes on until the action ends.
+  std::vector<std::pair<AtomKey, double>> rates;
 };
 
 class World {

@@ -12,6 +12,18 @@ AtomKey key_of(const pddl::Atom& atom) {
   return key;
 }
 
+// Running actions ordered by when they are expected to end (by name among
+// equal ends, as the map holds them).
+std::vector<ActionInProgress> by_end(const std::map<std::string, ActionInProgress>& running) {
+  std::vector<ActionInProgress> out;
+  for (const auto& [name, a] : running) out.push_back(a);
+  const auto earlier = [](const ActionInProgress& a, const ActionInProgress& b) {
+    return a.expected_end < b.expected_end;
+  };
+  std::stable_sort(out.begin(), out.end(), earlier);
+  return out;
+}
+
 }  // namespace
 
 ExogenousEvent becomes_unavailable(double time, const std::string& object) {
@@ -94,16 +106,39 @@ void WorldSimulator::schedule(const std::vector<ExogenousEvent>& events) {
 
 double WorldSimulator::finish_running(double now) {
   double last = now;
-  for (const auto& [name, a] : running_) {
+  for (const ActionInProgress& a : by_end(running_)) {
     last = std::max(last, a.expected_end);
-    for (const AtomKey& d : a.dels) world_.set(d, false);
-    for (const AtomKey& k : a.adds) world_.set(k, true);
+    finish(a);
   }
   running_.clear();
   durations_.clear();
   overrunning_.clear();
+  flow_until(last);
   world_.time = std::max(world_.time, last);
   return last;
+}
+
+void WorldSimulator::finish(const ActionInProgress& a) {
+  flow_until(a.expected_end);
+  for (const AtomKey& d : a.dels) world_.set(d, false);
+  for (const AtomKey& k : a.adds) world_.set(k, true);
+  // Its change stops here: the others flow on without it.
+  running_.erase(a.name);
+}
+
+void WorldSimulator::flow_until(double t) {
+  if (t <= world_.time) return;
+  const double elapsed = t - world_.time;
+  for (const auto& [name, a] : running_) {
+    for (const auto& [key, rate] : a.rates) {
+      double& value = world_.values[key];
+      const auto [low, fresh] = lowest_.try_emplace(key, value);
+      value += rate * elapsed;
+      // Change is linear between two looks: its ends are its extremes.
+      low->second = std::min(low->second, value);
+    }
+  }
+  world_.time = t;
 }
 
 void WorldSimulator::apply(const ExogenousEvent& e) {
@@ -124,32 +159,35 @@ void WorldSimulator::advance(double t) {
     apply(pending_.front());
     pending_.erase(pending_.begin());
   }
-  // Overrunning actions finish when they finish; the others when the
-  // monitor dispatches their ends.
-  for (auto it = running_.begin(); it != running_.end();) {
-    const ActionInProgress& a = it->second;
+  // Overrunning actions finish when they finish, in the order they do (the
+  // values flow up to each end); the others when the monitor dispatches
+  // their ends.
+  for (const ActionInProgress& a : by_end(running_)) {
     if (overrunning_.count(a.name) && a.expected_end <= t) {
       overrunning_.erase(a.name);
-      for (const AtomKey& d : a.dels) world_.set(d, false);
-      for (const AtomKey& k : a.adds) world_.set(k, true);
-      it = running_.erase(it);
-    } else {
-      ++it;
+      finish(a);
     }
   }
+  flow_until(t);
   world_.time = std::max(world_.time, t);
 }
 
 void WorldSimulator::apply_snap(const GroundTask& task, ActionId action, bool start, double t, double duration) {
+  flow_until(t);
   apply_snap_effects(task, action, start, duration, world_);
   world_.time = std::max(world_.time, t);
 }
 
 void WorldSimulator::start_action(const GroundTask& task, ActionId action, double t, double duration) {
+  flow_until(t);
+  // Rates are fixed in the state the action starts in, before its start's
+  // effects (PDDL 2.1; the validator does the same).
+  std::vector<std::pair<AtomKey, double>> rates = continuous_rates(task, action, duration, world_);
   apply_snap(task, action, true, t, duration);
   const GroundAction& a = task.actions[action];
   if (!a.durative) return;
   ActionInProgress p;
+  p.rates = std::move(rates);
   p.name = task.action_name(a);
   p.expected_end = t + duration;
   const StateMapping mapping(task);
@@ -160,6 +198,7 @@ void WorldSimulator::start_action(const GroundTask& task, ActionId action, doubl
 }
 
 bool WorldSimulator::end_action(const GroundTask& task, ActionId action, double t) {
+  flow_until(t);
   const std::string name = task.action_name(task.actions[action]);
   auto overrun = overruns_.find(name);
   auto it = running_.find(name);

@@ -9,6 +9,7 @@
 #include <map>
 #include <set>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,12 @@ class WorldSimulator : public World, public ObjectRecognizer {
 
   void advance(double t) override;
   WorldState observe() const override { return world_; }
+  // One value of the world now (a robot's battery gauge), without copying
+  // the state; nothing when the world has no such value.
+  std::optional<double> value(const AtomKey& key) const {
+    const auto it = world_.values.find(key);
+    return it == world_.values.end() ? std::nullopt : std::optional<double>(it->second);
+  }
   void start_action(const GroundTask& task, ActionId action, double t, double duration) override;
   bool end_action(const GroundTask& task, ActionId action, double t) override;
   std::vector<ActionInProgress> in_progress() const override;
@@ -67,12 +74,22 @@ class WorldSimulator : public World, public ObjectRecognizer {
   // or `now` when none runs.
   double finish_running(double now);
 
+  // The lowest value each value changed continuously has had so far (a
+  // robot's battery at its emptiest), exact: change is linear between the
+  // times the world flows to, so the lowest is at one of them.
+  const std::map<AtomKey, double>& lowest_values() const { return lowest_; }
+
   // Events applied so far, in order, for reports.
   const std::vector<ExogenousEvent>& applied() const { return applied_; }
 
  private:
   void apply(const ExogenousEvent& e);
   void apply_snap(const GroundTask& task, ActionId action, bool start, double t, double duration);
+  // Moves the values of running actions' continuous effects on to time t.
+  void flow_until(double t);
+  // An overrunning action ends on its own: the values flow up to its end,
+  // then its end's facts change.
+  void finish(const ActionInProgress& a);
 
   WorldState world_;
   std::vector<ExogenousEvent> pending_;  // by time
@@ -82,6 +99,7 @@ class WorldSimulator : public World, public ObjectRecognizer {
   std::map<std::string, ActionInProgress> running_;  // by name
   std::map<std::string, double> durations_;           // of running actions, for their ends
   std::set<std::string> overrunning_;                 // ends dispatched, not yet happened
+  std::map<AtomKey, double> lowest_;                  // of values changed continuously
 };
 
 }  // namespace alplan::repair

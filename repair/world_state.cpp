@@ -59,4 +59,22 @@ void apply_snap_effects(const GroundTask& task, ActionId action, bool start, dou
   mapping.write_back(state, world);
 }
 
+std::vector<std::pair<AtomKey, double>> continuous_rates(const GroundTask& task, ActionId action, double duration,
+                                                         const WorldState& world) {
+  const GroundAction& a = task.actions[action];
+  std::vector<std::pair<AtomKey, double>> rates;
+  if (a.continuous.empty()) return rates;
+  const StateMapping mapping(task);
+  const ExplicitState state = mapping.to_explicit(world);
+  EvaluationContext context;
+  context.duration = duration;
+  // The sign as planner/happening_executor.cpp's start_rates gives it (a
+  // private member there; the same two lines here).
+  for (const ContinuousEffect& c : a.continuous) {
+    const double rate = evaluate(c.rate, state, context);
+    rates.emplace_back(mapping.variable_key(c.variable), c.assign == pddl::AssignOperator::Decrease ? -rate : rate);
+  }
+  return rates;
+}
+
 }  // namespace alplan::repair

@@ -8,6 +8,7 @@
 #include <set>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "planner/explicit_state.h"
@@ -51,5 +52,13 @@ class StateMapping {
 // Applies a snap's effects (the start's or the end's) of one of the task's
 // actions to the world, as the task's semantics say.
 void apply_snap_effects(const GroundTask& task, ActionId action, bool start, double duration, WorldState& world);
+
+// The rates of an action's continuous effects, as it starts in `world`
+// (before its start's effects, as the validator fixes them): the value each
+// moves and its change per second, negative for a decrease. Empty for an
+// action without continuous change. Throws EvaluationError on a rate the
+// world has no value for.
+std::vector<std::pair<AtomKey, double>> continuous_rates(const GroundTask& task, ActionId action, double duration,
+                                                         const WorldState& world);
 
 }  // namespace alplan::repair

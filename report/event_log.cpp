@@ -22,6 +22,7 @@ constexpr TypeRule kTypes[] = {
     {"plan", "plan_id"},           {"action_start", "action"}, {"action_end", "action"},
     {"observation", ""},           {"failure", ""},            {"repair", ""},
     {"explanation", ""},           {"comforted", "senior"},    {"window_missed", "senior"},
+    {"battery", "robot"},
 };
 
 const TypeRule* rule_for(const std::string& type) {

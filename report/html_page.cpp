@@ -78,6 +78,14 @@ void summary_section(std::ostream& out, const RunSummary& s) {
   }
   if (s.repairs.empty()) out << "<tr><td colspan=\"4\">no repair in the log</td></tr>\n";
   out << "</table>\n";
+  if (s.batteries.empty()) return;  // a run without batteries
+  out << "<table id=\"batteries\">\n<tr><th>robot</th><th>lowest battery</th><th>reserve</th>"
+         "<th>below its reserve</th></tr>\n";
+  for (const BatterySummary& b : s.batteries) {
+    out << "<tr><td>" << html_escape(b.robot) << "</td><td class=\"n\">" << number(b.lowest) << "</td><td class=\"n\">"
+        << number(b.reserve) << "</td><td>" << (b.below_reserve ? "yes" : "no") << "</td></tr>\n";
+  }
+  out << "</table>\n";
 }
 
 void explanations_section(std::ostream& out, const EventLog& log) {

@@ -15,12 +15,28 @@ void count_senior_event(const Event& e, SeniorSummary& s) {
   if (e.type == "window_missed") ++s.windows_missed;
 }
 
+// The lowest level a robot's battery is known to have had: the `battery`
+// events' `lowest` (the world's exact lowest) and the levels at action ends.
+void count_battery_event(const Event& e, std::map<std::string, BatterySummary>& batteries) {
+  const bool report = e.type == "battery";
+  if (e.robot.empty() || !(report || (e.type == "action_end" && e.fields.contains("battery")))) return;
+  const double level = number_field(e.fields, report ? "lowest" : "battery");
+  const auto [it, fresh] = batteries.try_emplace(e.robot, BatterySummary{e.robot, level, 0.0, false});
+  BatterySummary& b = it->second;
+  b.lowest = std::min(b.lowest, level);
+  if (report) {
+    b.reserve = number_field(e.fields, "reserve");
+    b.below_reserve = b.below_reserve || bool_field(e.fields, "below_reserve");
+  }
+}
+
 }  // namespace
 
 RunSummary summarize(const EventLog& log) {
   RunSummary r;
   std::map<std::string, SeniorSummary> seniors;
   std::map<std::string, StrategySummary> repairs;
+  std::map<std::string, BatterySummary> batteries;
   if (log.home) {
     for (const Placement& p : log.home->seniors) seniors[p.name].senior = p.name;
   }
@@ -31,6 +47,7 @@ RunSummary summarize(const EventLog& log) {
       s.senior = e.senior;
       count_senior_event(e, s);
     }
+    count_battery_event(e, batteries);
     if (e.type == "plan") ++r.plans;
     if (e.type == "explanation") ++r.explanations;
     if (e.type == "failure") {
@@ -55,6 +72,7 @@ RunSummary summarize(const EventLog& log) {
     r.windows_missed += s.windows_missed;
   }
   for (const auto& [name, s] : repairs) r.repairs.push_back(s);
+  for (const auto& [name, b] : batteries) r.batteries.push_back(b);
   return r;
 }
 

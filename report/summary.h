@@ -25,6 +25,15 @@ struct StrategySummary {
   double seconds = 0;  // planning time of its attempts, summed
 };
 
+// A robot's battery (logs of `alplan home --battery`): its lowest level,
+// from the `battery` events and the levels `action_end` events carry.
+struct BatterySummary {
+  std::string robot;
+  double lowest = 0;
+  double reserve = 0;
+  bool below_reserve = false;
+};
+
 struct RunSummary {
   double end_time = 0;  // the last event's time
   int plans = 0;
@@ -38,6 +47,7 @@ struct RunSummary {
   int explanations = 0;
   std::vector<SeniorSummary> seniors;      // those the log mentions, by name
   std::vector<StrategySummary> repairs;    // by strategy name
+  std::vector<BatterySummary> batteries;   // by robot; empty without batteries
 };
 
 RunSummary summarize(const EventLog& log);

@@ -58,3 +58,24 @@ TEST_CASE("the summary counts goals, comforted seniors, windows, failures and re
   CHECK(s.repairs[2].strategy == "substitute");
   CHECK(s.repairs[2].repaired == 1);
 }
+
+TEST_CASE("the summary states each robot's lowest battery and whether it went below its reserve") {
+  const EventLog log = log_of(
+      R"J({"type":"action_end","time":10,"robot":"robot1","action":"(move robot1 a b)","battery":31.5})J" "\n"
+      R"J({"type":"action_end","time":20,"robot":"robot2","action":"(move robot2 a b)","battery":18})J" "\n"
+      R"J({"type":"action_end","time":25,"robot":"robot1","action":"(carry robot1 g a)"})J" "\n"
+      R"J({"type":"battery","time":90,"robot":"robot1","level":40,"lowest":24,"reserve":20,"below_reserve":false})J" "\n"
+      R"J({"type":"battery","time":90,"robot":"robot2","level":18,"lowest":17.5,"reserve":20,"below_reserve":true})J" "\n");
+  const RunSummary s = summarize(log);
+  REQUIRE(s.batteries.size() == 2);
+  CHECK(s.batteries[0].robot == "robot1");
+  CHECK(s.batteries[0].lowest == 24);
+  CHECK(s.batteries[0].reserve == 20);
+  CHECK_FALSE(s.batteries[0].below_reserve);
+  CHECK(s.batteries[1].robot == "robot2");
+  CHECK(s.batteries[1].lowest == 17.5);
+  CHECK(s.batteries[1].below_reserve);
+  // A log without batteries has none.
+  const EventLog plain = log_of(R"J({"type":"action_end","time":10,"robot":"robot1","action":"(move robot1 a b)"})J" "\n");
+  CHECK(summarize(plain).batteries.empty());
+}
