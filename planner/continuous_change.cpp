@@ -349,14 +349,7 @@ std::optional<ContinuousStep> ContinuousModel::step(const GroundAction& action, 
       if (!value) return std::nullopt;
       out.effects.push_back({n.variable, n.assign, std::move(*value)});
     }
-    if (kind == SnapKind::Start) {
-      EvaluationContext context;
-      context.duration = duration;
-      for (const ContinuousEffect& c : action.continuous) {
-        const double rate = evaluate(c.rate, before, context);
-        out.rates.emplace_back(c.variable, c.assign == pddl::AssignOperator::Decrease ? -rate : rate);
-      }
-    }
+    if (kind == SnapKind::Start) out.rates = signed_rates(action, before, duration);
   } catch (const EvaluationError&) {
     return std::nullopt;
   }

@@ -25,6 +25,7 @@
 #include <utility>
 #include <vector>
 
+#include "planner/evaluation.h"
 #include "planner/ground_task.h"
 #include "planner/search_state.h"
 #include "planner/snap_action.h"
@@ -59,6 +60,24 @@ struct ContinuousStep {
   std::vector<std::pair<NumericVarId, double>> rates;  // a start: change per time unit, signed
   bool empty() const { return conditions.empty() && invariants.empty() && effects.empty() && rates.empty(); }
 };
+
+// Each continuous effect's variable and change per time unit (negative for
+// a decrease), fixed in the state the action starts in, before its start's
+// effects (PDDL 2.1 level 4). The planner, the validator and the simulated
+// world all read rates through this. Throws EvaluationError on an
+// undefined rate.
+template <typename State>
+std::vector<std::pair<NumericVarId, double>> signed_rates(const GroundAction& action, const State& state,
+                                                          double duration) {
+  std::vector<std::pair<NumericVarId, double>> rates;
+  EvaluationContext context;
+  context.duration = duration;
+  for (const ContinuousEffect& c : action.continuous) {
+    const double rate = evaluate(c.rate, state, context);
+    rates.emplace_back(c.variable, c.assign == pddl::AssignOperator::Decrease ? -rate : rate);
+  }
+  return rates;
+}
 
 class ContinuousModel {
  public:

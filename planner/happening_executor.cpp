@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "pddl_parser/writer.h"
+#include "planner/continuous_change.h"
 #include "planner/evaluation.h"
 #include "planner/ground_printer.h"
 #include "planner/happening_effects.h"
@@ -306,13 +307,7 @@ std::optional<Violation> HappeningExecutor::apply(const std::vector<Event>& even
 void HappeningExecutor::start_rates(std::size_t scheduled, const ExplicitState& state) {
   const GroundAction& action = task_.actions[steps_[scheduled].action];
   if (action.continuous.empty()) return;
-  EvaluationContext context;
-  context.duration = steps_[scheduled].duration;
-  std::vector<std::pair<NumericVarId, double>>& rates = rates_[scheduled];
-  for (const ContinuousEffect& c : action.continuous) {
-    const double rate = evaluate(c.rate, state, context);
-    rates.emplace_back(c.variable, c.assign == pddl::AssignOperator::Decrease ? -rate : rate);
-  }
+  rates_[scheduled] = signed_rates(action, state, steps_[scheduled].duration);
 }
 
 void HappeningExecutor::advance(ExplicitState& state, double elapsed) const {

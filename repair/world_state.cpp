@@ -1,5 +1,6 @@
 #include "repair/world_state.h"
 
+#include "planner/continuous_change.h"
 #include "planner/evaluation.h"
 #include "planner/happening_effects.h"
 
@@ -65,14 +66,8 @@ std::vector<std::pair<AtomKey, double>> continuous_rates(const GroundTask& task,
   std::vector<std::pair<AtomKey, double>> rates;
   if (a.continuous.empty()) return rates;
   const StateMapping mapping(task);
-  const ExplicitState state = mapping.to_explicit(world);
-  EvaluationContext context;
-  context.duration = duration;
-  // The sign as planner/happening_executor.cpp's start_rates gives it (a
-  // private member there; the same two lines here).
-  for (const ContinuousEffect& c : a.continuous) {
-    const double rate = evaluate(c.rate, state, context);
-    rates.emplace_back(mapping.variable_key(c.variable), c.assign == pddl::AssignOperator::Decrease ? -rate : rate);
+  for (const auto& [v, rate] : signed_rates(a, mapping.to_explicit(world), duration)) {
+    rates.emplace_back(mapping.variable_key(v), rate);
   }
   return rates;
 }
