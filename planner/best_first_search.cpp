@@ -74,6 +74,7 @@ class BestFirstSearch : public SearchEngine {
       if (options_.prune && options_.prune(child.node)) continue;
       if (passed(options_.deadline)) return SearchStatus::InProgress;
       const bool is_preferred = preferred(parent, child);
+      if (space_.known(child, stats_)) continue;
       if (!space_.evaluate(child, heuristic_, stats_)) continue;
       if (options_.prune && options_.prune(child.node)) continue;
       PartialPlan child_plan = child.plan;

@@ -46,6 +46,7 @@ class EnforcedHillClimbing : public SearchEngine {
       std::optional<Child> child = space_.schedule(id, plan, std::move(successors[i]), stats_);
       if (!child) continue;
       any_helpful = any_helpful || i < helpful;
+      if (space_.known(*child, stats_)) continue;
       if (!space_.evaluate(*child, heuristic_, stats_)) continue;
       const double h = child->node.h;
       PartialPlan child_plan = child->plan;

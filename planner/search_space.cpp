@@ -120,6 +120,18 @@ void SearchSpace::set_root_heuristic(TemporalRpg& heuristic, SearchStatistics& s
   nodes_[0].evaluated = true;
 }
 
+bool SearchSpace::known(const Child& child, SearchStatistics& stats) const {
+  auto it = seen_.find(&child.node.state);
+  if (it == seen_.end()) return false;
+  for (NodeId stored : it->second) {
+    if (dominated(child.node, stored)) {
+      ++stats.duplicates;
+      return true;
+    }
+  }
+  return false;
+}
+
 std::optional<NodeId> SearchSpace::insert(Child child, SearchStatistics& stats) {
   auto it = seen_.find(&child.node.state);
   if (it != seen_.end()) {

@@ -97,6 +97,10 @@ class SearchSpace {
   bool evaluate_stored(NodeId id, const PartialPlan& plan, TemporalRpg& heuristic, SearchStatistics& stats);
   // Stores a child unless a stored node with its state dominates it.
   std::optional<NodeId> insert(Child child, SearchStatistics& stats);
+  // Whether insert() would drop the child as a duplicate (counted then):
+  // the state and its timing are known before the heuristic is, so engines
+  // ask first and evaluate only new children.
+  bool known(const Child& child, SearchStatistics& stats) const;
   void set_root_heuristic(TemporalRpg& heuristic, SearchStatistics& stats);
   // The stored node with this state, if any.
   std::optional<NodeId> find(const SearchState& state) const;

@@ -365,6 +365,28 @@ TEST_CASE("a search the time limit stops is handed over, not freed, so the limit
   CHECK(stopped.search_memory == nullptr);
 }
 
+// A child whose state and timing a stored node dominates is dropped before
+// the heuristic sees it: evaluations and duplicates are disjoint, so
+// together they never exceed the scheduled children and the root. Stopped
+// by a node limit (between expansions, so every expansion scheduled all its
+// children), on a problem rich in duplicates. When duplicates were found
+// only after they had been evaluated, this failed.
+TEST_CASE("duplicates are recognised before they are evaluated") {
+  const std::string base = test::shared_dir() + "/benchmarks/ipc/ipc-2014/floor-tile-temporal-satisficing/";
+  auto task = ground(test::load_task(base + "domain.pddl", base + "instances/instance-1.pddl").normalized);
+  for (const std::string search : {"gbfs", "wastar"}) {
+    INFO(search);
+    PlannerOptions options;
+    options.search = search;
+    options.node_limit = 2000;
+    const PlannerResult r = Planner(task, options).plan();
+    REQUIRE(r.status == Status::LimitReached);
+    const SearchStatistics& s = r.statistics;
+    CHECK(s.duplicates > 100);
+    CHECK(s.evaluated + s.duplicates <= s.generated - s.unschedulable + 1);
+  }
+}
+
 TEST_CASE("deferred evaluation: one evaluation per expansion, the same kind of plans") {
   const std::string base = test::shared_dir() + "/benchmarks/ipc/";
   for (const std::string problem : {"ipc-2004/satellite-time-time-windows-strips/instances/instance-1.pddl",
