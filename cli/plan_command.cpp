@@ -40,6 +40,7 @@ struct PlanOptions {
   std::string order = PlannerOptions{}.order;
   bool deferred_evaluation = PlannerOptions{}.deferred_evaluation;
   std::optional<std::uint64_t> ehc_expansions;
+  double ehc_time_share = PlannerOptions{}.ehc_time_share;
   bool prune_irrelevant = PlannerOptions{}.prune_irrelevant;
   bool resource_balance = PlannerOptions{}.resource_balance;
   std::string out;
@@ -150,6 +151,7 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
   planner_options.order = options.order;
   planner_options.deferred_evaluation = options.deferred_evaluation;
   if (options.ehc_expansions) planner_options.ehc_expansions = *options.ehc_expansions;
+  planner_options.ehc_time_share = options.ehc_time_share;
   planner_options.prune_irrelevant = options.prune_irrelevant;
   planner_options.resource_balance = options.resource_balance;
   planner_options.anytime = options.anytime;
@@ -255,6 +257,9 @@ void add_plan_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"metric", "steps"}));
   cmd->add_option("--ehc-expansions", options->ehc_expansions,
                   "EHC gives up after this many expansions and GBFS and wastar take turns (default 20000)");
+  cmd->add_option("--ehc-time-share", options->ehc_time_share,
+                  "EHC also gives up after this share of the time limit (default 0.25; 1: only the expansions count)")
+      ->check(CLI::Range(0.0, 1.0));
   cmd->add_flag("--deferred", options->deferred_evaluation,
                 "GBFS and wastar evaluate a node when they expand it, not when they generate it");
   cmd->add_flag("!--no-relevance", options->prune_irrelevant,

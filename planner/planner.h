@@ -43,6 +43,8 @@ struct PlannerOptions {
   // EHC gives up after this many expansions (it is incomplete and can wander
   // on plateaus); GBFS and weighted A* then take turns.
   std::uint64_t ehc_expansions = 20000;
+  // ... or after this share of the time limit, whichever comes first.
+  double ehc_time_share = 0.25;
   // Seconds from the call to plan(), setup and search; checked before every
   // heuristic evaluation, so a large task overruns it by one evaluation.
   double time_limit = std::numeric_limits<double>::infinity();

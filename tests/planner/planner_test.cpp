@@ -2,6 +2,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <limits>
 #include <thread>
 
 #include "planner/grounder.h"
@@ -268,6 +269,29 @@ TEST_CASE("anytime search under an expansion cap per weight keeps its plans and 
   REQUIRE(heavy.best());
   CHECK(heavy.best()->validation.value >= full.best()->validation.value);
   CHECK(heavy.statistics.expanded <= full.statistics.expanded);
+}
+
+// EHC gives up after its share of the time limit as well as after its
+// expansions, so that a climb slowed by ever longer plans cannot starve the
+// complete searches (depots instance 3: EHC never spent its expansions in
+// 60 s; GBFS alone solves it in about 1 s). A share of 0 hands over at once;
+// without a time limit there is no share to take.
+TEST_CASE("EHC hands over to its fallback after its share of the time limit") {
+  auto task = ground_text(kMixed, kMixedProblem);
+  PlannerOptions options;
+  options.time_limit = 30.0;
+  const PlannerResult climbed = Planner(task, options).plan();
+  REQUIRE(climbed.best());
+  CHECK(climbed.best()->engine.find("ehc") != std::string::npos);
+  options.ehc_time_share = 0.0;
+  const PlannerResult handed = Planner(task, options).plan();
+  REQUIRE(handed.best());
+  CHECK(handed.best()->validation.valid);
+  CHECK(handed.best()->engine.find("ehc") == std::string::npos);
+  options.time_limit = std::numeric_limits<double>::infinity();
+  const PlannerResult unlimited = Planner(task, options).plan();
+  REQUIRE(unlimited.best());
+  CHECK(unlimited.best()->engine.find("ehc") != std::string::npos);
 }
 
 TEST_CASE("two planners run at once in two threads and agree with a sequential run") {
