@@ -3,24 +3,14 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
+#include "repair/world_state.h"
+
 namespace alplan::domains {
 namespace {
-
-pddl::Term term(const std::string& name) {
-  pddl::Term t;
-  t.name = name;
-  return t;
-}
-
-pddl::Atom atom(const std::string& head, const std::vector<std::string>& args) {
-  pddl::Atom a;
-  a.name = head;
-  for (const std::string& n : args) a.args.push_back(term(n));
-  return a;
-}
 
 using Graph = std::map<std::string, std::map<std::string, double>>;
 
@@ -77,17 +67,17 @@ double total_time_from(const Graph& graph, const std::string& from) {
   return total;
 }
 
-double robot_value(const pddl::Problem& problem, const std::string& function, const std::string& robot) {
+// A robot's value of a one-argument function in the problem's init.
+std::optional<double> find_value(const pddl::Problem& problem, const std::string& function, const std::string& robot) {
   for (const pddl::NumericFact& f : problem.numeric_init) {
     if (f.function.name == function && f.function.args.size() == 1 && f.function.args[0].name == robot) return f.value;
   }
-  throw std::invalid_argument("battery: the home gives no (" + function + " " + robot + ")");
+  return std::nullopt;
 }
 
-bool has_value(const pddl::Problem& problem, const std::string& function, const std::string& robot) {
-  return std::any_of(problem.numeric_init.begin(), problem.numeric_init.end(), [&](const pddl::NumericFact& f) {
-    return f.function.name == function && f.function.args.size() == 1 && f.function.args[0].name == robot;
-  });
+double robot_value(const pddl::Problem& problem, const std::string& function, const std::string& robot) {
+  if (const std::optional<double> v = find_value(problem, function, robot)) return *v;
+  throw std::invalid_argument("battery: the home gives no (" + function + " " + robot + ")");
 }
 
 }  // namespace
@@ -145,9 +135,9 @@ void add_batteries(pddl::Problem& problem, const BatteryOptions& options) {
   for (const pddl::TypedName& o : problem.objects) {
     if (std::find(o.types.begin(), o.types.end(), "robot") == o.types.end()) continue;
     for (const auto& [function, value] : values) {
-      if (has_value(problem, function, o.name)) continue;
+      if (find_value(problem, function, o.name)) continue;
       pddl::NumericFact f;
-      f.function = atom(function, {o.name});
+      f.function = repair::atom_of({function, o.name});
       f.value = value;
       problem.numeric_init.push_back(f);
     }
@@ -157,7 +147,7 @@ void add_batteries(pddl::Problem& problem, const BatteryOptions& options) {
   if (docked) return;
   const std::string dock = central_location(problem);
   if (dock.empty()) throw std::invalid_argument("battery: the home has no paths, so no place for a dock");
-  problem.init.push_back(atom("dock", {dock}));
+  problem.init.push_back(repair::atom_of({"dock", dock}));
 }
 
 std::map<std::string, double> return_levels(const pddl::Problem& problem) {

@@ -21,17 +21,26 @@ struct SingleBound {
   bool lower = false, upper = false;
 };
 
+// Which sides a comparison (form op 0) bounds the form from: an equality both.
+struct Sides {
+  bool at_least = false, at_most = false;
+};
+
+Sides sides(pddl::Comparison c) {
+  const bool equal = c == pddl::Comparison::Equal;
+  return {equal || c == pddl::Comparison::GreaterEqual || c == pddl::Comparison::Greater,
+          equal || c == pddl::Comparison::LessEqual || c == pddl::Comparison::Less};
+}
+
 std::optional<SingleBound> single_bound(const LinearCondition& c) {
   if (c.form.duration != 0.0 || c.form.terms.size() != 1 || c.form.terms[0].second == 0.0) return std::nullopt;
   const auto [v, k] = c.form.terms[0];
   SingleBound b;
   b.variable = v;
   b.threshold = -c.form.constant / k;  // constant + k v (op) 0
-  const bool at_least = c.comparison == pddl::Comparison::GreaterEqual || c.comparison == pddl::Comparison::Greater;
-  const bool at_most = c.comparison == pddl::Comparison::LessEqual || c.comparison == pddl::Comparison::Less;
-  const bool equal = c.comparison == pddl::Comparison::Equal;
-  b.lower = equal || (at_least && k > 0.0) || (at_most && k < 0.0);
-  b.upper = equal || (at_least && k < 0.0) || (at_most && k > 0.0);
+  const Sides side = sides(c.comparison);
+  b.lower = (side.at_least && k > 0.0) || (side.at_most && k < 0.0);
+  b.upper = (side.at_least && k < 0.0) || (side.at_most && k > 0.0);
   return b;
 }
 
@@ -51,10 +60,8 @@ double duration_bound(const LinearCondition& c, NumericVarId v, double level) {
     if (w != v) return kInfinity;  // reads another changing value: unknown here, so no bound
     rest += k * level;
   }
-  const bool at_most = c.comparison == pddl::Comparison::LessEqual || c.comparison == pddl::Comparison::Less;
-  const bool at_least = c.comparison == pddl::Comparison::GreaterEqual || c.comparison == pddl::Comparison::Greater;
-  const bool equal = c.comparison == pddl::Comparison::Equal;
-  if ((d > 0.0 && (at_most || equal)) || (d < 0.0 && (at_least || equal))) return std::max(0.0, -rest / d);
+  const Sides side = sides(c.comparison);
+  if ((d > 0.0 && side.at_most) || (d < 0.0 && side.at_least)) return std::max(0.0, -rest / d);
   return kInfinity;
 }
 
@@ -103,45 +110,60 @@ int change_direction(const ContinuousModel& model, const GroundAction& action, N
   return up ? 1 : -1;
 }
 
-void ResourceBalance::ask(const std::vector<LinearCondition>& conditions, std::vector<Account>& accounts) const {
-  for (const LinearCondition& c : conditions) {
-    const std::optional<SingleBound> b = single_bound(c);
-    if (!b || !b->lower) continue;
-    Account& account = accounts[b->variable];
-    account.need = std::max(account.need, b->threshold);
-    account.asked = true;
-  }
+ResourceBalance::Snaps ResourceBalance::snaps_of(ActionId a, bool running, const SearchState& state) const {
+  const GroundAction& g = task_.actions[a];
+  Snaps out{a, running, model_.step(g, SnapKind::Start, state, std::nan("")), std::nullopt};
+  if (g.durative) out.end = model_.step(g, SnapKind::End, state, std::nan(""));
+  return out;
 }
 
-double ResourceBalance::production(ActionId producer, NumericVarId v, const ShortfallInput& input, double need) const {
-  const GroundAction& g = task_.actions[producer];
-  const std::optional<ContinuousStep> start = model_.step(g, SnapKind::Start, *input.state, std::nan(""));
-  if (!start) return 0.0;
-  double discrete = 0.0, rate = 0.0;
-  for (const LinearAssignment& e : start->effects) {
-    if (e.variable == v) discrete += std::max(0.0, constant_change(e));
-  }
-  if (g.durative) {
-    if (const std::optional<ContinuousStep> end = model_.step(g, SnapKind::End, *input.state, std::nan(""))) {
-      for (const LinearAssignment& e : end->effects) {
-        if (e.variable == v) discrete += std::max(0.0, constant_change(e));
-      }
+void ResourceBalance::ask(const Snaps& snaps, std::vector<Account>& accounts) {
+  auto ask_all = [&](const std::vector<LinearCondition>& conditions) {
+    for (const LinearCondition& c : conditions) {
+      const std::optional<SingleBound> b = single_bound(c);
+      if (!b || !b->lower) continue;
+      Account& account = accounts[b->variable];
+      account.need = std::max(account.need, b->threshold);
+      account.asked = true;
+    }
+  };
+  // A running action asks only its invariant any more.
+  if (snaps.start) ask_all(snaps.start->invariants);
+  if (snaps.running) return;
+  if (snaps.start) ask_all(snaps.start->conditions);
+  if (snaps.end) ask_all(snaps.end->conditions);
+}
+
+double ResourceBalance::discrete_gain(const Snaps& snaps, NumericVarId v) {
+  double gain = 0.0;
+  for (const std::optional<ContinuousStep>* step : {&snaps.start, &snaps.end}) {
+    if (!*step) continue;
+    for (const LinearAssignment& e : (*step)->effects) {
+      if (e.variable == v) gain += std::max(0.0, constant_change(e));
     }
   }
-  for (const auto& [w, r] : start->rates) {
+  return gain;
+}
+
+double ResourceBalance::continuous_gain(const Snaps& snaps, NumericVarId v, const SearchState& state,
+                                        double need) const {
+  if (!snaps.start) return 0.0;
+  const ContinuousStep& start = *snaps.start;
+  double rate = 0.0;
+  for (const auto& [w, r] : start.rates) {
     if (w == v) rate += r;
   }
-  if (rate <= 0.0) return discrete;
+  if (rate <= 0.0) return 0.0;
   // The producer's own over-all upper bound on v caps what it can reach.
   double cap = kInfinity;
-  for (const LinearCondition& c : start->invariants) {
+  for (const LinearCondition& c : start.invariants) {
     const std::optional<SingleBound> b = single_bound(c);
     if (b && b->variable == v && b->upper) cap = std::min(cap, b->threshold);
   }
-  const DurationWindow window = duration_window(g, Moment::Start, *input.state, &model_);
-  if (!window.valid) return discrete;
+  const DurationWindow window = duration_window(task_.actions[snaps.action], Moment::Start, state, &model_);
+  if (!window.valid) return 0.0;
   double longest = window.max;
-  for (const LinearCondition& c : start->conditions) {
+  for (const LinearCondition& c : start.conditions) {
     if (c.form.duration == 0.0) continue;
     // Optimistic: the producer starts at whichever level the plan can ask
     // of it that lets it run longest.
@@ -149,35 +171,31 @@ double ResourceBalance::production(ActionId producer, NumericVarId v, const Shor
     if (std::isfinite(cap)) bound = std::max(bound, duration_bound(c, v, cap));
     longest = std::min(longest, bound);
   }
-  double continuous = rate * longest;
-  if (std::isfinite(cap)) continuous = std::min(continuous, std::max(0.0, cap - need));
-  return discrete + continuous;
+  const double gain = rate * longest;
+  return std::isfinite(cap) ? std::min(gain, std::max(0.0, cap - need)) : gain;
 }
 
-void ResourceBalance::add_changes(ActionId a, double duration, bool running, const ShortfallInput& input,
+void ResourceBalance::add_changes(const Snaps& snaps, double duration, const ShortfallInput& input,
                                   std::vector<Account>& accounts) const {
-  const GroundAction& g = task_.actions[a];
-  const std::optional<ContinuousStep> start = model_.step(g, SnapKind::Start, *input.state, std::nan(""));
-  if (!start) return;
+  if (!snaps.start) return;
   auto count = [&](NumericVarId v, double change) {
     if (change < 0.0) accounts[v].consumed -= change;
     else accounts[v].produced += change;
   };
-  if (!running) {
-    for (const LinearAssignment& e : start->effects) count(e.variable, constant_change(e));
+  // A running action's start effects are in the state already.
+  if (!snaps.running) {
+    for (const LinearAssignment& e : snaps.start->effects) count(e.variable, constant_change(e));
   }
-  if (g.durative) {
-    if (const std::optional<ContinuousStep> end = model_.step(g, SnapKind::End, *input.state, std::nan(""))) {
-      for (const LinearAssignment& e : end->effects) count(e.variable, constant_change(e));
-    }
+  if (snaps.end) {
+    for (const LinearAssignment& e : snaps.end->effects) count(e.variable, constant_change(e));
   }
-  for (const auto& [v, r] : start->rates) {
+  for (const auto& [v, r] : snaps.start->rates) {
     if (!accounts[v].asked) continue;
     if (r > 0.0) {
-      accounts[v].produced += production(a, v, input, accounts[v].need);
+      accounts[v].produced += continuous_gain(snaps, v, *input.state, accounts[v].need);
     } else if (r < 0.0) {
-      const double span =
-          running ? std::max(0.0, input.plan->pending_end_time(a) - input.plan->changing_value_time(v)) : duration;
+      const double span = snaps.running ? input.plan->pending_end_time(snaps.action) - input.plan->changing_value_time(v)
+                                        : duration;
       accounts[v].consumed -= r * std::max(0.0, span);
     }
   }
@@ -185,30 +203,20 @@ void ResourceBalance::add_changes(ActionId a, double duration, bool running, con
 
 std::vector<ResourceShortfall> ResourceBalance::shortfalls(const ShortfallInput& input) const {
   const SearchState& state = *input.state;
+  std::vector<Snaps> involved;
+  for (ActionId a : input.relaxed_starts) involved.push_back(snaps_of(a, false, state));
+  for (const RunningAction& r : state.running()) involved.push_back(snaps_of(r.action, true, state));
   std::vector<Account> accounts(task_.numeric.size());
   // First what the plan asks of each variable, then what it does to them:
   // what a producer gives depends on the least level asked.
-  for (ActionId a : input.relaxed_starts) {
-    const GroundAction& g = task_.actions[a];
-    if (const std::optional<ContinuousStep> start = model_.step(g, SnapKind::Start, state, std::nan(""))) {
-      ask(start->conditions, accounts);
-      ask(start->invariants, accounts);
-    }
-    if (!g.durative) continue;
-    if (const std::optional<ContinuousStep> end = model_.step(g, SnapKind::End, state, std::nan(""))) {
-      ask(end->conditions, accounts);
-    }
+  for (const Snaps& snaps : involved) ask(snaps, accounts);
+  if (const std::optional<std::vector<LinearCondition>> goal = model_.goal(task_.goal, state)) {
+    ask(Snaps{kNoId, false, ContinuousStep{*goal, {}, {}, {}}, std::nullopt}, accounts);
   }
-  for (const RunningAction& r : state.running()) {
-    if (const std::optional<ContinuousStep> start = model_.step(task_.actions[r.action], SnapKind::Start, state,
-                                                                std::nan(""))) {
-      ask(start->invariants, accounts);
-    }
+  for (const Snaps& snaps : involved) {
+    const double duration = snaps.running ? 0.0 : std::max(0.0, input.min_duration(snaps.action));
+    add_changes(snaps, duration, input, accounts);
   }
-  if (const std::optional<std::vector<LinearCondition>> goal = model_.goal(task_.goal, state)) ask(*goal, accounts);
-
-  for (ActionId a : input.relaxed_starts) add_changes(a, std::max(0.0, input.min_duration(a)), false, input, accounts);
-  for (const RunningAction& r : state.running()) add_changes(r.action, 0.0, true, input, accounts);
 
   std::vector<ResourceShortfall> out;
   for (NumericVarId v = 0; v < accounts.size(); ++v) {
@@ -224,7 +232,8 @@ std::vector<ResourceShortfall> ResourceBalance::shortfalls(const ShortfallInput&
     std::vector<ActionId> producers;
     for (ActionId w : model_.writers(v)) {
       if (state.is_running(w)) continue;
-      const double given = production(w, v, input, account.need);
+      const Snaps snaps = snaps_of(w, false, state);
+      const double given = discrete_gain(snaps, v) + continuous_gain(snaps, v, state, account.need);
       if (!(given > 1e-9)) continue;
       best = std::max(best, given);
       producers.push_back(w);

@@ -25,6 +25,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "planner/continuous_change.h"
@@ -73,10 +74,20 @@ class ResourceBalance {
     double produced = 0.0;
     bool asked = false;
   };
-  void ask(const std::vector<LinearCondition>& conditions, std::vector<Account>& accounts) const;
-  // The most one start of `producer` can add to v; 0 when it does not increase it.
-  double production(ActionId producer, NumericVarId v, const ShortfallInput& input, double need) const;
-  void add_changes(ActionId a, double duration, bool running, const ShortfallInput& input,
+  // What an action asks of and does to the changing variables, read once
+  // per evaluation: its start's and (durative) its end's continuous parts.
+  struct Snaps {
+    ActionId action = kNoId;
+    bool running = false;
+    std::optional<ContinuousStep> start, end;
+  };
+  Snaps snaps_of(ActionId a, bool running, const SearchState& state) const;
+  static void ask(const Snaps& snaps, std::vector<Account>& accounts);
+  // What one application adds to v at its snaps, and by its rate (at most
+  // its longest duration, from the least level asked); 0 for a decrease.
+  static double discrete_gain(const Snaps& snaps, NumericVarId v);
+  double continuous_gain(const Snaps& snaps, NumericVarId v, const SearchState& state, double need) const;
+  void add_changes(const Snaps& snaps, double duration, const ShortfallInput& input,
                    std::vector<Account>& accounts) const;
 
   const GroundTask& task_;

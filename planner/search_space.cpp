@@ -1,5 +1,7 @@
 #include "planner/search_space.h"
 
+#include <algorithm>
+
 #include "planner/evaluation.h"
 
 namespace alplan {
@@ -121,34 +123,20 @@ void SearchSpace::set_root_heuristic(TemporalRpg& heuristic, SearchStatistics& s
 }
 
 bool SearchSpace::known(const Child& child, SearchStatistics& stats) const {
-  auto it = seen_.find(&child.node.state);
+  const auto it = seen_.find(&child.node.state);
   if (it == seen_.end()) return false;
-  for (NodeId stored : it->second) {
-    if (dominated(child.node, stored)) {
-      ++stats.duplicates;
-      return true;
-    }
-  }
-  return false;
+  const bool duplicate =
+      std::any_of(it->second.begin(), it->second.end(), [&](NodeId stored) { return dominated(child.node, stored); });
+  if (duplicate) ++stats.duplicates;
+  return duplicate;
 }
 
 std::optional<NodeId> SearchSpace::insert(Child child, SearchStatistics& stats) {
-  auto it = seen_.find(&child.node.state);
-  if (it != seen_.end()) {
-    for (NodeId stored : it->second) {
-      if (dominated(child.node, stored)) {
-        ++stats.duplicates;
-        return std::nullopt;
-      }
-    }
-  }
+  if (known(child, stats)) return std::nullopt;
   nodes_.push_back(std::move(child.node));
   const auto id = static_cast<NodeId>(nodes_.size() - 1);
-  if (it != seen_.end()) {
-    it->second.push_back(id);
-  } else {
-    seen_[&nodes_.back().state].push_back(id);
-  }
+  // An equal state stored before keeps its key; this node joins its list.
+  seen_[&nodes_.back().state].push_back(id);
   return id;
 }
 

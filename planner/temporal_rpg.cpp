@@ -74,6 +74,9 @@ class TemporalRpg::Exploration {
   void reach(FactId f, double time, Achiever achiever, double cost);
   double cost_of(const std::vector<FactId>& facts);
   void process(FactId f, double time);
+  // Takes the earliest event off the queue and processes it; false when it
+  // was stale.
+  bool process_next();
   void try_start(ActionId a, double time);
   void try_end(ActionId a);
   void apply_numeric(const std::vector<const NumericAssignment*>& effects, ActionId source);
@@ -98,9 +101,9 @@ class TemporalRpg::Exploration {
   Stamped<std::uint32_t> start_count_, end_count_, axiom_count_;
   Stamped<char> processed_, parked_start_, parked_end_, counted_start_, counted_end_;
   std::vector<Interval> bounds_;
-  // A changing variable's greatest value now, where the bounds asked for it.
+  // A changing variable's greatest value now where the bounds asked the
+  // schedule for it, NaN elsewhere.
   std::vector<double> greatest_now_;
-  std::vector<char> greatest_known_;
   std::optional<ResourceBalance> balance_;
   std::vector<NumericVarId> short_variables_;  // the last evaluation's, whose producers it counted
   std::vector<ActionId> supporter_;  // first action that widened each variable
@@ -146,7 +149,6 @@ TemporalRpg::TemporalRpg(const TaskIndex& index, TemporalRpgOptions options, std
   x.axiom_count_.resize(task.axioms.size(), 0);
   x.bounds_.resize(task.numeric.size());
   x.greatest_now_.resize(task.numeric.size());
-  x.greatest_known_.resize(task.numeric.size());
   x.supporter_.resize(task.numeric.size(), kNoId);
   x.parked_on_.resize(facts);
   x.started_at_.resize(actions, 0.0);
@@ -458,6 +460,16 @@ void TemporalRpg::Exploration::try_end(ActionId a) {
   apply_numeric(r.end_numeric_effects, a);
 }
 
+bool TemporalRpg::Exploration::process_next() {
+  const Event e = queue_.top();
+  queue_.pop();
+  // Stale (the fact was reached earlier since) or seen already.
+  if (e.time > fact_time_.at(e.fact, generation_) || processed_.at(e.fact, generation_)) return false;
+  processed_.at(e.fact, generation_) = 1;
+  process(e.fact, e.time);
+  return true;
+}
+
 void TemporalRpg::Exploration::process(FactId f, double time) {
   for (ActionId a : rpg_.start_watchers_[f]) {
     if (--start_count_.at(a, generation_) == 0) try_start(a, time);
@@ -498,16 +510,13 @@ HeuristicValue TemporalRpg::Exploration::run(const SearchState& state, const Par
   for (NumericVarId v = 0; v < bounds_.size(); ++v) {
     const double x = state.value(v);
     bounds_[v] = std::isnan(x) ? Interval{kInfinity, -kInfinity} : Interval{x, x};
-    greatest_known_[v] = 0;
+    greatest_now_[v] = std::nan("");
     if (continuous_ && continuous_->changing(v) && !std::isnan(x)) {
       const ContinuousModel::NeededBounds needed = continuous_->needed_bounds(v, state);
       if (needed.least || needed.greatest) {
         const auto [lo, hi] = plan.changing_bounds(v, x, needed.least, needed.greatest);
         if (lo <= hi) bounds_[v] = Interval{lo, hi};
-        if (balance_ && lo <= hi && needed.greatest) {
-          greatest_now_[v] = hi;
-          greatest_known_[v] = 1;
-        }
+        if (lo <= hi && needed.greatest) greatest_now_[v] = hi;
       }
     }
     supporter_[v] = kNoId;
@@ -543,12 +552,9 @@ HeuristicValue TemporalRpg::Exploration::run(const SearchState& state, const Par
   double goal_time = 0.0;
   bool reached = goals_reached();
   while (!queue_.empty() && !reached) {
-    const Event e = queue_.top();
-    queue_.pop();
-    if (e.time > fact_time_.at(e.fact, generation_) || processed_.at(e.fact, generation_)) continue;
-    processed_.at(e.fact, generation_) = 1;
-    process(e.fact, e.time);
-    goal_time = e.time;
+    const double time = queue_.top().time;
+    if (!process_next()) continue;
+    goal_time = time;
     reached = goals_reached();
   }
   if (!reached) return HeuristicValue{};
@@ -557,15 +563,6 @@ HeuristicValue TemporalRpg::Exploration::run(const SearchState& state, const Par
   return value;
 }
 
-// A running action whose over-all condition on changing values fails at
-// its end unless something changes them first: a dead end when no action
-// that changes them can start (in the relaxation) before that end, nor a
-// running one end. The exploration goes on past the goal to see. (It takes
-// the running action's end at its earliest; a plan that delayed the end
-// to let help arrive is given up, as POPF gives up other orderings.)
-// Where help can arrive, the relaxed plan did not count it (the interval
-// relaxation sees no shortfall): one more step per such action, and the
-// helpers that can start now are helpful, so that hill-climbing tries them.
 // Producers the relaxed plan so far falls short of (resource_shortfall.h):
 // for each variable, the cheapest producer the exploration reaches (it goes
 // on past the goals until one starts) joins the relaxed plan with its
@@ -582,7 +579,7 @@ std::vector<ActionId> TemporalRpg::Exploration::shortfall_producers(const Search
   input.greatest = [&](NumericVarId v) {
     const double x = state.value(v);
     if (std::isnan(x)) return kInfinity;
-    if (greatest_known_[v]) return greatest_now_[v];
+    if (!std::isnan(greatest_now_[v])) return greatest_now_[v];
     return plan_->changing_bounds(v, x, false, true).second;
   };
   std::vector<ActionId> seeds;
@@ -597,12 +594,7 @@ std::vector<ActionId> TemporalRpg::Exploration::shortfall_producers(const Search
     };
     ActionId producer = cheapest();
     while (producer == kNoId && !queue_.empty()) {
-      const Event e = queue_.top();
-      queue_.pop();
-      if (e.time > fact_time_.at(e.fact, generation_) || processed_.at(e.fact, generation_)) continue;
-      processed_.at(e.fact, generation_) = 1;
-      process(e.fact, e.time);
-      producer = cheapest();
+      if (process_next()) producer = cheapest();
     }
     if (producer == kNoId) continue;  // none reachable: the search must find out
     short_variables_.push_back(s.variable);
@@ -614,18 +606,22 @@ std::vector<ActionId> TemporalRpg::Exploration::shortfall_producers(const Search
   return seeds;
 }
 
+// A running action whose over-all condition on changing values fails at
+// its end unless something changes them first: a dead end when no action
+// that changes them can start (in the relaxation) before that end, nor a
+// running one end. The exploration goes on past the goal to see. (It takes
+// the running action's end at its earliest; a plan that delayed the end
+// to let help arrive is given up, as POPF gives up other orderings.)
+// Where help can arrive and the resource balance counted none for those
+// variables, the relaxed plan did not count it either (the interval
+// relaxation sees no shortfall): one more step per such action. The helpers
+// that can start now are helpful, so that hill-climbing tries them.
 bool TemporalRpg::Exploration::continuous_dead_end(HeuristicValue& value) {
   const std::vector<std::pair<ActionId, std::vector<NumericVarId>>> failing = plan_->invariants_failing_at_end();
   if (failing.empty()) return false;
   double horizon = 0.0;
   for (const auto& [action, variables] : failing) horizon = std::max(horizon, plan_->pending_end_time(action));
-  while (!queue_.empty() && queue_.top().time < horizon) {
-    const Event e = queue_.top();
-    queue_.pop();
-    if (e.time > fact_time_.at(e.fact, generation_) || processed_.at(e.fact, generation_)) continue;
-    processed_.at(e.fact, generation_) = 1;
-    process(e.fact, e.time);
-  }
+  while (!queue_.empty() && queue_.top().time < horizon) process_next();
   const ContinuousModel& model = *continuous_;
   const GroundTask& task = rpg_.index_.task();
   for (const auto& [action, variables] : failing) {

@@ -8,20 +8,6 @@
 #include "planner/grounder.h"
 
 namespace alplan::repair {
-namespace {
-
-pddl::Atom atom_of(const AtomKey& key) {
-  pddl::Atom atom;
-  atom.name = key.front();
-  for (std::size_t i = 1; i < key.size(); ++i) {
-    pddl::Term t;
-    t.name = key[i];
-    atom.args.push_back(t);
-  }
-  return atom;
-}
-
-}  // namespace
 
 std::optional<std::string> object_type(const pddl::Problem& problem, const std::string& object) {
   for (const pddl::TypedName& o : problem.objects) {

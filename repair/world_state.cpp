@@ -6,6 +6,17 @@
 
 namespace alplan::repair {
 
+pddl::Atom atom_of(const AtomKey& key) {
+  pddl::Atom atom;
+  atom.name = key.front();
+  for (std::size_t i = 1; i < key.size(); ++i) {
+    pddl::Term t;
+    t.name = key[i];
+    atom.args.push_back(t);
+  }
+  return atom;
+}
+
 std::string to_string(const AtomKey& key) {
   std::string out = "(";
   for (std::size_t i = 0; i < key.size(); ++i) out += (i ? " " : "") + key[i];

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "pddl_parser/ast.h"
 #include "planner/explicit_state.h"
 #include "planner/ground_task.h"
 
@@ -20,6 +21,8 @@ namespace alplan::repair {
 using AtomKey = std::vector<std::string>;
 
 std::string to_string(const AtomKey& key);  // "(be robot1 kitchen1)"
+// The atom (or function term) a key names, as the parser's AST holds it.
+pddl::Atom atom_of(const AtomKey& key);
 
 struct WorldState {
   double time = 0.0;
