@@ -39,6 +39,7 @@ struct PlanOptions {
   double weight = 3.0;
   std::string order = PlannerOptions{}.order;
   bool deferred_evaluation = PlannerOptions{}.deferred_evaluation;
+  bool type_exploration = PlannerOptions{}.type_exploration;
   std::optional<std::uint64_t> ehc_expansions;
   double ehc_time_share = PlannerOptions{}.ehc_time_share;
   bool prune_irrelevant = PlannerOptions{}.prune_irrelevant;
@@ -150,6 +151,7 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
   planner_options.weight = options.weight;
   planner_options.order = options.order;
   planner_options.deferred_evaluation = options.deferred_evaluation;
+  planner_options.type_exploration = options.type_exploration;
   if (options.ehc_expansions) planner_options.ehc_expansions = *options.ehc_expansions;
   planner_options.ehc_time_share = options.ehc_time_share;
   planner_options.prune_irrelevant = options.prune_irrelevant;
@@ -262,6 +264,8 @@ void add_plan_command(CLI::App& app, int& exit_code) {
       ->check(CLI::Range(0.0, 1.0));
   cmd->add_flag("--deferred", options->deferred_evaluation,
                 "GBFS and wastar evaluate a node when they expand it, not when they generate it");
+  cmd->add_flag("--type-exploration,!--no-type-exploration", options->type_exploration,
+                "GBFS also expands every fourth node drawn at random by (h, g) (Xie et al. 2014; seeded, reproducible)");
   cmd->add_flag("!--no-relevance", options->prune_irrelevant,
                 "Search every ground action, not only those that can contribute to the goal");
   cmd->add_flag("!--no-resource-balance", options->resource_balance,

@@ -3,6 +3,7 @@
 #include <unordered_map>
 
 #include "planner/search_engine.h"
+#include "planner/type_bucket_queue.h"
 
 namespace alplan {
 namespace {
@@ -25,11 +26,19 @@ class BestFirstSearch : public SearchEngine {
   BestFirstSearch(SearchSpace& space, TemporalRpg& heuristic, BestFirstOptions options)
       : space_(space), heuristic_(heuristic), options_(std::move(options)),
         // Ordered by the metric, a goal must be known when it is queued.
-        deferred_(options_.deferred && !by_metric()) {}
+        deferred_(options_.deferred && !by_metric()),
+        // Ordered by the metric, a node drawn at random could end the search
+        // with a plan the main queue would have ranked behind a cheaper one.
+        type_exploration_(options_.type_exploration && !by_metric()),
+        types_(options_.seed) {}
 
   std::string name() const override {
-    const std::string deferred = deferred_ ? ", deferred" : "";
-    if (options_.weight == 0) return deferred.empty() ? "gbfs" : "gbfs (deferred)";
+    const std::string deferred = std::string(deferred_ ? ", deferred" : "") + (type_exploration_ ? ", type-based" : "");
+    if (options_.weight == 0) {
+      std::string extras = deferred_ ? "deferred" : "";
+      if (type_exploration_) extras += std::string(extras.empty() ? "" : ", ") + "type-based";
+      return extras.empty() ? "gbfs" : "gbfs (" + extras + ")";
+    }
     return "wastar (w=" + std::to_string(options_.weight) + (options_.metric ? ", metric" : "") + deferred + ")";
   }
 
@@ -133,19 +142,40 @@ class BestFirstSearch : public SearchEngine {
     const Entry entry{f, n.h, order_++, id};
     open_.push(entry);
     if (preferred && options_.preferred_queue) preferred_.push(entry);
+    if (type_exploration_ && n.h != std::numeric_limits<double>::infinity()) types_.push(n.h, n.depth, id);
+  }
+
+  enum class Queue { Preferred, Open, Types };
+
+  // The helpful queue twice for every turn of the main one (and of the
+  // type-based one, when there is one); an empty queue passes its turn on.
+  std::optional<NodeId> take(Queue queue) {
+    if (queue == Queue::Types) return types_.pop();
+    OpenList& q = queue == Queue::Preferred ? preferred_ : open_;
+    if (q.empty()) return std::nullopt;
+    const NodeId id = q.top().node;
+    q.pop();
+    return id;
+  }
+
+  std::optional<NodeId> next_from_some_queue() {
+    static constexpr Queue kTurns[] = {Queue::Preferred, Queue::Preferred, Queue::Open, Queue::Types};
+    const std::size_t turns = type_exploration_ ? 4 : 3;
+    for (std::size_t k = 0; k < turns; ++k) {
+      if (std::optional<NodeId> id = take(kTurns[(turn_ + k) % turns])) {
+        turn_ += k + 1;
+        return id;
+      }
+    }
+    return std::nullopt;
   }
 
   std::optional<NodeId> pop() {
-    // Alternate between the queues, preferring the helpful one 2:1; a node
-    // may sit in both and is expanded once.
-    while (!open_.empty() || !preferred_.empty()) {
-      const bool take_preferred = !preferred_.empty() && (open_.empty() || turn_++ % 3 != 2);
-      OpenList& q = take_preferred ? preferred_ : open_;
-      const NodeId id = q.top().node;
-      q.pop();
-      if (expanded_.size() <= id) expanded_.resize(id + 1, false);
-      if (expanded_[id]) continue;
-      expanded_[id] = true;
+    // A node may sit in several queues and is expanded once.
+    while (std::optional<NodeId> id = next_from_some_queue()) {
+      if (expanded_.size() <= *id) expanded_.resize(*id + 1, false);
+      if (expanded_[*id]) continue;
+      expanded_[*id] = true;
       return id;
     }
     return std::nullopt;
@@ -155,8 +185,10 @@ class BestFirstSearch : public SearchEngine {
   TemporalRpg& heuristic_;
   BestFirstOptions options_;
   bool deferred_;
+  bool type_exploration_;
   bool started_ = false;
   OpenList open_, preferred_;
+  TypeBucketQueue types_;
   std::vector<bool> expanded_;
   std::unordered_map<NodeId, Solution> goals_;  // goals generated, not yet popped (metric order)
   std::uint64_t order_ = 0;

@@ -139,6 +139,9 @@ PhaseOutcome run_phase(const Phase& phase, const TaskIndex& index, const SearchS
     bfs.weight = weight;
     // GBFS and EHC stay greedy on steps.
     if (kind != "wastar" || !phase.metric_order) bfs.metric = nullptr;
+    // Type-based exploration is a greedy search's escape from plateaus and
+    // hidden dead ends (Xie et al. 2014); weighted A* keeps its order.
+    if (kind != "gbfs") bfs.type_exploration = false;
     engines.push_back(kind == "ehc" ? make_enforced_hill_climbing(*spaces.back(), heuristic, true, base.deadline)
                                     : make_best_first_search(*spaces.back(), heuristic, bfs));
   }
@@ -392,6 +395,7 @@ PlannerResult Planner::search_from(const PlanningStart& start, const std::functi
     bfs.deadline = deadline;
     bfs.metric = order_metric;
     bfs.deferred = options_.deferred_evaluation;
+    bfs.type_exploration = options_.type_exploration;
     if (can_prune && !result.plans.empty()) {
       bfs.prune = [&, this](const SearchNode& node) {
         if (!task_->metric) return static_cast<double>(node.depth) >= best_value;

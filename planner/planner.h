@@ -69,6 +69,10 @@ struct PlannerOptions {
   // GBFS and weighted A* evaluate a node when they expand it, under its
   // parent's h until then (search_engine.h); EHC is unchanged.
   bool deferred_evaluation = false;
+  // GBFS also expands every fourth node from a queue drawing at random by
+  // (h, g) (planner/type_bucket_queue.h); the draws are seeded, so a run is
+  // reproducible.
+  bool type_exploration = false;
   // With continuous change: the heuristic counts the producers (recharges,
   // refuels) the relaxed plan's consumption needs (planner/resource_shortfall.h).
   bool resource_balance = true;

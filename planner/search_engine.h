@@ -4,6 +4,7 @@
 #pragma once
 
 #include <chrono>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -56,6 +57,10 @@ struct BestFirstOptions {
   // Evaluate a node when it is expanded, not when it is generated (not
   // with a metric order, whose goal test needs h at generation).
   bool deferred = false;
+  // A third queue drawing nodes at random by type (h, g), every fourth
+  // expansion (planner/type_bucket_queue.h); not with a metric order.
+  bool type_exploration = false;
+  std::uint64_t seed = 0;  // the type-based queue's draws
   NodeBound prune;
   SearchDeadline deadline;
 };
