@@ -40,6 +40,7 @@ struct PlanOptions {
   std::string order = PlannerOptions{}.order;
   bool deferred_evaluation = PlannerOptions{}.deferred_evaluation;
   bool type_exploration = PlannerOptions{}.type_exploration;
+  bool fallback_deferred = PlannerOptions{}.fallback_deferred;
   std::optional<std::uint64_t> ehc_expansions;
   double ehc_time_share = PlannerOptions{}.ehc_time_share;
   bool prune_irrelevant = PlannerOptions{}.prune_irrelevant;
@@ -152,6 +153,7 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
   planner_options.order = options.order;
   planner_options.deferred_evaluation = options.deferred_evaluation;
   planner_options.type_exploration = options.type_exploration;
+  planner_options.fallback_deferred = options.fallback_deferred;
   if (options.ehc_expansions) planner_options.ehc_expansions = *options.ehc_expansions;
   planner_options.ehc_time_share = options.ehc_time_share;
   planner_options.prune_irrelevant = options.prune_irrelevant;
@@ -266,6 +268,8 @@ void add_plan_command(CLI::App& app, int& exit_code) {
                 "GBFS and wastar evaluate a node when they expand it, not when they generate it");
   cmd->add_flag("--type-exploration,!--no-type-exploration", options->type_exploration,
                 "GBFS also expands every fourth node drawn at random by (h, g) (Xie et al. 2014; seeded, reproducible)");
+  cmd->add_flag("--fallback-deferred,!--no-fallback-deferred", options->fallback_deferred,
+                "EHC's fallback adds a GBFS with deferred evaluation to GBFS and wastar's turns");
   cmd->add_flag("!--no-relevance", options->prune_irrelevant,
                 "Search every ground action, not only those that can contribute to the goal");
   cmd->add_flag("!--no-resource-balance", options->resource_balance,

@@ -93,7 +93,9 @@ ValidationResult validate_from(const GroundTask& task, const PlanningStart& star
 // each (a portfolio in one thread: GBFS and weighted A* fail on different
 // problems, and neither knows in advance which it will be).
 struct Phase {
-  std::vector<std::pair<std::string, double>> engines;  // kind, weight
+  // kind (ehc, gbfs, gbfs-deferred: GBFS evaluating nodes when it expands
+  // them, wastar), weight
+  std::vector<std::pair<std::string, double>> engines;
   std::uint64_t expansion_budget = 0;                    // 0: none
   // Whether weighted A* here may order by the metric. Not in EHC's fallback:
   // it exists to find a first plan at all, and there the metric (a makespan
@@ -141,7 +143,9 @@ PhaseOutcome run_phase(const Phase& phase, const TaskIndex& index, const SearchS
     if (kind != "wastar" || !phase.metric_order) bfs.metric = nullptr;
     // Type-based exploration is a greedy search's escape from plateaus and
     // hidden dead ends (Xie et al. 2014); weighted A* keeps its order.
-    if (kind != "gbfs") bfs.type_exploration = false;
+    const bool greedy = kind == "gbfs" || kind == "gbfs-deferred";
+    if (!greedy) bfs.type_exploration = false;
+    if (kind == "gbfs-deferred") bfs.deferred = true;
     engines.push_back(kind == "ehc" ? make_enforced_hill_climbing(*spaces.back(), heuristic, true, base.deadline)
                                     : make_best_first_search(*spaces.back(), heuristic, bfs));
   }
@@ -371,6 +375,10 @@ PlannerResult Planner::search_from(const PlanningStart& start, const std::functi
   std::vector<Phase> pipeline;
   if (options_.search == "ehc") {
     pipeline = {{{{"ehc", 0.0}}, options_.ehc_expansions}, {{{"gbfs", 0.0}, {"wastar", options_.weight}}, 0, false}};
+    // Deferred evaluation wins where children are many and alike
+    // (satellite, storage 2014) and loses where h must be fresh; as a third
+    // engine taking turns it costs the others a third of the steps.
+    if (options_.fallback_deferred) pipeline[1].engines.insert(pipeline[1].engines.begin() + 1, {"gbfs-deferred", 0.0});
     // EHC's children are scheduled against a plan that grows with its
     // climb, so its expansions can slow until the budget in expansions is
     // never spent and the fallback never runs (depots, benchmarks/README.md).

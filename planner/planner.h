@@ -73,6 +73,9 @@ struct PlannerOptions {
   // (h, g) (planner/type_bucket_queue.h); the draws are seeded, so a run is
   // reproducible.
   bool type_exploration = false;
+  // EHC's fallback runs a GBFS with deferred evaluation as well, the three
+  // engines taking turns.
+  bool fallback_deferred = false;
   // With continuous change: the heuristic counts the producers (recharges,
   // refuels) the relaxed plan's consumption needs (planner/resource_shortfall.h).
   bool resource_balance = true;

@@ -475,6 +475,34 @@ TEST_CASE("type-based exploration: valid plans, the same run twice, a different 
   }
 }
 
+TEST_CASE("EHC's fallback with a deferred GBFS among its engines finds valid plans, the same twice") {
+  const std::string base = test::shared_dir() + "/benchmarks/ipc/";
+  for (const std::string problem : {"ipc-2004/satellite-time-time-windows-strips/instances/instance-1.pddl",
+                                    "ipc-2011/match-cellar-temporal-satisficing/instances/instance-1.pddl"}) {
+    INFO(problem);
+    const std::string dir = problem.substr(0, problem.find("/instances/"));
+    auto task = ground(test::load_task(base + dir + "/domain.pddl", base + problem).normalized);
+    PlannerOptions two;
+    two.ehc_expansions = 1;  // straight to the fallback
+    two.type_exploration = true;
+    PlannerOptions three = two;
+    three.fallback_deferred = true;
+    const PlannerResult a = Planner(task, two).plan();
+    const PlannerResult b = Planner(task, three).plan();
+    const PlannerResult c = Planner(task, three).plan();
+    REQUIRE(a.status == Status::Solved);
+    REQUIRE(b.status == Status::Solved);
+    CHECK(b.best()->validation.valid);
+    CHECK(b.best()->text == c.best()->text);
+    // The deferred engine takes every third step: fewer evaluations per
+    // expansion in all.
+    const auto per_expansion = [](const PlannerResult& r) {
+      return static_cast<double>(r.statistics.evaluated) / static_cast<double>(r.statistics.expanded);
+    };
+    CHECK(per_expansion(b) < per_expansion(a));
+  }
+}
+
 TEST_CASE("type-based exploration leaves the dining philosophers' plateau that GBFS searches through") {
   // Plain GBFS expands 26,928 nodes here (about x15 per philosopher;
   // benchmarks/README.md), with type-based exploration 1,175.
