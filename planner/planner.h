@@ -72,10 +72,11 @@ struct PlannerOptions {
   // GBFS also expands every fourth node from a queue drawing at random by
   // (h, g) (planner/type_bucket_queue.h); the draws are seeded, so a run is
   // reproducible.
-  bool type_exploration = false;
+  bool type_exploration = true;
   // EHC's fallback runs a GBFS with deferred evaluation as well, the three
-  // engines taking turns.
-  bool fallback_deferred = false;
+  // engines taking turns. Both on since the whole IPC suite gained with them
+  // and lost nothing (benchmarks/README.md).
+  bool fallback_deferred = true;
   // With continuous change: the heuristic counts the producers (recharges,
   // refuels) the relaxed plan's consumption needs (planner/resource_shortfall.h).
   bool resource_balance = true;

@@ -457,6 +457,7 @@ TEST_CASE("type-based exploration: valid plans, the same run twice, a different 
     auto task = ground(test::load_task(base + dir + "/domain.pddl", base + problem).normalized);
     PlannerOptions plain;
     plain.search = "gbfs";
+    plain.type_exploration = false;
     PlannerOptions typed = plain;
     typed.type_exploration = true;
     const PlannerResult a = Planner(task, plain).plan();
@@ -485,6 +486,7 @@ TEST_CASE("EHC's fallback with a deferred GBFS among its engines finds valid pla
     PlannerOptions two;
     two.ehc_expansions = 1;  // straight to the fallback
     two.type_exploration = true;
+    two.fallback_deferred = false;
     PlannerOptions three = two;
     three.fallback_deferred = true;
     const PlannerResult a = Planner(task, two).plan();
