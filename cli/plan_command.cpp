@@ -162,6 +162,13 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
   planner_options.epsilon = options.epsilon;
   planner_options.reserve_planning_time = options.reserve_planning_time;
   planner_options.time_limit = std::max(0.0, options.time_limit - grounding);
+  // Under an address-space limit (ours or the caller's, as `bench planners`
+  // sets it) the search stops at 90% of it: a refused allocation would
+  // unwind and free the search node by node, seconds past the time limit.
+  rlimit address_space{};
+  if (getrlimit(RLIMIT_AS, &address_space) == 0 && address_space.rlim_cur != RLIM_INFINITY) {
+    planner_options.address_space_limit = static_cast<std::size_t>(0.9 * static_cast<double>(address_space.rlim_cur));
+  }
   auto on_plan = [&](const FoundPlan& p) {
     if (options.json) return;
     std::cout << "; plan found after " << readable(p.seconds) << " s by " << p.engine << ", makespan "

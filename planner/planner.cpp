@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "planner/address_space.h"
 #include "planner/evaluation.h"
 #include "planner/happening_executor.h"
 #include "planner/linear_metric.h"
@@ -167,7 +168,16 @@ PhaseOutcome run_phase(const Phase& phase, const TaskIndex& index, const SearchS
         nodes += spaces[e]->size();
         expanded += engines[e]->statistics().expanded;
       }
-      if (nodes > options.node_limit) break;
+      // A search stopped by a limit keeps its memory (freed when the
+      // process ends), whichever limit it was.
+      if (nodes > options.node_limit) {
+        stopped = true;
+        break;
+      }
+      if (options.address_space_limit && (steps & 255) == 0 && address_space_bytes() > options.address_space_limit) {
+        stopped = true;
+        break;
+      }
       if ((phase.expansion_budget && expanded > phase.expansion_budget) || since(began) > phase.time_budget) {
         outcome.budget_spent = true;
         break;
@@ -481,7 +491,7 @@ PlannerResult Planner::search_from(const PlanningStart& start, const std::functi
     result.message = "the search space is exhausted without a plan; with deadlines this is not a proof";
   } else {
     result.status = PlannerResult::Status::LimitReached;
-    result.message = "the time or node limit was reached before a plan was found";
+    result.message = "the time, node or memory limit was reached before a plan was found";
   }
   return result;
 }

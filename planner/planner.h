@@ -49,6 +49,10 @@ struct PlannerOptions {
   // heuristic evaluation, so a large task overruns it by one evaluation.
   double time_limit = std::numeric_limits<double>::infinity();
   std::size_t node_limit = std::numeric_limits<std::size_t>::max();
+  // Bytes of address space (planner/address_space.h) past which the search
+  // stops as at a limit, its memory handed over unfreed; 0: none. Set below
+  // RLIMIT_AS, so a search ends before an allocation is refused.
+  std::size_t address_space_limit = 0;
   bool anytime = false;            // keep improving after the first plan
   // Anytime mode runs weighted A* with weights 5, 3, 2, 1.5 and 1 in turn,
   // each bounded by the best plan so far, down to this weight (the lower

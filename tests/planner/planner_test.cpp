@@ -2,9 +2,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <chrono>
 #include <limits>
 #include <thread>
 
+#include "planner/address_space.h"
 #include "planner/grounder.h"
 #include "tests/support/task_loader.h"
 #include "tests/support/test_paths.h"
@@ -395,6 +397,25 @@ TEST_CASE("a search the time limit stops is handed over, not freed, so the limit
 // by a node limit (between expansions, so every expansion scheduled all its
 // children), on a problem rich in duplicates. When duplicates were found
 // only after they had been evaluated, this failed.
+TEST_CASE("a search stops below its address-space limit and hands its memory over unfreed") {
+  const std::string base = test::shared_dir() + "/benchmarks/ipc/ipc-2006/pathways-metric-time/";
+  auto task = ground(test::load_task(base + "domain.pddl", base + "instances/instance-2.pddl").normalized);
+  const std::size_t before = address_space_bytes();
+  REQUIRE(before > 0);
+  PlannerOptions options;
+  options.time_limit = 120.0;
+  options.address_space_limit = before + (std::size_t{96} << 20);
+  const auto began = std::chrono::steady_clock::now();
+  const PlannerResult r = Planner(task, options).plan();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+  // Pathways 2 is not solved in 120 s (its space is infinite) and grows by
+  // tens of MB a second: only the memory limit can stop it well before.
+  REQUIRE(r.status == Status::LimitReached);
+  CHECK(seconds < 100.0);
+  CHECK(r.search_memory != nullptr);
+  CHECK(address_space_bytes() < options.address_space_limit + (std::size_t{64} << 20));
+}
+
 TEST_CASE("duplicates are recognised before they are evaluated") {
   const std::string base = test::shared_dir() + "/benchmarks/ipc/ipc-2014/floor-tile-temporal-satisficing/";
   auto task = ground(test::load_task(base + "domain.pddl", base + "instances/instance-1.pddl").normalized);
