@@ -398,6 +398,13 @@ TEST_CASE("a search the time limit stops is handed over, not freed, so the limit
 // children), on a problem rich in duplicates. When duplicates were found
 // only after they had been evaluated, this failed.
 TEST_CASE("a search stops below its address-space limit and hands its memory over unfreed") {
+#if defined(__SANITIZE_ADDRESS__)
+  // AddressSanitizer reserves its heap's address space when the process
+  // starts, so the mapped size does not grow with the search (and RLIMIT_AS
+  // cannot be used under it at all): nothing here to measure.
+  WARN("not measurable under AddressSanitizer");
+  return;
+#endif
   const std::string base = test::shared_dir() + "/benchmarks/ipc/ipc-2006/pathways-metric-time/";
   auto task = ground(test::load_task(base + "domain.pddl", base + "instances/instance-2.pddl").normalized);
   const std::size_t before = address_space_bytes();
