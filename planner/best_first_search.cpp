@@ -33,13 +33,11 @@ class BestFirstSearch : public SearchEngine {
         types_(options_.seed) {}
 
   std::string name() const override {
-    const std::string deferred = std::string(deferred_ ? ", deferred" : "") + (type_exploration_ ? ", type-based" : "");
-    if (options_.weight == 0) {
-      std::string extras = deferred_ ? "deferred" : "";
-      if (type_exploration_) extras += std::string(extras.empty() ? "" : ", ") + "type-based";
-      return extras.empty() ? "gbfs" : "gbfs (" + extras + ")";
-    }
-    return "wastar (w=" + std::to_string(options_.weight) + (options_.metric ? ", metric" : "") + deferred + ")";
+    std::string traits;  // ", deferred, type-based"
+    if (deferred_) traits += ", deferred";
+    if (type_exploration_) traits += ", type-based";
+    if (options_.weight == 0) return traits.empty() ? "gbfs" : "gbfs (" + traits.substr(2) + ")";
+    return "wastar (w=" + std::to_string(options_.weight) + (options_.metric ? ", metric" : "") + traits + ")";
   }
 
   SearchStatus step() override {

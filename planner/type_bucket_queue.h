@@ -3,7 +3,7 @@
 //
 // Nodes are grouped by their type, the pair (h, g); a pop draws a type
 // uniformly among the non-empty ones, then a node uniformly within it. A
-// greedy search that takes every other node from here still follows h, but
+// greedy search that takes every fourth node from here still follows h, but
 // also samples regions h ranks low: the states below a dead end the
 // relaxation cannot see (storage, sokoban) or a long plateau share a few
 // types, so however many nodes they hold they get no more draws than a type

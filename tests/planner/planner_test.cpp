@@ -20,6 +20,14 @@ std::shared_ptr<const GroundTask> ground_text(const std::string& domain, const s
   return ground(test::load_task_text(domain, problem).normalized);
 }
 
+// An IPC problem of the shared benchmarks, by its path under ipc/; the
+// domain is the domain.pddl beside its instances/ folder.
+std::shared_ptr<const GroundTask> ground_ipc(const std::string& problem) {
+  const std::string base = test::shared_dir() + "/benchmarks/ipc/";
+  const std::string dir = problem.substr(0, problem.find("/instances/"));
+  return ground(test::load_task(base + dir + "/domain.pddl", base + problem).normalized);
+}
+
 PlannerResult solve(const std::shared_ptr<const GroundTask>& task, PlannerOptions options = {}) {
   options.time_limit = 20.0;
   return Planner(task, options).plan();
@@ -391,12 +399,6 @@ TEST_CASE("a search the time limit stops is handed over, not freed, so the limit
   CHECK(stopped.search_memory == nullptr);
 }
 
-// A child whose state and timing a stored node dominates is dropped before
-// the heuristic sees it: evaluations and duplicates are disjoint, so
-// together they never exceed the scheduled children and the root. Stopped
-// by a node limit (between expansions, so every expansion scheduled all its
-// children), on a problem rich in duplicates. When duplicates were found
-// only after they had been evaluated, this failed.
 TEST_CASE("a search stops below its address-space limit and hands its memory over unfreed") {
 #if defined(__SANITIZE_ADDRESS__)
   // AddressSanitizer reserves its heap's address space when the process
@@ -405,8 +407,7 @@ TEST_CASE("a search stops below its address-space limit and hands its memory ove
   WARN("not measurable under AddressSanitizer");
   return;
 #endif
-  const std::string base = test::shared_dir() + "/benchmarks/ipc/ipc-2006/pathways-metric-time/";
-  auto task = ground(test::load_task(base + "domain.pddl", base + "instances/instance-2.pddl").normalized);
+  auto task = ground_ipc("ipc-2006/pathways-metric-time/instances/instance-2.pddl");
   const std::size_t before = address_space_bytes();
   REQUIRE(before > 0);
   PlannerOptions options;
@@ -423,9 +424,14 @@ TEST_CASE("a search stops below its address-space limit and hands its memory ove
   CHECK(address_space_bytes() < options.address_space_limit + (std::size_t{64} << 20));
 }
 
+// A child whose state and timing a stored node dominates is dropped before
+// the heuristic sees it: evaluations and duplicates are disjoint, so
+// together they never exceed the scheduled children and the root. Stopped
+// by a node limit (between expansions, so every expansion scheduled all its
+// children), on a problem rich in duplicates. When duplicates were found
+// only after they had been evaluated, this failed.
 TEST_CASE("duplicates are recognised before they are evaluated") {
-  const std::string base = test::shared_dir() + "/benchmarks/ipc/ipc-2014/floor-tile-temporal-satisficing/";
-  auto task = ground(test::load_task(base + "domain.pddl", base + "instances/instance-1.pddl").normalized);
+  auto task = ground_ipc("ipc-2014/floor-tile-temporal-satisficing/instances/instance-1.pddl");
   for (const std::string search : {"gbfs", "wastar"}) {
     INFO(search);
     PlannerOptions options;
@@ -440,11 +446,9 @@ TEST_CASE("duplicates are recognised before they are evaluated") {
 }
 
 TEST_CASE("deferred evaluation: one evaluation per expansion, the same kind of plans") {
-  const std::string base = test::shared_dir() + "/benchmarks/ipc/";
   for (const std::string problem : {"ipc-2004/satellite-time-time-windows-strips/instances/instance-1.pddl",
                                     "ipc-2011/match-cellar-temporal-satisficing/instances/instance-1.pddl"}) {
-    const std::string dir = problem.substr(0, problem.find("/instances/"));
-    auto task = ground(test::load_task(base + dir + "/domain.pddl", base + problem).normalized);
+    auto task = ground_ipc(problem);
     for (const std::string search : {"gbfs", "wastar"}) {
       INFO(problem << " " << search);
       PlannerOptions eager;
@@ -477,12 +481,10 @@ TEST_CASE("deferred evaluation: one evaluation per expansion, the same kind of p
 }
 
 TEST_CASE("type-based exploration: valid plans, the same run twice, a different search from plain GBFS") {
-  const std::string base = test::shared_dir() + "/benchmarks/ipc/";
   for (const std::string problem : {"ipc-2004/satellite-time-time-windows-strips/instances/instance-1.pddl",
                                     "ipc-2011/match-cellar-temporal-satisficing/instances/instance-1.pddl"}) {
     INFO(problem);
-    const std::string dir = problem.substr(0, problem.find("/instances/"));
-    auto task = ground(test::load_task(base + dir + "/domain.pddl", base + problem).normalized);
+    auto task = ground_ipc(problem);
     PlannerOptions plain;
     plain.search = "gbfs";
     plain.type_exploration = false;
@@ -505,12 +507,10 @@ TEST_CASE("type-based exploration: valid plans, the same run twice, a different 
 }
 
 TEST_CASE("EHC's fallback with a deferred GBFS among its engines finds valid plans, the same twice") {
-  const std::string base = test::shared_dir() + "/benchmarks/ipc/";
   for (const std::string problem : {"ipc-2004/satellite-time-time-windows-strips/instances/instance-1.pddl",
                                     "ipc-2011/match-cellar-temporal-satisficing/instances/instance-1.pddl"}) {
     INFO(problem);
-    const std::string dir = problem.substr(0, problem.find("/instances/"));
-    auto task = ground(test::load_task(base + dir + "/domain.pddl", base + problem).normalized);
+    auto task = ground_ipc(problem);
     PlannerOptions two;
     two.ehc_expansions = 1;  // straight to the fallback
     two.type_exploration = true;
@@ -536,8 +536,7 @@ TEST_CASE("EHC's fallback with a deferred GBFS among its engines finds valid pla
 TEST_CASE("type-based exploration leaves the dining philosophers' plateau that GBFS searches through") {
   // Plain GBFS expands 26,928 nodes here (about x15 per philosopher;
   // benchmarks/README.md), with type-based exploration 1,175.
-  const std::string base = test::shared_dir() + "/benchmarks/ipc/ipc-2004/promela-dining-philosophers-derived-predicates-adl/";
-  auto task = ground(test::load_task(base + "domain.pddl", base + "instances/instance-3.pddl").normalized);
+  auto task = ground_ipc("ipc-2004/promela-dining-philosophers-derived-predicates-adl/instances/instance-3.pddl");
   PlannerOptions options;
   options.search = "gbfs";
   options.type_exploration = true;
