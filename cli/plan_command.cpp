@@ -274,9 +274,10 @@ void add_plan_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--deferred", options->deferred_evaluation,
                 "GBFS and wastar evaluate a node when they expand it, not when they generate it");
   cmd->add_flag("--type-exploration,!--no-type-exploration", options->type_exploration,
-                "GBFS also expands every fourth node drawn at random by (h, g) (Xie et al. 2014; seeded, reproducible; default on)");
+                "GBFS also expands every fourth node drawn at random by (h, g) (Xie et al. 2014; seeded, reproducible; "
+                "in EHC's fallback a typed GBFS runs beside the plain one; default on)");
   cmd->add_flag("--fallback-deferred,!--no-fallback-deferred", options->fallback_deferred,
-                "EHC's fallback adds a GBFS with deferred evaluation to GBFS and wastar's turns (default on)");
+                "EHC's fallback adds a GBFS with deferred evaluation to the GBFS and wastar taking turns (default on)");
   cmd->add_flag("!--no-relevance", options->prune_irrelevant,
                 "Search every ground action, not only those that can contribute to the goal");
   cmd->add_flag("!--no-resource-balance", options->resource_balance,

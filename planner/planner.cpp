@@ -93,10 +93,15 @@ ValidationResult validate_from(const GroundTask& task, const PlanningStart& star
 // A phase of the pipeline: one search, or several taking turns one step
 // each (a portfolio in one thread: GBFS and weighted A* fail on different
 // problems, and neither knows in advance which it will be).
+struct EngineChoice {
+  std::string kind;     // ehc, gbfs, wastar
+  double weight = 0.0;  // wastar's
+  bool deferred = false;  // evaluates nodes when it expands them (or all do, by the options)
+  bool typed = false;     // type-based exploration; greedy engines only
+};
+
 struct Phase {
-  // kind (ehc, gbfs, gbfs-deferred: GBFS evaluating nodes when it expands
-  // them, wastar), weight
-  std::vector<std::pair<std::string, double>> engines;
+  std::vector<EngineChoice> engines;
   std::uint64_t expansion_budget = 0;                    // 0: none
   // Whether weighted A* here may order by the metric. Not in EHC's fallback:
   // it exists to find a first plan at all, and there the metric (a makespan
@@ -132,23 +137,38 @@ void add(SearchStatistics& into, const SearchStatistics& s) {
   into.dead_ends += s.dead_ends;
 }
 
+// EHC's fallback: engines taking turns one step each. Type-based
+// exploration escapes plateaus (promela, sokoban, storage 2014) but its
+// random expansions put children the greedy queue then prefers, which lost
+// robot-battery p04 (907 expansions for plain GBFS, none found in 3,539 with
+// types), so a plain GBFS runs beside the typed one. Deferred evaluation wins
+// where children are many and alike (satellite, storage 2014) and loses where
+// h must be fresh (benchmarks/README.md).
+std::vector<EngineChoice> fallback_engines(const PlannerOptions& options) {
+  std::vector<EngineChoice> engines{{"gbfs"}};
+  if (options.type_exploration) engines.push_back({"gbfs", 0.0, false, true});
+  if (options.fallback_deferred) engines.push_back({"gbfs", 0.0, true, options.type_exploration});
+  engines.push_back({"wastar", options.weight});
+  return engines;
+}
+
 PhaseOutcome run_phase(const Phase& phase, const TaskIndex& index, const SearchStart& start, TemporalRpg& heuristic,
                        const BestFirstOptions& base, const PlannerOptions& options) {
   std::vector<std::unique_ptr<SearchSpace>> spaces;
   std::vector<std::unique_ptr<SearchEngine>> engines;
-  for (const auto& [kind, weight] : phase.engines) {
+  for (const EngineChoice& choice : phase.engines) {
     spaces.push_back(std::make_unique<SearchSpace>(index, start, options.epsilon));
     BestFirstOptions bfs = base;
-    bfs.weight = weight;
+    bfs.weight = choice.weight;
     // GBFS and EHC stay greedy on steps.
-    if (kind != "wastar" || !phase.metric_order) bfs.metric = nullptr;
+    if (choice.kind != "wastar" || !phase.metric_order) bfs.metric = nullptr;
     // Type-based exploration is a greedy search's escape from plateaus and
     // hidden dead ends (Xie et al. 2014); weighted A* keeps its order.
-    const bool greedy = kind == "gbfs" || kind == "gbfs-deferred";
-    if (!greedy) bfs.type_exploration = false;
-    if (kind == "gbfs-deferred") bfs.deferred = true;
-    engines.push_back(kind == "ehc" ? make_enforced_hill_climbing(*spaces.back(), heuristic, true, base.deadline)
-                                    : make_best_first_search(*spaces.back(), heuristic, bfs));
+    bfs.type_exploration = choice.typed && choice.kind == "gbfs";
+    bfs.deferred = base.deferred || choice.deferred;
+    engines.push_back(choice.kind == "ehc"
+                          ? make_enforced_hill_climbing(*spaces.back(), heuristic, true, base.deadline)
+                          : make_best_first_search(*spaces.back(), heuristic, bfs));
   }
   PhaseOutcome outcome;
   std::vector<bool> exhausted(engines.size(), false);
@@ -384,17 +404,13 @@ PlannerResult Planner::search_from(const PlanningStart& start, const std::functi
   // anytime mode, weighted A* with falling weights under a bound.
   std::vector<Phase> pipeline;
   if (options_.search == "ehc") {
-    pipeline = {{{{"ehc", 0.0}}, options_.ehc_expansions}, {{{"gbfs", 0.0}, {"wastar", options_.weight}}, 0, false}};
-    // Deferred evaluation wins where children are many and alike
-    // (satellite, storage 2014) and loses where h must be fresh; as a third
-    // engine taking turns it costs the others a third of the steps.
-    if (options_.fallback_deferred) pipeline[1].engines.insert(pipeline[1].engines.begin() + 1, {"gbfs-deferred", 0.0});
+    pipeline = {{{{"ehc"}}, options_.ehc_expansions}, {fallback_engines(options_), 0, false}};
     // EHC's children are scheduled against a plan that grows with its
     // climb, so its expansions can slow until the budget in expansions is
     // never spent and the fallback never runs (depots, benchmarks/README.md).
     if (std::isfinite(options_.time_limit)) pipeline[0].time_budget = options_.ehc_time_share * options_.time_limit;
   }
-  if (options_.search == "gbfs") pipeline = {{{{"gbfs", 0.0}}, 0}};
+  if (options_.search == "gbfs") pipeline = {{{{"gbfs", 0.0, false, options_.type_exploration}}, 0}};
   if (options_.search == "wastar") pipeline = {{{{"wastar", options_.weight}}, 0}};
   if (options_.anytime) {
     for (double w : {5.0, 3.0, 2.0, 1.5, 1.0}) {
@@ -413,7 +429,6 @@ PlannerResult Planner::search_from(const PlanningStart& start, const std::functi
     bfs.deadline = deadline;
     bfs.metric = order_metric;
     bfs.deferred = options_.deferred_evaluation;
-    bfs.type_exploration = options_.type_exploration;
     if (can_prune && !result.plans.empty()) {
       bfs.prune = [&, this](const SearchNode& node) {
         if (!task_->metric) return static_cast<double>(node.depth) >= best_value;
@@ -451,7 +466,7 @@ PlannerResult Planner::search_from(const PlanningStart& start, const std::functi
       // EHC is incomplete. A best-first search without a bound is complete
       // only where schedules cannot close doors: no deadlines (timed
       // literals) and no upper bounds on durations.
-      const bool complete_search = pipeline[phase].engines.front().first != "ehc";
+      const bool complete_search = pipeline[phase].engines.front().kind != "ehc";
       if (complete_search && result.plans.empty() && !deadlines_possible(*task_)) {
         proof = "the search space is exhausted";
       }

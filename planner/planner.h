@@ -75,11 +75,13 @@ struct PlannerOptions {
   bool deferred_evaluation = false;
   // GBFS also expands every fourth node from a queue drawing at random by
   // (h, g) (planner/type_bucket_queue.h); the draws are seeded, so a run is
-  // reproducible.
+  // reproducible. In EHC's fallback the typed GBFS runs beside a plain one
+  // (and the deferred GBFS is typed): neither alone solves every problem
+  // the pair does (benchmarks/README.md).
   bool type_exploration = true;
-  // EHC's fallback runs a GBFS with deferred evaluation as well, the three
+  // EHC's fallback runs a GBFS with deferred evaluation as well, all its
   // engines taking turns. Both on since the whole IPC suite gained with them
-  // and lost nothing (benchmarks/README.md).
+  // (benchmarks/README.md).
   bool fallback_deferred = true;
   // With continuous change: the heuristic counts the producers (recharges,
   // refuels) the relaxed plan's consumption needs (planner/resource_shortfall.h).

@@ -524,7 +524,7 @@ TEST_CASE("EHC's fallback with a deferred GBFS among its engines finds valid pla
     REQUIRE(b.status == Status::Solved);
     CHECK(b.best()->validation.valid);
     CHECK(b.best()->text == c.best()->text);
-    // The deferred engine takes every third step: fewer evaluations per
+    // The deferred engine takes every fourth step: fewer evaluations per
     // expansion in all.
     const auto per_expansion = [](const PlannerResult& r) {
       return static_cast<double>(r.statistics.evaluated) / static_cast<double>(r.statistics.expanded);
