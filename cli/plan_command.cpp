@@ -45,6 +45,7 @@ struct PlanOptions {
   double ehc_time_share = PlannerOptions{}.ehc_time_share;
   bool prune_irrelevant = PlannerOptions{}.prune_irrelevant;
   bool resource_balance = PlannerOptions{}.resource_balance;
+  bool count_repetitions = PlannerOptions{}.count_repetitions;
   std::string out;
   bool json = false;
   bool quiet = false;
@@ -158,6 +159,7 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
   planner_options.ehc_time_share = options.ehc_time_share;
   planner_options.prune_irrelevant = options.prune_irrelevant;
   planner_options.resource_balance = options.resource_balance;
+  planner_options.count_repetitions = options.count_repetitions;
   planner_options.anytime = options.anytime;
   planner_options.epsilon = options.epsilon;
   planner_options.reserve_planning_time = options.reserve_planning_time;
@@ -280,6 +282,9 @@ void add_plan_command(CLI::App& app, int& exit_code) {
                 "EHC's fallback adds a GBFS with deferred evaluation to the GBFS and wastar taking turns (default on)");
   cmd->add_flag("!--no-relevance", options->prune_irrelevant,
                 "Search every ground action, not only those that can contribute to the goal");
+  cmd->add_flag("!--no-repetitions", options->count_repetitions,
+                "Without continuous change: do not count how often a constant producer must repeat to meet a numeric "
+                "condition");
   cmd->add_flag("!--no-resource-balance", options->resource_balance,
                 "With continuous change: do not count the recharges and refuels the relaxed plan's consumption needs");
   cmd->add_option("--out", options->out, "Write the best plan to this file");

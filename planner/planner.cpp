@@ -385,8 +385,12 @@ PlannerResult Planner::search_from(const PlanningStart& start, const std::functi
   // ordering by steps stays.
   std::shared_ptr<const LinearMetric> order_metric;
   if (options_.order == "metric" && linear) order_metric = std::make_shared<const LinearMetric>(std::move(*linear));
-  TemporalRpg heuristic(index, {options_.heuristic == "trpg", options_.resource_balance, order_metric},
-                        workspace_ ? workspace_->graph : nullptr);
+  TemporalRpgOptions heuristic_options;
+  heuristic_options.helpful_actions = options_.heuristic == "trpg";
+  heuristic_options.resource_balance = options_.resource_balance;
+  heuristic_options.count_repetitions = options_.count_repetitions;
+  heuristic_options.metric = order_metric;
+  TemporalRpg heuristic(index, heuristic_options, workspace_ ? workspace_->graph : nullptr);
   if (workspace_) {
     workspace_->index = shared_index;
     workspace_->graph = heuristic.graph();

@@ -86,6 +86,9 @@ struct PlannerOptions {
   // With continuous change: the heuristic counts the producers (recharges,
   // refuels) the relaxed plan's consumption needs (planner/resource_shortfall.h).
   bool resource_balance = true;
+  // Without continuous change: an unmet numeric condition counts the
+  // repetitions of a constant producer it needs (planner/numeric_relaxation.h).
+  bool count_repetitions = true;
 };
 
 struct FoundPlan {

@@ -7,6 +7,7 @@
 
 #include "planner/evaluation.h"
 #include "planner/fact_windows.h"
+#include "planner/numeric_relaxation.h"
 #include "planner/resource_shortfall.h"
 #include "planner/successor_generator.h"
 
@@ -87,11 +88,14 @@ class TemporalRpg::Exploration {
   HeuristicValue extract(const SearchState& state, double goal_time);
   void add_helpful(const SearchState& state, HeuristicValue& value);
   bool continuous_dead_end(HeuristicValue& value);
+  void note_repetitions(std::uint32_t comparison, const SearchState& state);
   std::vector<ActionId> shortfall_producers(const SearchState& state, double& extra);
   bool goals_reached() const { return goals_left_ == 0 && satisfiable(rpg_.goal_numeric_); }
 
   TemporalRpg& rpg_;
   const ContinuousModel* continuous_;  // null without continuous change: read once, not per action
+  std::vector<std::pair<ActionId, double>> repetitions_;  // producer, applications asked (extract's)
+  std::vector<const NumericAssignment*> step_effects_;    // scratch of note_repetitions
   const SearchState* state_ = nullptr;
   const PartialPlan* plan_ = nullptr;
   std::uint32_t generation_ = 0;
@@ -195,7 +199,17 @@ std::shared_ptr<const TemporalRpg::Graph> TemporalRpg::build(const TaskIndex& in
     RelaxedAction& r = graph->actions[a];
     r.durative = g.durative;
     adds(g.start, r.start_add, r.start_numeric_effects);
-    if (g.durative) adds(g.end, r.end_add, r.end_numeric_effects);
+    if (g.durative) {
+      adds(g.end, r.end_add, r.end_numeric_effects);
+      // Only unconditional effects are g.end.numeric's; the adds put them first.
+      const std::size_t unconditional = g.end.numeric.size();
+      std::vector<const NumericAssignment*> kept;
+      for (std::size_t i = 0; i < r.end_numeric_effects.size(); ++i) {
+        const NumericAssignment* n = r.end_numeric_effects[i];
+        (i < unconditional && give_back(g, *n) ? r.end_returns : kept).push_back(n);
+      }
+      r.end_numeric_effects = std::move(kept);
+    }
     for (const ContinuousEffect& c : g.continuous) {
       graph->continuous_effects.push_back({c.variable, c.assign, c.rate});
       r.start_numeric_effects.push_back(&graph->continuous_effects.back());
@@ -458,6 +472,7 @@ void TemporalRpg::Exploration::try_end(ActionId a) {
   const double cost = (state_->is_running(a) ? 1.0 : start_cost_.at(a, generation_) + 1.0) + cost_of(r.end_pre);
   for (FactId f : r.end_add) reach(f, end + plan_->epsilon(), {AchieverKind::End, a}, cost);
   apply_numeric(r.end_numeric_effects, a);
+  if (state_->is_running(a)) apply_numeric(r.end_returns, a);
 }
 
 bool TemporalRpg::Exploration::process_next() {
@@ -616,6 +631,38 @@ std::vector<ActionId> TemporalRpg::Exploration::shortfall_producers(const Search
 // variables, the relaxed plan did not count it either (the interval
 // relaxation sees no shortfall): one more step per such action. The helpers
 // that can start now are helpful, so that hill-climbing tries them.
+// An unmet comparison's gap over the best constant step of a supporter of
+// its variables: how many applications of that supporter it asks
+// (numeric_relaxation.h). Each producer keeps the most any comparison asks.
+void TemporalRpg::Exploration::note_repetitions(std::uint32_t comparison, const SearchState& state) {
+  const std::optional<NumericDemand> demand = numeric_demand(*rpg_.comparisons_[comparison], state);
+  if (!demand) return;
+  ActionId best = kNoId;
+  double best_step = 0.0;
+  for (NumericVarId v : demand->variables) {
+    const ActionId a = supporter_[v];
+    if (a == kNoId) continue;
+    const RelaxedAction& r = rpg_.actions_[a];
+    step_effects_.assign(r.start_numeric_effects.begin(), r.start_numeric_effects.end());
+    step_effects_.insert(step_effects_.end(), r.end_numeric_effects.begin(), r.end_numeric_effects.end());
+    const std::optional<double> step = constant_step(step_effects_, v, demand->upward);
+    if (step && *step > best_step) {
+      best = a;
+      best_step = *step;
+    }
+  }
+  if (best == kNoId) return;
+  const double times = std::ceil(demand->gap / best_step - 1e-9);
+  if (times <= 1.0) return;
+  for (auto& [a, most] : repetitions_) {
+    if (a == best) {
+      most = std::max(most, times);
+      return;
+    }
+  }
+  repetitions_.emplace_back(best, times);
+}
+
 bool TemporalRpg::Exploration::continuous_dead_end(HeuristicValue& value) {
   const std::vector<std::pair<ActionId, std::vector<NumericVarId>>> failing = plan_->invariants_failing_at_end();
   if (failing.empty()) return false;
@@ -660,6 +707,7 @@ HeuristicValue TemporalRpg::Exploration::extract(const SearchState& state, doubl
   HeuristicValue value;
   value.relaxed_makespan = goal_time;
   double count = 0.0;
+  repetitions_.clear();
   std::vector<FactId> open(rpg_.goal_facts_.begin(), rpg_.goal_facts_.end());
   std::vector<ActionId> numeric_support;
   auto need_numeric = [&](const std::vector<std::uint32_t>& comparisons) {
@@ -671,6 +719,7 @@ HeuristicValue TemporalRpg::Exploration::extract(const SearchState& state, doubl
       for (NumericVarId v : rpg_.comparison_variables_[c]) {
         if (supporter_[v] != kNoId) numeric_support.push_back(supporter_[v]);
       }
+      if (rpg_.options_.count_repetitions && !continuous_) note_repetitions(c, state);
     }
   };
   need_numeric(rpg_.goal_numeric_);
@@ -738,6 +787,11 @@ HeuristicValue TemporalRpg::Exploration::extract(const SearchState& state, doubl
     drain();
   }
   count += extra;
+  // The further applications of constant producers the unmet comparisons ask.
+  for (const auto& [a, times] : repetitions_) {
+    count += (times - 1.0) * (rpg_.actions_[a].durative ? 2.0 : 1.0);
+    if (metric) value.cost += (times - 1.0) * (metric->start_cost[a] + metric->end_cost[a]);
+  }
   // Every running action still owes its end.
   for (const RunningAction& r : state.running()) {
     if (!counted_end_.at(r.action, generation_)) count += 1.0;

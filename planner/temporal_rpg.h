@@ -38,6 +38,9 @@ struct TemporalRpgOptions {
   // With continuous change: count the producers the relaxed plan's
   // consumption needs (planner/resource_shortfall.h).
   bool resource_balance = true;
+  // Without continuous change: an unmet comparison counts the repetitions
+  // of a constant producer it needs (planner/numeric_relaxation.h).
+  bool count_repetitions = true;
   // Set: each evaluation also estimates the metric still to come
   // (HeuristicValue::cost), for a search ordered by the metric.
   std::shared_ptr<const LinearMetric> metric;
@@ -72,6 +75,11 @@ class TemporalRpg {
     std::vector<std::uint32_t> start_numeric, end_numeric;  // indices into comparisons_
     std::vector<FactId> start_add, end_add;
     std::vector<const NumericAssignment*> start_numeric_effects, end_numeric_effects;
+    // End effects that give back what the start took (a catalyst, a borrowed
+    // tool count): net zero, so applied only for an action already running
+    // in the state, whose taking the state holds. Counted as producers they
+    // made the variable unbounded (pathways, benchmarks/README.md).
+    std::vector<const NumericAssignment*> end_returns;
     bool durative = false;
   };
   struct Event {
