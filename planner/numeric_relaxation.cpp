@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "planner/evaluation.h"
+
 namespace alplan {
 namespace {
 
@@ -29,30 +31,15 @@ bool reads_nothing(const GroundExpression& e, bool duration) {
   return true;
 }
 
+// The value of an expression that reads nothing, by the evaluator the
+// search uses; nothing when it reads something or cannot be evaluated (a
+// division by zero).
 std::optional<double> constant(const GroundExpression& e) {
-  switch (e.kind) {
-    case Kind::Constant: return e.value;
-    case Kind::Negate: {
-      const auto v = constant(e.operands[0]);
-      return v ? std::optional<double>(-*v) : std::nullopt;
-    }
-    case Kind::Add:
-    case Kind::Multiply: {
-      double r = e.kind == Kind::Add ? 0.0 : 1.0;
-      for (const GroundExpression& o : e.operands) {
-        const auto v = constant(o);
-        if (!v) return std::nullopt;
-        r = e.kind == Kind::Add ? r + *v : r * *v;
-      }
-      return r;
-    }
-    case Kind::Subtract:
-    case Kind::Divide: {
-      const auto a = constant(e.operands[0]), b = constant(e.operands[1]);
-      if (!a || !b || (e.kind == Kind::Divide && *b == 0.0)) return std::nullopt;
-      return e.kind == Kind::Subtract ? *a - *b : *a / *b;
-    }
-    default: return std::nullopt;
+  if (!reads_nothing(e, false)) return std::nullopt;
+  try {
+    return evaluate(e, SearchState(), EvaluationContext{});
+  } catch (const EvaluationError&) {
+    return std::nullopt;
   }
 }
 
@@ -105,16 +92,18 @@ std::optional<NumericDemand> numeric_demand(const GroundComparison& c, const Sea
   return demand;
 }
 
-std::optional<double> constant_step(const std::vector<const NumericAssignment*>& effects, NumericVarId v,
-                                    bool upward) {
+std::optional<double> constant_step(const std::vector<const NumericAssignment*>& start,
+                                    const std::vector<const NumericAssignment*>& end, NumericVarId v, bool upward) {
   using pddl::AssignOperator;
   double step = 0.0;
-  for (const NumericAssignment* a : effects) {
-    if (a->variable != v) continue;
-    if (a->assign != AssignOperator::Increase && a->assign != AssignOperator::Decrease) return std::nullopt;
-    const std::optional<double> amount = constant(a->value);
-    if (!amount) return std::nullopt;
-    step += a->assign == AssignOperator::Increase ? *amount : -*amount;
+  for (const auto* effects : {&start, &end}) {
+    for (const NumericAssignment* a : *effects) {
+      if (a->variable != v) continue;
+      if (a->assign != AssignOperator::Increase && a->assign != AssignOperator::Decrease) return std::nullopt;
+      const std::optional<double> amount = constant(a->value);
+      if (!amount) return std::nullopt;
+      step += a->assign == AssignOperator::Increase ? *amount : -*amount;
+    }
   }
   if (!upward) step = -step;
   if (step <= 0.0) return std::nullopt;

@@ -43,10 +43,10 @@ struct NumericDemand {
 };
 std::optional<NumericDemand> numeric_demand(const GroundComparison& c, const SearchState& state);
 
-// The amount by which `effects` change v in the direction asked, when it is
-// a positive constant; nothing otherwise (an assignment, a rate, an amount
-// read from the state or the duration).
-std::optional<double> constant_step(const std::vector<const NumericAssignment*>& effects, NumericVarId v,
-                                    bool upward);
+// The amount by which an action's start and end effects together change v
+// in the direction asked, when it is a positive constant; nothing otherwise
+// (an assignment, a rate, an amount read from the state or the duration).
+std::optional<double> constant_step(const std::vector<const NumericAssignment*>& start,
+                                    const std::vector<const NumericAssignment*>& end, NumericVarId v, bool upward);
 
 }  // namespace alplan

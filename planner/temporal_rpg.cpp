@@ -95,7 +95,6 @@ class TemporalRpg::Exploration {
   TemporalRpg& rpg_;
   const ContinuousModel* continuous_;  // null without continuous change: read once, not per action
   std::vector<std::pair<ActionId, double>> repetitions_;  // producer, applications asked (extract's)
-  std::vector<const NumericAssignment*> step_effects_;    // scratch of note_repetitions
   const SearchState* state_ = nullptr;
   const PartialPlan* plan_ = nullptr;
   std::uint32_t generation_ = 0;
@@ -621,16 +620,6 @@ std::vector<ActionId> TemporalRpg::Exploration::shortfall_producers(const Search
   return seeds;
 }
 
-// A running action whose over-all condition on changing values fails at
-// its end unless something changes them first: a dead end when no action
-// that changes them can start (in the relaxation) before that end, nor a
-// running one end. The exploration goes on past the goal to see. (It takes
-// the running action's end at its earliest; a plan that delayed the end
-// to let help arrive is given up, as POPF gives up other orderings.)
-// Where help can arrive and the resource balance counted none for those
-// variables, the relaxed plan did not count it either (the interval
-// relaxation sees no shortfall): one more step per such action. The helpers
-// that can start now are helpful, so that hill-climbing tries them.
 // An unmet comparison's gap over the best constant step of a supporter of
 // its variables: how many applications of that supporter it asks
 // (numeric_relaxation.h). Each producer keeps the most any comparison asks.
@@ -643,9 +632,8 @@ void TemporalRpg::Exploration::note_repetitions(std::uint32_t comparison, const 
     const ActionId a = supporter_[v];
     if (a == kNoId) continue;
     const RelaxedAction& r = rpg_.actions_[a];
-    step_effects_.assign(r.start_numeric_effects.begin(), r.start_numeric_effects.end());
-    step_effects_.insert(step_effects_.end(), r.end_numeric_effects.begin(), r.end_numeric_effects.end());
-    const std::optional<double> step = constant_step(step_effects_, v, demand->upward);
+    const std::optional<double> step =
+        constant_step(r.start_numeric_effects, r.end_numeric_effects, v, demand->upward);
     if (step && *step > best_step) {
       best = a;
       best_step = *step;
@@ -663,6 +651,16 @@ void TemporalRpg::Exploration::note_repetitions(std::uint32_t comparison, const 
   repetitions_.emplace_back(best, times);
 }
 
+// A running action whose over-all condition on changing values fails at
+// its end unless something changes them first: a dead end when no action
+// that changes them can start (in the relaxation) before that end, nor a
+// running one end. The exploration goes on past the goal to see. (It takes
+// the running action's end at its earliest; a plan that delayed the end
+// to let help arrive is given up, as POPF gives up other orderings.)
+// Where help can arrive and the resource balance counted none for those
+// variables, the relaxed plan did not count it either (the interval
+// relaxation sees no shortfall): one more step per such action. The helpers
+// that can start now are helpful, so that hill-climbing tries them.
 bool TemporalRpg::Exploration::continuous_dead_end(HeuristicValue& value) {
   const std::vector<std::pair<ActionId, std::vector<NumericVarId>>> failing = plan_->invariants_failing_at_end();
   if (failing.empty()) return false;

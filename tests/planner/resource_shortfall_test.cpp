@@ -11,6 +11,7 @@
 #include "planner/partial_plan.h"
 #include "planner/resource_shortfall.h"
 #include "planner/task_index.h"
+#include "tests/support/ground_names.h"
 #include "tests/support/task_loader.h"
 
 using namespace alplan;
@@ -66,13 +67,7 @@ struct Fixture {
     state = SearchState(static_cast<std::uint32_t>(task->facts.size()), task->initial_values);
     for (FactId f : task->initial_facts) state.set_fact(f, true);
   }
-  ActionId action(const std::string& name) const {
-    for (ActionId a = 0; a < task->actions.size(); ++a) {
-      if (task->action_name(task->actions[a]) == name) return a;
-    }
-    FAIL("no action " << name);
-    return kNoId;
-  }
+  ActionId action(const std::string& name) const { return test::action_named(*task, name); }
   std::vector<ResourceShortfall> shortfalls(const std::vector<ActionId>& relaxed) const {
     ShortfallInput input;
     input.state = &state;

@@ -9,6 +9,7 @@
 #include "planner/partial_plan.h"
 #include "planner/planner.h"
 #include "planner/task_index.h"
+#include "tests/support/ground_names.h"
 #include "tests/support/task_loader.h"
 
 using namespace alplan;
@@ -33,14 +34,6 @@ const char* const kLab = R"(
 std::shared_ptr<const GroundTask> lab(const std::string& init, const std::string& goal) {
   const std::string problem = "(define (problem p) (:domain lab) (:init " + init + ") (:goal " + goal + "))";
   return ground(test::load_task_text(kLab, problem).normalized);
-}
-
-ActionId action_named(const GroundTask& task, const std::string& name) {
-  for (ActionId a = 0; a < task.actions.size(); ++a) {
-    if (task.action_name(task.actions[a]) == name) return a;
-  }
-  FAIL("no action " << name);
-  return kNoId;
 }
 
 // `make` adds one unit and `bake` (needing `made`) three a time unit, each
@@ -106,11 +99,9 @@ TEST_CASE("a borrowing action running in the state still gives back: its taking 
   PlanningStart start;
   start.now = 1.0;
   start.values = task->initial_values;
-  for (NumericVarId v = 0; v < start.values.size(); ++v) {
-    if (task->variable_name(v) == "(catalyst)") start.values[v] = 0.0;  // borrow took it at time 0
-  }
+  start.values[test::variable_named(*task, "(catalyst)")] = 0.0;  // borrow took it at time 0
   RunningAction running;
-  running.action = action_named(*task, "(borrow)");
+  running.action = test::action_named(*task, "(borrow)");
   running.min_duration = running.max_duration = 2.0;
   start.running.push_back(running);
   PlannerOptions options;
@@ -137,15 +128,16 @@ TEST_CASE("counted repetitions: only a constant step is counted") {
   CHECK(bakery_h(0, "(>= (stock) 9)", true) == 18.0);
   const std::string problem = "(define (problem p) (:domain bakery) (:init (= (stock) 0) (= (oven) 1)) (:goal (>= (stock) 4)))";
   const auto task = ground(test::load_task_text(kBakery, problem).normalized);
-  for (ActionId a = 0; a < task->actions.size(); ++a) {
-    const GroundAction& g = task->actions[a];
-    std::vector<const NumericAssignment*> effects;
-    for (const NumericAssignment& n : g.end.numeric) effects.push_back(&n);
-    const std::optional<double> up = constant_step(effects, 0, true);
+  const NumericVarId stock = test::variable_named(*task, "(stock)");
+  const std::vector<const NumericAssignment*> none;
+  for (const GroundAction& g : task->actions) {
+    std::vector<const NumericAssignment*> end;
+    for (const NumericAssignment& n : g.end.numeric) end.push_back(&n);
+    const std::optional<double> up = constant_step(none, end, stock, true);
     if (task->action_name(g) == "(make)") {
       REQUIRE(up);
       CHECK(*up == 1.0);
-      CHECK_FALSE(constant_step(effects, 0, false));  // make never lowers the stock
+      CHECK_FALSE(constant_step(none, end, stock, false));  // make never lowers the stock
     } else {
       CHECK_FALSE(up);  // bake's amount reads its duration
     }
@@ -156,13 +148,9 @@ TEST_CASE("a numeric demand is read only off a sum of variables against a consta
   const std::string problem = "(define (problem p) (:domain bakery) (:init (= (stock) 2) (= (oven) 1)) (:goal (made)))";
   const auto task = ground(test::load_task_text(kBakery, problem).normalized);
   const SearchState state(static_cast<std::uint32_t>(task->facts.size()), task->initial_values);
-  NumericVarId stock = 0;
-  for (NumericVarId v = 0; v < task->initial_values.size(); ++v) {
-    if (task->variable_name(v) == "(stock)") stock = v;
-  }
   GroundExpression variable;
   variable.kind = GroundExpression::Kind::Variable;
-  variable.variable = stock;
+  variable.variable = test::variable_named(*task, "(stock)");
   GroundExpression five;
   five.value = 5.0;
   GroundComparison at_least{pddl::Comparison::GreaterEqual, variable, five};

@@ -12,6 +12,7 @@
 #include "repair/monitor.h"
 #include "repair/reformulation.h"
 #include "repair/world_simulator.h"
+#include "tests/support/ground_names.h"
 #include "tests/support/test_paths.h"
 
 namespace alplan::repair {
@@ -46,14 +47,6 @@ Loaded load() {
   domains::LoadedFiles files = domains::load_pddl(kBatteryDomain, kRecharge);
   std::shared_ptr<const GroundTask> task = ground(*files.domain, *files.problem);
   return {std::move(files), std::move(task)};
-}
-
-ActionId action_named(const GroundTask& task, const std::string& name) {
-  for (ActionId a = 0; a < task.actions.size(); ++a) {
-    if (task.action_name(task.actions[a]) == name) return a;
-  }
-  FAIL("no ground action " << name);
-  return 0;
 }
 
 double battery(const WorldSimulator& world) { return world.observe().values.at({"battery", "robot1"}); }
@@ -100,7 +93,7 @@ MonitoredRun run_plan(std::vector<ExogenousEvent> events) {
 TEST_CASE("the world drains a moving robot's battery linearly and stops when the move ends", "[battery]") {
   const Loaded l = load();
   WorldSimulator world(initial_world(*l.files.problem), {});
-  const ActionId move = action_named(*l.task, "(move robot1 bedroom1 corridor1)");
+  const ActionId move = test::action_named(*l.task, "(move robot1 bedroom1 corridor1)");
   world.start_action(*l.task, move, 0.0, 30.0);
   world.advance(15.0);  // half the move: half its drain of 1.5
   CHECK(battery(world) == Approx(25.0 - 0.75));
@@ -116,7 +109,7 @@ TEST_CASE("the world charges a battery at the dock and an overrunning move drain
           "[battery]") {
   const Loaded l = load();
   WorldSimulator world(initial_world(*l.files.problem), {action_overruns("(move robot1 bedroom1 corridor1)", 20.0)});
-  const ActionId move = action_named(*l.task, "(move robot1 bedroom1 corridor1)");
+  const ActionId move = test::action_named(*l.task, "(move robot1 bedroom1 corridor1)");
   world.start_action(*l.task, move, 0.0, 30.0);
   world.advance(30.0);
   CHECK_FALSE(world.end_action(*l.task, move, 30.0));  // it goes on for 20 s
@@ -128,11 +121,11 @@ TEST_CASE("the world charges a battery at the dock and an overrunning move drain
   world.advance(70.0);  // it ended at 50 and drained no more
   CHECK(battery(world) == Approx(25.0 - 0.05 * 50.0));
   CHECK(world.observe().holds({"be", "robot1", "corridor1"}));
-  const ActionId to_dock = action_named(*l.task, "(move robot1 corridor1 corridor2)");
+  const ActionId to_dock = test::action_named(*l.task, "(move robot1 corridor1 corridor2)");
   world.start_action(*l.task, to_dock, 70.0, 50.0);
   world.advance(120.0);
   REQUIRE(world.end_action(*l.task, to_dock, 120.0));
-  const ActionId recharge = action_named(*l.task, "(recharge robot1 corridor2)");
+  const ActionId recharge = test::action_named(*l.task, "(recharge robot1 corridor2)");
   world.start_action(*l.task, recharge, 120.0, 10.0);
   world.advance(124.0);  // 4 s at 0.5 a second
   CHECK(battery(world) == Approx(20.0 + 2.0));
@@ -172,7 +165,7 @@ TEST_CASE("a move that overruns and drains the battery below its reserve is a fa
 TEST_CASE("a replan mid-move starts the battery at its level when the move ends", "[battery]") {
   const Loaded l = load();
   WorldSimulator world(initial_world(*l.files.problem), {});
-  const ActionId move = action_named(*l.task, "(move robot1 bedroom1 corridor1)");
+  const ActionId move = test::action_named(*l.task, "(move robot1 bedroom1 corridor1)");
   world.start_action(*l.task, move, 0.0, 30.0);
   world.advance(10.0);
   const pddl::Problem replanned =
