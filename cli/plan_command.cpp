@@ -40,6 +40,8 @@ struct PlanOptions {
   std::string order = PlannerOptions{}.order;
   bool deferred_evaluation = PlannerOptions{}.deferred_evaluation;
   bool type_exploration = PlannerOptions{}.type_exploration;
+  bool novelty = PlannerOptions{}.novelty;
+  bool fallback_novelty = PlannerOptions{}.fallback_novelty;
   bool fallback_deferred = PlannerOptions{}.fallback_deferred;
   std::optional<std::uint64_t> ehc_expansions;
   double ehc_time_share = PlannerOptions{}.ehc_time_share;
@@ -154,6 +156,8 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
   planner_options.order = options.order;
   planner_options.deferred_evaluation = options.deferred_evaluation;
   planner_options.type_exploration = options.type_exploration;
+  planner_options.novelty = options.novelty;
+  planner_options.fallback_novelty = options.fallback_novelty;
   planner_options.fallback_deferred = options.fallback_deferred;
   if (options.ehc_expansions) planner_options.ehc_expansions = *options.ehc_expansions;
   planner_options.ehc_time_share = options.ehc_time_share;
@@ -278,6 +282,11 @@ void add_plan_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--type-exploration,!--no-type-exploration", options->type_exploration,
                 "GBFS also expands every fourth node drawn at random by (h, g) (Xie et al. 2014; seeded, reproducible; "
                 "in EHC's fallback a typed GBFS runs beside the plain one; default on)");
+  cmd->add_flag("--novelty,!--no-novelty", options->novelty,
+                "GBFS orders its queues by novelty within h, then h (best-first width search, Lipovetzky & Geffner "
+                "2017)");
+  cmd->add_flag("--fallback-novelty,!--no-fallback-novelty", options->fallback_novelty,
+                "The typed GBFS of EHC's fallback orders its queues by novelty within h, then h (default on)");
   cmd->add_flag("--fallback-deferred,!--no-fallback-deferred", options->fallback_deferred,
                 "EHC's fallback adds a GBFS with deferred evaluation to the GBFS and wastar taking turns (default on)");
   cmd->add_flag("!--no-relevance", options->prune_irrelevant,

@@ -3,6 +3,7 @@
 #include <unordered_map>
 
 #include "planner/search_engine.h"
+#include "planner/novelty_table.h"
 #include "planner/type_bucket_queue.h"
 
 namespace alplan {
@@ -30,12 +31,14 @@ class BestFirstSearch : public SearchEngine {
         // Ordered by the metric, a node drawn at random could end the search
         // with a plan the main queue would have ranked behind a cheaper one.
         type_exploration_(options_.type_exploration && !by_metric()),
+        novelty_(options_.novelty && options_.weight == 0),
         types_(options_.seed) {}
 
   std::string name() const override {
     std::string traits;  // ", deferred, type-based"
     if (deferred_) traits += ", deferred";
     if (type_exploration_) traits += ", type-based";
+    if (novelty_) traits += ", novelty";
     if (options_.weight == 0) return traits.empty() ? "gbfs" : "gbfs (" + traits.substr(2) + ")";
     return "wastar (w=" + std::to_string(options_.weight) + (options_.metric ? ", metric" : "") + traits + ")";
   }
@@ -136,6 +139,8 @@ class BestFirstSearch : public SearchEngine {
           options_.weight * options_.metric->remaining(n.relaxed_cost, n.makespan, n.makespan_bound);
     } else if (options_.weight != 0) {
       f = n.depth + options_.weight * n.h;
+    } else if (novelty_ && n.h != std::numeric_limits<double>::infinity()) {
+      f = novelties_.novelty(n.h, n.state);
     }
     const Entry entry{f, n.h, order_++, id};
     open_.push(entry);
@@ -184,6 +189,8 @@ class BestFirstSearch : public SearchEngine {
   BestFirstOptions options_;
   bool deferred_;
   bool type_exploration_;
+  bool novelty_;
+  NoveltyTable novelties_;
   bool started_ = false;
   OpenList open_, preferred_;
   TypeBucketQueue types_;

@@ -98,6 +98,7 @@ struct EngineChoice {
   double weight = 0.0;  // wastar's
   bool deferred = false;  // evaluates nodes when it expands them (or all do, by the options)
   bool typed = false;     // type-based exploration; greedy engines only
+  bool novelty = false;   // ordered by (novelty, h); greedy engines only
 };
 
 struct Phase {
@@ -146,7 +147,12 @@ void add(SearchStatistics& into, const SearchStatistics& s) {
 // h must be fresh (benchmarks/README.md).
 std::vector<EngineChoice> fallback_engines(const PlannerOptions& options) {
   std::vector<EngineChoice> engines{{"gbfs"}};
-  if (options.type_exploration) engines.push_back({"gbfs", 0.0, false, true});
+  // The typed GBFS orders its queues by novelty first, h second (best-first
+  // width search): storage 2014 and depots 4, where every order by h walks
+  // into the same dead ends the relaxation cannot see (benchmarks/README.md).
+  if (options.type_exploration || options.fallback_novelty) {
+    engines.push_back({"gbfs", 0.0, false, options.type_exploration, options.fallback_novelty});
+  }
   if (options.fallback_deferred) engines.push_back({"gbfs", 0.0, true, options.type_exploration});
   engines.push_back({"wastar", options.weight});
   return engines;
@@ -166,6 +172,7 @@ PhaseOutcome run_phase(const Phase& phase, const TaskIndex& index, const SearchS
     // hidden dead ends (Xie et al. 2014); weighted A* keeps its order.
     bfs.type_exploration = choice.typed && choice.kind == "gbfs";
     bfs.deferred = base.deferred || choice.deferred;
+    bfs.novelty = choice.novelty && choice.kind == "gbfs";
     engines.push_back(choice.kind == "ehc"
                           ? make_enforced_hill_climbing(*spaces.back(), heuristic, true, base.deadline)
                           : make_best_first_search(*spaces.back(), heuristic, bfs));
@@ -414,7 +421,9 @@ PlannerResult Planner::search_from(const PlanningStart& start, const std::functi
     // never spent and the fallback never runs (depots, benchmarks/README.md).
     if (std::isfinite(options_.time_limit)) pipeline[0].time_budget = options_.ehc_time_share * options_.time_limit;
   }
-  if (options_.search == "gbfs") pipeline = {{{{"gbfs", 0.0, false, options_.type_exploration}}, 0}};
+  if (options_.search == "gbfs") {
+    pipeline = {{{{"gbfs", 0.0, false, options_.type_exploration, options_.novelty}}, 0}};
+  }
   if (options_.search == "wastar") pipeline = {{{{"wastar", options_.weight}}, 0}};
   if (options_.anytime) {
     for (double w : {5.0, 3.0, 2.0, 1.5, 1.0}) {

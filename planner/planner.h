@@ -83,12 +83,18 @@ struct PlannerOptions {
   // engines taking turns. Both on since the whole IPC suite gained with them
   // (benchmarks/README.md).
   bool fallback_deferred = true;
+  // EHC's fallback's second GBFS (the typed one) orders its queues by
+  // novelty within h, then h (planner/novelty_table.h).
+  bool fallback_novelty = true;
   // With continuous change: the heuristic counts the producers (recharges,
   // refuels) the relaxed plan's consumption needs (planner/resource_shortfall.h).
   bool resource_balance = true;
   // Without continuous change: an unmet numeric condition counts the
   // repetitions of a constant producer it needs (planner/numeric_relaxation.h).
   bool count_repetitions = true;
+  // GBFS orders its queues by (novelty, h), novelty of width 1 within the
+  // node's h (planner/novelty_table.h).
+  bool novelty = false;
 };
 
 struct FoundPlan {

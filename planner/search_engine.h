@@ -61,6 +61,9 @@ struct BestFirstOptions {
   // expansion (planner/type_bucket_queue.h); not with a metric order.
   bool type_exploration = false;
   std::uint64_t seed = 0;  // the type-based queue's draws
+  // Greedy only: the queues order nodes by (novelty, h), novelty of width 1
+  // within the node's h (planner/novelty_table.h), instead of by h alone.
+  bool novelty = false;
   NodeBound prune;
   SearchDeadline deadline;
 };

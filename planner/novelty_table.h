@@ -1,0 +1,46 @@
+// Width-1 novelty of a state within its heuristic partition, the measure of
+// best-first width search (Lipovetzky & Geffner, AAAI 2017, "Best-First
+// Width Search: Exploration and Exploitation in Classical Planning") with
+// states partitioned by their h as in Katz, Lipovetzky, Moshkovich & Tuisov
+// (ICAPS 2017, "Adapting Novelty to Classical Planning as Heuristic Search").
+//
+// A state is novel (novelty 1) when it holds an atom no earlier state of the
+// same h held; otherwise its novelty is 2 (width above 1, not told apart).
+// Ordering a greedy queue by (novelty, h) sends it first to states that make
+// something new true at their level of h: on a plateau where every step
+// lowers h into a dead end the relaxation cannot see (storage's sealed
+// depots, floor-tile's walled robots), the states that differ from those
+// already tried go first instead of the siblings of the trap.
+//
+// Atoms: the facts, the running actions (as COLIN's state holds them), and
+// the pairs (numeric variable, value); the timed initial literal reached is
+// not one (it only moves forward). Each call records the state's atoms, so
+// the answer depends on the order of the calls: the caller asks once per
+// node, when it is queued.
+#pragma once
+
+#include <cstdint>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+#include "planner/search_state.h"
+
+namespace alplan {
+
+class NoveltyTable {
+ public:
+  // 1 when the state holds an atom not seen before under this h, else 2.
+  int novelty(double h, const SearchState& state);
+  std::size_t partitions() const { return seen_.size(); }
+
+ private:
+  struct Seen {
+    std::vector<std::uint64_t> facts;  // a bit per fact, as SearchState stores them
+    std::vector<bool> running;         // per action id
+    std::unordered_set<std::uint64_t> values;  // (variable, value) hashed
+  };
+  std::unordered_map<double, Seen> seen_;
+};
+
+}  // namespace alplan
