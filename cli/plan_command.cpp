@@ -41,6 +41,7 @@ struct PlanOptions {
   bool deferred_evaluation = PlannerOptions{}.deferred_evaluation;
   bool type_exploration = PlannerOptions{}.type_exploration;
   bool novelty = PlannerOptions{}.novelty;
+  int novelty_width = PlannerOptions{}.novelty_width;
   bool fallback_novelty = PlannerOptions{}.fallback_novelty;
   bool fallback_deferred = PlannerOptions{}.fallback_deferred;
   std::optional<std::uint64_t> ehc_expansions;
@@ -157,6 +158,7 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
   planner_options.deferred_evaluation = options.deferred_evaluation;
   planner_options.type_exploration = options.type_exploration;
   planner_options.novelty = options.novelty;
+  planner_options.novelty_width = options.novelty_width;
   planner_options.fallback_novelty = options.fallback_novelty;
   planner_options.fallback_deferred = options.fallback_deferred;
   if (options.ehc_expansions) planner_options.ehc_expansions = *options.ehc_expansions;
@@ -285,6 +287,8 @@ void add_plan_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--novelty,!--no-novelty", options->novelty,
                 "GBFS orders its queues by novelty within h, then h (best-first width search, Lipovetzky & Geffner "
                 "2017)");
+  cmd->add_option("--novelty-width", options->novelty_width, "Engines ordered by novelty count new facts (1) or new pairs of facts too (2, default)")
+      ->check(CLI::Range(1, 2));
   cmd->add_flag("--fallback-novelty,!--no-fallback-novelty", options->fallback_novelty,
                 "The typed GBFS of EHC's fallback orders its queues by novelty within h, then h (default on)");
   cmd->add_flag("--fallback-deferred,!--no-fallback-deferred", options->fallback_deferred,

@@ -32,6 +32,7 @@ class BestFirstSearch : public SearchEngine {
         // with a plan the main queue would have ranked behind a cheaper one.
         type_exploration_(options_.type_exploration && !by_metric()),
         novelty_(options_.novelty && options_.weight == 0),
+        novelties_(options_.novelty_width),
         types_(options_.seed) {}
 
   std::string name() const override {

@@ -147,9 +147,10 @@ void add(SearchStatistics& into, const SearchStatistics& s) {
 // h must be fresh (benchmarks/README.md).
 std::vector<EngineChoice> fallback_engines(const PlannerOptions& options) {
   std::vector<EngineChoice> engines{{"gbfs"}};
-  // The typed GBFS orders its queues by novelty first, h second (best-first
-  // width search): storage 2014 and depots 4, where every order by h walks
-  // into the same dead ends the relaxation cannot see (benchmarks/README.md).
+  // The typed eager GBFS orders its queues by novelty first, h second
+  // (best-first width search): storage 2011 and 2014, depots 4 and
+  // parc-printer 5, where every order by h walks into the same dead ends the
+  // relaxation cannot see (benchmarks/README.md).
   if (options.type_exploration || options.fallback_novelty) {
     engines.push_back({"gbfs", 0.0, false, options.type_exploration, options.fallback_novelty});
   }
@@ -173,6 +174,7 @@ PhaseOutcome run_phase(const Phase& phase, const TaskIndex& index, const SearchS
     bfs.type_exploration = choice.typed && choice.kind == "gbfs";
     bfs.deferred = base.deferred || choice.deferred;
     bfs.novelty = choice.novelty && choice.kind == "gbfs";
+    bfs.novelty_width = options.novelty_width;
     engines.push_back(choice.kind == "ehc"
                           ? make_enforced_hill_climbing(*spaces.back(), heuristic, true, base.deadline)
                           : make_best_first_search(*spaces.back(), heuristic, bfs));

@@ -83,8 +83,8 @@ struct PlannerOptions {
   // engines taking turns. Both on since the whole IPC suite gained with them
   // (benchmarks/README.md).
   bool fallback_deferred = true;
-  // EHC's fallback's second GBFS (the typed one) orders its queues by
-  // novelty within h, then h (planner/novelty_table.h).
+  // EHC's fallback's typed eager GBFS orders its queues by novelty within
+  // h, then h (planner/novelty_table.h).
   bool fallback_novelty = true;
   // With continuous change: the heuristic counts the producers (recharges,
   // refuels) the relaxed plan's consumption needs (planner/resource_shortfall.h).
@@ -92,9 +92,13 @@ struct PlannerOptions {
   // Without continuous change: an unmet numeric condition counts the
   // repetitions of a constant producer it needs (planner/numeric_relaxation.h).
   bool count_repetitions = true;
-  // GBFS orders its queues by (novelty, h), novelty of width 1 within the
-  // node's h (planner/novelty_table.h).
+  // GBFS orders its queues by (novelty, h), novelty within the node's h
+  // (planner/novelty_table.h).
   bool novelty = false;
+  // Novelty of facts (1) or of pairs of facts as well (2), for every engine
+  // ordered by novelty. 2 solves storage 2011, which 1 does not
+  // (benchmarks/README.md).
+  int novelty_width = 2;
 };
 
 struct FoundPlan {

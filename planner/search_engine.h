@@ -64,6 +64,7 @@ struct BestFirstOptions {
   // Greedy only: the queues order nodes by (novelty, h), novelty of width 1
   // within the node's h (planner/novelty_table.h), instead of by h alone.
   bool novelty = false;
+  int novelty_width = 1;
   NodeBound prune;
   SearchDeadline deadline;
 };

@@ -43,3 +43,23 @@ TEST_CASE("numeric values and running actions are atoms of novelty too") {
   CHECK(table.novelty(1.0, running) == 1);
   CHECK(table.novelty(1.0, running) == 2);
 }
+
+TEST_CASE("width 2: a state of seen facts is new when two of them were never held together") {
+  NoveltyTable table(2);
+  CHECK(table.novelty(2.0, state_with({1, 2})) == 1);
+  CHECK(table.novelty(2.0, state_with({3, 4})) == 1);
+  CHECK(table.novelty(2.0, state_with({1, 2})) == 3);
+  CHECK(table.novelty(2.0, state_with({1, 4})) == 2);  // 1 and 4 seen, never together
+  CHECK(table.novelty(2.0, state_with({1, 4})) == 3);
+  CHECK(table.novelty(2.0, state_with({0, 129})) == 1);
+  // The novel state's pairs were recorded too: {0, 129} is no longer new.
+  CHECK(table.novelty(2.0, state_with({0, 129, 1})) == 2);  // (0, 1) and (1, 129) are
+  CHECK(table.novelty(2.0, state_with({0, 129})) == 3);
+}
+
+TEST_CASE("width 2 leaves pairs out above its number of facts, and answers as width 1 there") {
+  NoveltyTable table(2, 64);  // the states below have 192 fact slots
+  CHECK(table.novelty(1.0, state_with({1, 2})) == 1);
+  CHECK(table.novelty(1.0, state_with({3, 4})) == 1);
+  CHECK(table.novelty(1.0, state_with({1, 4})) == 3);
+}
