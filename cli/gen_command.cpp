@@ -9,12 +9,14 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
-#include <sstream>
+#include <string>
+#include <vector>
 
 #include "cli/commands.h"
 #include "domains/battery_home.h"
 #include "domains/home_generator.h"
 #include "domains/pddl_files.h"
+#include "pddl_parser/parser.h"
 #include "pddl_parser/writer.h"
 
 namespace alplan::cli {
@@ -31,12 +33,13 @@ struct GenOptions {
 // line, the command that made it, is kept.
 std::string with_batteries(const std::string& problem_text) {
   const std::string domain_file = std::string(ALPLAN_ASSISTED_LIVING_DIR) + "/battery/domain.pddl";
-  std::ifstream in(domain_file, std::ios::binary);
-  std::stringstream domain_text;
-  domain_text << in.rdbuf();
-  if (!in) throw std::invalid_argument(domain_file + ": cannot read the battery domain");
+  std::string domain_text;
+  std::vector<pddl::Diagnostic> io;
+  if (!pddl::read_file(domain_file, domain_text, io)) {
+    throw std::invalid_argument(domain_file + ": cannot read the battery domain");
+  }
   const domains::LoadedFiles files =
-      domains::load_pddl_text(domain_text.str(), domain_file, problem_text, "generated-home.pddl");
+      domains::load_pddl_text(domain_text, domain_file, problem_text, "generated-home.pddl");
   pddl::Problem problem = *files.problem;
   domains::add_batteries(problem, {});
   return problem_text.substr(0, problem_text.find('\n') + 1) +

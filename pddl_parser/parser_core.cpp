@@ -1,7 +1,8 @@
 #include "pddl_parser/parser_core.h"
 
+#include <array>
 #include <fstream>
-#include <sstream>
+#include <string>
 
 namespace alplan::pddl::detail {
 
@@ -123,13 +124,20 @@ bool read_file(const std::string& path, std::string& contents, std::vector<Diagn
     diagnostics.push_back({Severity::Error, path, 0, 0, "cannot open the file"});
     return false;
   }
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
+  // Read into the string ourselves: `buffer << in.rdbuf()` catches a
+  // bad_alloc raised while it copies and only sets failbit, so under a
+  // memory limit it handed the parser a silently truncated file. Growing
+  // the string here lets the allocation failure reach the caller.
+  std::string text;
+  std::array<char, 1 << 16> chunk{};
+  while (in.read(chunk.data(), chunk.size()) || in.gcount() > 0) {
+    text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+  }
   if (in.bad()) {
     diagnostics.push_back({Severity::Error, path, 0, 0, "cannot read the file"});
     return false;
   }
-  contents = std::move(buffer).str();
+  contents = std::move(text);
   return true;
 }
 
