@@ -97,6 +97,9 @@ FactWindows::Fit FactWindows::fit(double start, double duration, const std::vect
                                   const std::vector<FactId>& over_all, const std::vector<FactId>& at_end) const {
   Fit result;
   result.start = start;
+  // Most states restrict no fact (no deadline, no running end deleting what
+  // holds): every window is open for good.
+  if (touched_.empty()) return result;
   for (int round = 0; round < 16; ++round) {
     bool moved_any = false;
     auto check = [&](const std::vector<FactId>& facts, double from, double to) {

@@ -1,5 +1,6 @@
-// Width-1 novelty of a state within its heuristic partition, the measure of
-// best-first width search (Lipovetzky & Geffner, AAAI 2017, "Best-First
+// Novelty of a state (width 1, or 2 with pairs of facts) within its
+// heuristic partition, the measure of best-first width search (Lipovetzky &
+// Geffner, AAAI 2017, "Best-First
 // Width Search: Exploration and Exploitation in Classical Planning") with
 // states partitioned by their h as in Katz, Lipovetzky, Moshkovich & Tuisov
 // (ICAPS 2017, "Adapting Novelty to Classical Planning as Heuristic Search").

@@ -1,5 +1,6 @@
 #include "planner/successor_generator.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "planner/evaluation.h"
@@ -18,6 +19,22 @@ double updated(double current, pddl::AssignOperator op, double value) {
   return value;
 }
 
+void narrow(DurationWindow& window, pddl::Comparison comparison, double v) {
+  if (comparison != pddl::Comparison::LessEqual) window.min = std::max(window.min, v);
+  if (comparison != pddl::Comparison::GreaterEqual) window.max = std::min(window.max, v);
+}
+
+// Whether the expression's value can differ between states.
+bool reads_state(const GroundExpression& e) {
+  using K = GroundExpression::Kind;
+  if (e.kind == K::Variable || e.kind == K::Duration || e.kind == K::TotalTime) return true;
+  return std::any_of(e.operands.begin(), e.operands.end(), [](const GroundExpression& o) { return reads_state(o); });
+}
+
+void settle(DurationWindow& window) {
+  window.valid = window.valid && window.min <= window.max + 1e-9 && window.min >= 0.0;
+}
+
 }  // namespace
 
 DurationWindow duration_window(const GroundAction& action, Moment moment, const SearchState& state,
@@ -27,15 +44,22 @@ DurationWindow duration_window(const GroundAction& action, Moment moment, const 
     for (const GroundDurationConstraint& d : action.duration) {
       if (d.moment != moment) continue;
       if (model && model->changing(d.value)) continue;
-      const double v = evaluate(d.value, state, EvaluationContext{});
-      if (d.comparison != pddl::Comparison::LessEqual) window.min = std::max(window.min, v);
-      if (d.comparison != pddl::Comparison::GreaterEqual) window.max = std::min(window.max, v);
+      narrow(window, d.comparison, evaluate(d.value, state, EvaluationContext{}));
     }
   } catch (const EvaluationError&) {
     window.valid = false;
   }
-  window.valid = window.valid && window.min <= window.max + 1e-9 && window.min >= 0.0;
+  settle(window);
   return window;
+}
+
+std::optional<DurationWindow> constant_duration_window(const GroundAction& action, Moment moment) {
+  for (const GroundDurationConstraint& d : action.duration) {
+    if (d.moment == moment && reads_state(d.value)) return std::nullopt;
+  }
+  // Undefined static values (satellite's slew times between some directions)
+  // throw here once instead of in every evaluation.
+  return duration_window(action, moment, SearchState{});
 }
 
 bool SuccessorGenerator::apply_effects(const HappeningEffects& effects, const SearchState& before, double duration,
@@ -84,6 +108,13 @@ bool SuccessorGenerator::condition_holds(const ConditionSet& c, const SearchStat
   } catch (const EvaluationError&) {
     return false;
   }
+}
+
+SuccessorGenerator::SuccessorGenerator(const TaskIndex& index)
+    : index_(index), continuous_(index.continuous().get()) {
+  const auto& actions = index.task().actions;
+  constant_start_window_.reserve(actions.size());
+  for (const GroundAction& a : actions) constant_start_window_.push_back(constant_duration_window(a, Moment::Start));
 }
 
 bool SuccessorGenerator::attach_continuous(const GroundAction& action, const SearchState& before, double duration,
@@ -150,7 +181,8 @@ void SuccessorGenerator::add_action(const SearchState& state, ActionId id, std::
     return;
   }
   if (state.is_running(id)) return;
-  const DurationWindow window = duration_window(action, Moment::Start, state, continuous_);
+  const std::optional<DurationWindow>& constant = constant_start_window_[id];
+  const DurationWindow window = constant ? *constant : duration_window(action, Moment::Start, state, continuous_);
   if (!window.valid) return;
   // With effects or conditions on ?duration the duration is fixed at start:
   // the shortest and, when bounded and different, the longest are tried.

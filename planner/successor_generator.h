@@ -13,6 +13,7 @@
 #pragma once
 
 #include <deque>
+#include <optional>
 #include <vector>
 
 #include "planner/partial_plan.h"
@@ -26,9 +27,16 @@ struct Successor {
   SearchState state;
 };
 
+// Duration bounds of an action in a state, from its constraints at `moment`.
+struct DurationWindow {
+  double min = 0.0;
+  double max = kInfiniteDuration;
+  bool valid = true;  // false when a bound is undefined or min > max
+};
+
 class SuccessorGenerator {
  public:
-  explicit SuccessorGenerator(const TaskIndex& index) : index_(index), continuous_(index.continuous().get()) {}
+  explicit SuccessorGenerator(const TaskIndex& index);
 
   // Every applicable snap: ends of running actions first, then the next
   // timed literal, then starts and instantaneous actions.
@@ -56,21 +64,23 @@ class SuccessorGenerator {
 
   const TaskIndex& index_;
   const ContinuousModel* continuous_;  // null without continuous change
+  // Per action, its start's duration window when it is the same in every
+  // state (constant_duration_window), read instead of evaluated.
+  std::vector<std::optional<DurationWindow>> constant_start_window_;
   // The continuous parts of the steps generated so far, which the steps
   // point to. Only grows, and only with continuous change; generating is
   // otherwise free of side effects.
   mutable std::deque<ContinuousStep> continuous_steps_;
 };
 
-// Duration bounds of an action in a state, from its constraints at `moment`.
-struct DurationWindow {
-  double min = 0.0;
-  double max = kInfiniteDuration;
-  bool valid = true;  // false when a bound is undefined or min > max
-};
 // Constraints on continuously changing values are left out (`model`): the
 // schedule enforces them.
 DurationWindow duration_window(const GroundAction& action, Moment moment, const SearchState& state,
                                const ContinuousModel* model = nullptr);
+// The same window, when no constraint at `moment` reads the state: a number
+// (most IPC durations, static functions folded in) or a static value the
+// problem leaves undefined; none when one reads the state. The relaxation
+// asks for every reachable start in every evaluation, so it reads this once.
+std::optional<DurationWindow> constant_duration_window(const GroundAction& action, Moment moment);
 
 }  // namespace alplan

@@ -103,6 +103,9 @@ class TemporalRpg::Exploration {
   Stamped<Achiever> achiever_;
   Stamped<std::uint32_t> start_count_, end_count_, axiom_count_;
   Stamped<char> processed_, parked_start_, parked_end_, counted_start_, counted_end_;
+  // The state's running actions, as a lookup: SearchState::is_running scans
+  // its list, and try_end asks for every end the exploration reaches.
+  Stamped<char> running_;
   std::vector<Interval> bounds_;
   // A changing variable's greatest value now where the bounds asked the
   // schedule for it, NaN elsewhere.
@@ -149,6 +152,7 @@ TemporalRpg::TemporalRpg(const TaskIndex& index, TemporalRpgOptions options, std
   x.parked_end_.resize(actions, 0);
   x.counted_start_.resize(actions, 0);
   x.counted_end_.resize(actions, 0);
+  x.running_.resize(actions, 0);
   x.axiom_count_.resize(task.axioms.size(), 0);
   x.bounds_.resize(task.numeric.size());
   x.greatest_now_.resize(task.numeric.size());
@@ -197,6 +201,9 @@ std::shared_ptr<const TemporalRpg::Graph> TemporalRpg::build(const TaskIndex& in
     const GroundAction& g = task.actions[a];
     RelaxedAction& r = graph->actions[a];
     r.durative = g.durative;
+    if (const std::optional<DurationWindow> w = constant_duration_window(g, Moment::Start)) {
+      r.fixed_duration = w->valid ? w->min : -1.0;
+    }
     adds(g.start, r.start_add, r.start_numeric_effects);
     if (g.durative) {
       adds(g.end, r.end_add, r.end_numeric_effects);
@@ -394,6 +401,8 @@ std::vector<FactId> TemporalRpg::unreached_goals() const {
 }
 
 double TemporalRpg::Exploration::duration_of(ActionId a) {
+  const double fixed = rpg_.actions_[a].fixed_duration;
+  if (!std::isnan(fixed)) return fixed;
   const DurationWindow w = duration_window(rpg_.index_.task().actions[a], Moment::Start, *state_, continuous_);
   return w.valid ? w.min : -1.0;
 }
@@ -453,7 +462,8 @@ void TemporalRpg::Exploration::try_end(ActionId a) {
   const GroundAction& g = rpg_.index_.task().actions[a];
   const double end = end_ready_.at(a, generation_);
   // A running action's end: its invariant was checked as it ran.
-  if (!state_->is_running(a)) {
+  const bool running = running_.at(a, generation_);
+  if (!running) {
     const double start = started_at_.at(a, generation_);
     static const std::vector<FactId> kNone;
     const FactWindows::Fit fit = windows_.fit(start, end - start, kNone, g.over_all.positive, g.at_end.positive);
@@ -468,10 +478,10 @@ void TemporalRpg::Exploration::try_end(ActionId a) {
       return;
     }
   }
-  const double cost = (state_->is_running(a) ? 1.0 : start_cost_.at(a, generation_) + 1.0) + cost_of(r.end_pre);
+  const double cost = (running ? 1.0 : start_cost_.at(a, generation_) + 1.0) + cost_of(r.end_pre);
   for (FactId f : r.end_add) reach(f, end + plan_->epsilon(), {AchieverKind::End, a}, cost);
   apply_numeric(r.end_numeric_effects, a);
-  if (state_->is_running(a)) apply_numeric(r.end_returns, a);
+  if (running) apply_numeric(r.end_returns, a);
 }
 
 bool TemporalRpg::Exploration::process_next() {
@@ -550,12 +560,13 @@ HeuristicValue TemporalRpg::Exploration::run(const SearchState& state, const Par
     if (til.positive) reach(til.fact, til.time + plan.epsilon(), {AchieverKind::TimedLiteral, t}, 0.0);
   }
   for (const RunningAction& running : state.running()) {
+    running_.at(running.action, generation_) = 1;
     double& ready = end_ready_.at(running.action, generation_);
     ready = std::max(ready, plan.pending_end_time(running.action));
     --end_count_.at(running.action, generation_);
   }
   for (ActionId a = 0; a < rpg_.actions_.size(); ++a) {
-    if (rpg_.actions_[a].start_pre.empty() && !state.is_running(a)) try_start(a, 0.0);
+    if (rpg_.actions_[a].start_pre.empty() && !running_.at(a, generation_)) try_start(a, 0.0);
   }
   for (const RunningAction& running : state.running()) {
     if (end_count_.at(running.action, generation_) == 0) try_end(running.action);

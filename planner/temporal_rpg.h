@@ -81,6 +81,9 @@ class TemporalRpg {
     // made the variable unbounded (pathways, benchmarks/README.md).
     std::vector<const NumericAssignment*> end_returns;
     bool durative = false;
+    // The start's minimum duration when no duration constraint reads the
+    // state, -1 when they admit none; NaN: evaluated per state.
+    double fixed_duration = std::numeric_limits<double>::quiet_NaN();
   };
   struct Event {
     double time;
