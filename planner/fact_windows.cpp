@@ -26,11 +26,12 @@ void FactWindows::reset(const SearchState& state, const PartialPlan& plan) {
   touched_.clear();
   // Deadlines from running actions whose end deletes a fact true now.
   std::vector<std::pair<FactId, double>> closing;
-  for (const RunningAction& r : state.running()) {
-    const double latest = plan.latest_end_time(r.action);
-    if (latest == kInfinity) continue;
-    for (FactId f : task_.actions[r.action].end.del) {
-      if (state.fact(f)) closing.emplace_back(f, latest);
+  const std::vector<RunningAction>& running = state.running();
+  const std::vector<double> latest = running.empty() ? std::vector<double>{} : plan.latest_end_times(running);
+  for (std::size_t i = 0; i < running.size(); ++i) {
+    if (latest[i] == kInfinity) continue;
+    for (FactId f : task_.actions[running[i].action].end.del) {
+      if (state.fact(f)) closing.emplace_back(f, latest[i]);
     }
   }
   std::vector<FactId> candidates;

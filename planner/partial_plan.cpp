@@ -221,20 +221,34 @@ double PartialPlan::pending_end_time(ActionId action) const {
   return 0.0;
 }
 
-double PartialPlan::latest_end_time(ActionId action) const {
-  auto p = std::find_if(pending_.begin(), pending_.end(), [&](const PendingEnd& e) { return e.action == action; });
-  if (p == pending_.end()) return kInfiniteDuration;
-  double latest_end = kInfiniteDuration;
-  double latest_start = p->start_node == 0 ? 0.0 : kInfiniteDuration;
+std::vector<double> PartialPlan::latest_end_times(const std::vector<RunningAction>& running) const {
+  std::vector<double> latest_end(running.size(), kInfiniteDuration), latest_start(running.size(), kInfiniteDuration);
+  std::vector<const PendingEnd*> pending(running.size(), nullptr);
+  // Per network node, 1 + the index in `running` of the action it starts or
+  // ends there (0: none).
+  std::vector<std::uint32_t> starting(network_.size(), 0), ending(network_.size(), 0);
+  for (std::uint32_t i = 0; i < running.size(); ++i) {
+    const ActionId action = running[i].action;
+    auto p = std::find_if(pending_.begin(), pending_.end(), [&](const PendingEnd& e) { return e.action == action; });
+    if (p == pending_.end()) continue;
+    pending[i] = &*p;
+    if (p->start_node == 0) latest_start[i] = 0.0;
+    else starting[p->start_node] = i + 1;
+    ending[p->node] = i + 1;
+  }
   for (const TemporalEdge& e : network_.edges()) {
-    if (e.from == p->start_node && e.to != p->node && p->start_node != 0) {
-      latest_start = std::min(latest_start, network_.earliest(e.to) - e.weight);
+    if (const std::uint32_t i = starting[e.from]; i != 0 && e.to != pending[i - 1]->node) {
+      latest_start[i - 1] = std::min(latest_start[i - 1], network_.earliest(e.to) - e.weight);
     }
-    if (e.from == p->node && e.to != p->start_node) {
-      latest_end = std::min(latest_end, network_.earliest(e.to) - e.weight);
+    if (const std::uint32_t i = ending[e.from]; i != 0 && e.to != pending[i - 1]->start_node) {
+      latest_end[i - 1] = std::min(latest_end[i - 1], network_.earliest(e.to) - e.weight);
     }
   }
-  if (p->max_duration < kInfiniteDuration) latest_end = std::min(latest_end, latest_start + p->max_duration);
+  for (std::size_t i = 0; i < running.size(); ++i) {
+    if (pending[i] && pending[i]->max_duration < kInfiniteDuration) {
+      latest_end[i] = std::min(latest_end[i], latest_start[i] + pending[i]->max_duration);
+    }
+  }
   return latest_end;
 }
 

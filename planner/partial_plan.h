@@ -82,10 +82,12 @@ class PartialPlan {
   std::vector<std::pair<ActionId, std::vector<NumericVarId>>> invariants_failing_at_end() const;
   // The earliest time the end of a running action can come.
   double pending_end_time(ActionId action) const;
-  // The latest time the end of a running action can come with every other
-  // step at its earliest time: how much room the action has left. Infinite
-  // when nothing bounds it.
-  double latest_end_time(ActionId action) const;
+  // For each of `running`, in its order: the latest time its end can come
+  // with every other step at its earliest time, how much room the action has
+  // left; infinite when nothing bounds it. One pass over the network's edges
+  // for all of them: the search asks per child, the relaxation per
+  // evaluation, and a pass per action grew with running actions x edges.
+  std::vector<double> latest_end_times(const std::vector<RunningAction>& running) const;
   // The latest earliest time of a step taken (running actions' ends aside).
   double frontier() const;
   // The latest earliest time of a step that is not a timed literal, or of

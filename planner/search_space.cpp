@@ -22,7 +22,7 @@ SearchSpace::SearchSpace(const TaskIndex& index, const SearchStart& start, doubl
 TemporalSignature SearchSpace::signature_of(const SearchState& state, const PartialPlan& plan) {
   TemporalSignature signature;
   signature.frontier = plan.frontier();
-  for (const RunningAction& r : state.running()) signature.latest_ends.push_back(plan.latest_end_time(r.action));
+  signature.latest_ends = plan.latest_end_times(state.running());
   return signature;
 }
 
