@@ -1,12 +1,12 @@
 // Novelty of a state (width 1, or 2 with pairs of facts) within its
 // heuristic partition, the measure of best-first width search (Lipovetzky &
-// Geffner, AAAI 2017, "Best-First
-// Width Search: Exploration and Exploitation in Classical Planning") with
-// states partitioned by their h as in Katz, Lipovetzky, Moshkovich & Tuisov
-// (ICAPS 2017, "Adapting Novelty to Classical Planning as Heuristic Search").
+// Geffner, AAAI 2017, "Best-First Width Search: Exploration and Exploitation
+// in Classical Planning") with states partitioned by their h as in Katz,
+// Lipovetzky, Moshkovich & Tuisov (ICAPS 2017, "Adapting Novelty to Classical
+// Planning as Heuristic Search").
 //
 // A state is novel (novelty 1) when it holds an atom no earlier state of the
-// same h held; otherwise its novelty is 2 (width above 1, not told apart).
+// same h held; otherwise, at width 1, its novelty is 2 (not told apart).
 // Ordering a greedy queue by (novelty, h) sends it first to states that make
 // something new true at their level of h: on a plateau where every step
 // lowers h into a dead end the relaxation cannot see (storage's sealed
