@@ -43,6 +43,7 @@ struct PlanOptions {
   bool novelty = PlannerOptions{}.novelty;
   int novelty_width = PlannerOptions{}.novelty_width;
   bool fallback_novelty = PlannerOptions{}.fallback_novelty;
+  bool goal_orders = PlannerOptions{}.goal_orders;
   bool fallback_deferred = PlannerOptions{}.fallback_deferred;
   std::optional<std::uint64_t> ehc_expansions;
   double ehc_time_share = PlannerOptions{}.ehc_time_share;
@@ -160,6 +161,7 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
   planner_options.novelty = options.novelty;
   planner_options.novelty_width = options.novelty_width;
   planner_options.fallback_novelty = options.fallback_novelty;
+  planner_options.goal_orders = options.goal_orders;
   planner_options.fallback_deferred = options.fallback_deferred;
   if (options.ehc_expansions) planner_options.ehc_expansions = *options.ehc_expansions;
   planner_options.ehc_time_share = options.ehc_time_share;
@@ -293,6 +295,9 @@ void add_plan_command(CLI::App& app, int& exit_code) {
                 "The typed GBFS of EHC's fallback orders its queues by novelty within h, then h (default on)");
   cmd->add_flag("--fallback-deferred,!--no-fallback-deferred", options->fallback_deferred,
                 "EHC's fallback adds a GBFS with deferred evaluation to the GBFS and wastar taking turns (default on)");
+  cmd->add_flag("--goal-orders,!--no-goal-orders", options->goal_orders,
+                "EHC and the plain GBFS of its fallback prune states holding a goal that another, still false, must "
+                "precede (orders from h^2 mutexes, Koehler & Hoffmann 2000; default on)");
   cmd->add_flag("!--no-relevance", options->prune_irrelevant,
                 "Search every ground action, not only those that can contribute to the goal");
   cmd->add_flag("!--no-repetitions", options->count_repetitions,

@@ -99,6 +99,7 @@ struct EngineChoice {
   bool deferred = false;  // evaluates nodes when it expands them (or all do, by the options)
   bool typed = false;     // type-based exploration; greedy engines only
   bool novelty = false;   // ordered by (novelty, h); greedy engines only
+  bool goal_orders = false;  // prunes states that break the goal orders
 };
 
 struct Phase {
@@ -147,6 +148,7 @@ void add(SearchStatistics& into, const SearchStatistics& s) {
 // h must be fresh (benchmarks/README.md).
 std::vector<EngineChoice> fallback_engines(const PlannerOptions& options) {
   std::vector<EngineChoice> engines{{"gbfs"}};
+  engines.front().goal_orders = options.goal_orders;
   // The typed eager GBFS orders its queues by novelty first, h second
   // (best-first width search): storage 2011 and 2014, depots 4 and
   // parc-printer 5, where every order by h walks into the same dead ends the
@@ -160,11 +162,13 @@ std::vector<EngineChoice> fallback_engines(const PlannerOptions& options) {
 }
 
 PhaseOutcome run_phase(const Phase& phase, const TaskIndex& index, const SearchStart& start, TemporalRpg& heuristic,
-                       const BestFirstOptions& base, const PlannerOptions& options) {
+                       const BestFirstOptions& base, const PlannerOptions& options,
+                       const std::shared_ptr<const GoalOrders>& orders) {
   std::vector<std::unique_ptr<SearchSpace>> spaces;
   std::vector<std::unique_ptr<SearchEngine>> engines;
   for (const EngineChoice& choice : phase.engines) {
     spaces.push_back(std::make_unique<SearchSpace>(index, start, options.epsilon));
+    if (choice.goal_orders && orders && !orders->empty()) spaces.back()->prune_by(orders);
     BestFirstOptions bfs = base;
     bfs.weight = choice.weight;
     // GBFS and EHC stay greedy on steps.
@@ -404,6 +408,15 @@ PlannerResult Planner::search_from(const PlanningStart& start, const std::functi
     workspace_->index = shared_index;
     workspace_->graph = heuristic.graph();
   }
+  // The goal orders cost an h^2 fixpoint, paid only where an engine prunes
+  // with them; from a state with actions running they are not computed (the
+  // compressed task has no running actions to start from).
+  std::shared_ptr<const GoalOrders> orders;
+  if (options_.goal_orders && options_.search == "ehc" && start.running.empty()) {
+    GoalOrderOptions order_options;
+    order_options.mutexes.deadline = deadline;
+    orders = std::make_shared<const GoalOrders>(*task_, start.facts, order_options);
+  }
   const bool from_initial = is_initial(*task_, start);
   // Plans from an observed state are checked by validate_from; the plan
   // validator (which grounds the task again for itself) only from the start.
@@ -418,6 +431,7 @@ PlannerResult Planner::search_from(const PlanningStart& start, const std::functi
   std::vector<Phase> pipeline;
   if (options_.search == "ehc") {
     pipeline = {{{{"ehc"}}, options_.ehc_expansions}, {fallback_engines(options_), 0, false}};
+    pipeline[0].engines.front().goal_orders = options_.goal_orders;
     // EHC's children are scheduled against a plan that grows with its
     // climb, so its expansions can slow until the budget in expansions is
     // never spent and the fallback never runs (depots, benchmarks/README.md).
@@ -457,7 +471,7 @@ PlannerResult Planner::search_from(const PlanningStart& start, const std::functi
       };
     }
     const PhaseOutcome outcome =
-        run_phase(pipeline[phase], index, search_start, heuristic, bfs, options_);
+        run_phase(pipeline[phase], index, search_start, heuristic, bfs, options_, orders);
     add(result.statistics, outcome.statistics);
     // EHC gave up and the fallback takes over, or an anytime weight gave up
     // and the next one tries.

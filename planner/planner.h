@@ -86,6 +86,11 @@ struct PlannerOptions {
   // EHC's fallback's typed eager GBFS orders its queues by novelty within
   // h, then h (planner/novelty_table.h).
   bool fallback_novelty = true;
+  // EHC and the plain GBFS of its fallback treat a state that holds a goal
+  // which another goal must precede, without that goal, as a dead end
+  // (planner/goal_orders.h); the fallback's other engines do not, so the
+  // portfolio stays complete.
+  bool goal_orders = true;
   // With continuous change: the heuristic counts the producers (recharges,
   // refuels) the relaxed plan's consumption needs (planner/resource_shortfall.h).
   bool resource_balance = true;

@@ -91,6 +91,13 @@ std::vector<Child> SearchSpace::children(NodeId id, const PartialPlan& plan, Sea
 bool SearchSpace::evaluate_node(SearchNode& node, const PartialPlan& plan, TemporalRpg& heuristic,
                                 SearchStatistics& stats) const {
   ++stats.evaluated;
+  if (orders_ && orders_->broken_by(node.state)) {
+    node.h = std::numeric_limits<double>::infinity();
+    node.helpful.clear();
+    node.evaluated = true;
+    ++stats.dead_ends;
+    return false;
+  }
   HeuristicValue value = heuristic.evaluate(node.state, plan);
   node.h = value.h;
   node.helpful = std::move(value.helpful);

@@ -11,6 +11,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "planner/goal_orders.h"
 #include "planner/partial_plan.h"
 #include "planner/search_state.h"
 #include "planner/successor_generator.h"
@@ -112,6 +113,9 @@ class SearchSpace {
 
   const TaskIndex& index() const { return index_; }
   double epsilon() const { return epsilon_; }
+  // Children that break one of these goal orders are dead ends here, before
+  // the heuristic is asked (planner/goal_orders.h); null: none.
+  void prune_by(std::shared_ptr<const GoalOrders> orders) { orders_ = std::move(orders); }
 
  private:
   const TaskIndex& index_;
@@ -123,6 +127,7 @@ class SearchSpace {
   bool evaluate_node(SearchNode& node, const PartialPlan& plan, TemporalRpg& heuristic, SearchStatistics& stats) const;
 
   bool deadlines_;  // the task has timed initial literals
+  std::shared_ptr<const GoalOrders> orders_;
   std::deque<SearchNode> nodes_;
   std::unordered_map<const SearchState*, std::vector<NodeId>, SearchStateHash, SearchStateEqual> seen_;
 };
