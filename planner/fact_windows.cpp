@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "planner/successor_generator.h"
+
 namespace alplan {
 namespace {
 
@@ -16,6 +18,48 @@ FactWindows::FactWindows(const GroundTask& task) : task_(task) {
   for (std::uint32_t t = 0; t < task.timed_literals.size(); ++t) literals_of_[task.timed_literals[t].fact].push_back(t);
   restricted_.assign(task.facts.size(), 0);
   windows_.resize(task.facts.size());
+  find_windowed_facts();
+}
+
+void FactWindows::find_windowed_facts() {
+  const std::size_t facts = task_.facts.size();
+  windowed_.assign(facts, 0);
+  spans_.resize(facts);
+  provider_span_.assign(task_.actions.size(), 0.0);
+  std::vector<char> given(facts, 0), ruled_out(facts, 0);
+  auto contains = [](const std::vector<FactId>& v, FactId f) { return std::find(v.begin(), v.end(), f) != v.end(); };
+  for (std::size_t a = 0; a < task_.actions.size(); ++a) {
+    const GroundAction& action = task_.actions[a];
+    for (const HappeningEffects* effects : {&action.start, &action.end}) {
+      for (const ConditionalEffect& conditional : effects->conditional) {
+        for (FactId f : conditional.add) ruled_out[f] = 1;
+      }
+    }
+    for (FactId f : action.end.add) ruled_out[f] = 1;
+    if (!action.durative) {
+      for (FactId f : action.start.add) ruled_out[f] = 1;
+      continue;
+    }
+    const std::optional<DurationWindow> window = constant_duration_window(action, Moment::Start);
+    const bool bounded = window && window->valid && window->max < kInfiniteDuration;
+    for (FactId f : action.start.add) {
+      if (bounded && contains(action.end.del, f)) {
+        given[f] = 1;
+        provider_span_[a] = window->max;
+      } else {
+        ruled_out[f] = 1;
+      }
+    }
+  }
+  for (const GroundTimedLiteral& literal : task_.timed_literals) ruled_out[literal.fact] = 1;
+  for (FactId f = 0; f < facts; ++f) {
+    if (given[f] && !ruled_out[f]) {
+      windowed_[f] = 1;
+      windowed_facts_.push_back(f);
+    }
+  }
+  // A provider's span counts only for the windowed facts it gives; one that
+  // gives none keeps its span unused.
 }
 
 void FactWindows::reset(const SearchState& state, const PartialPlan& plan) {
@@ -65,6 +109,41 @@ void FactWindows::reset(const SearchState& state, const PartialPlan& plan) {
     windows_[f] = std::move(windows);
     touched_.push_back(f);
   }
+  // Windowed facts are always restricted: what the state holds of them is
+  // their window now (closing when a running provider ends), and achievers
+  // in the relaxation give spans.
+  for (FactId f : windowed_facts_) {
+    spans_[f].clear();
+    if (restricted_[f]) continue;
+    restricted_[f] = 1;
+    if (state.fact(f)) windows_[f].emplace_back(plan.available_from(f), kInfinity);
+    touched_.push_back(f);
+  }
+}
+
+bool FactWindows::open_span(FactId f, double time, double length, ActionId provider) {
+  std::vector<Span>& spans = spans_[f];
+  for (const Span& s : spans) {
+    if (s.from <= time + kTolerance && s.length >= length - kTolerance) return false;
+  }
+  spans.push_back({time, length, provider});
+  return true;
+}
+
+ActionId FactWindows::span_provider(FactId f, double length) const {
+  const Span* best = nullptr;
+  for (const Span& s : spans_[f]) {
+    if (s.length >= length - kTolerance && (!best || s.from < best->from)) best = &s;
+  }
+  return best ? best->provider : kNoId;
+}
+
+double FactWindows::span_delay(FactId f, double from, double length) const {
+  double delay = kInfinity;
+  for (const Span& s : spans_[f]) {
+    if (s.length >= length - kTolerance) delay = std::min(delay, std::max(0.0, s.from - from));
+  }
+  return delay;
 }
 
 bool FactWindows::open_from(FactId f, double time) {
@@ -108,6 +187,11 @@ FactWindows::Fit FactWindows::fit(double start, double duration, const std::vect
         if (!restricted_[f]) continue;
         double moved = 0.0;
         if (covers(f, result.start + from, result.start + to, moved)) continue;
+        if (windowed_[f]) {
+          const double delay = span_delay(f, result.start + from, to - from);
+          if (delay <= kTolerance) continue;
+          moved = std::min(moved, delay);
+        }
         if (moved == kInfinity) {
           result.ok = false;
           result.blocking = f;

@@ -4,6 +4,15 @@
 // (no later than the latest time that end can come). An action that achieves
 // the fact again makes it usable for good from then on. This is how POPF's
 // relaxed planning graph respects deadlines (Coles et al. 2010, Section 5).
+//
+// Beyond POPF: a fact that only durative actions give, each at its start,
+// taking it back at its end (a kiln's `ready`, a lit match's `light`), is
+// "windowed". Achieved again in the relaxation, it is usable not for good but
+// for spans as long as the achiever lasts, from its earliest start on: an
+// action holding the fact over all fits only if its duration fits inside
+// such a span (required concurrency, temporal-machine-shop's bakes inside a
+// firing long enough for them, benchmarks/README.md). The achiever may start
+// at any time after its earliest, so any later span of that length counts.
 #pragma once
 
 #include <cstdint>
@@ -19,6 +28,16 @@ namespace alplan {
 class FactWindows {
  public:
   explicit FactWindows(const GroundTask& task);
+
+  bool windowed(FactId fact) const { return windowed_[fact]; }
+  // How long the fact an action gives at its start lasts when the action's
+  // end takes it back: the action's longest duration (0 if not a provider).
+  double provider_span(ActionId action) const { return provider_span_[action]; }
+  // A windowed fact becomes usable, from `time` on, for spans of `length`.
+  // True if no span known before was at least as long from as early.
+  bool open_span(FactId fact, double time, double length, ActionId provider);
+  // The provider of the earliest span at least `length` long (kNoId: none).
+  ActionId span_provider(FactId fact, double length) const;
 
   // Recomputes the windows for a state and the partial plan behind it.
   void reset(const SearchState& state, const PartialPlan& plan);
@@ -42,12 +61,25 @@ class FactWindows {
  private:
   using Window = std::pair<double, double>;  // [open, close)
   bool covers(FactId fact, double from, double to, double& moved) const;
+  // The least delay after `from` at which a span holds [from, from + length]
+  // (infinity when none is long enough).
+  double span_delay(FactId fact, double from, double length) const;
+  void find_windowed_facts();
+
+  struct Span {
+    double from = 0.0, length = 0.0;
+    ActionId provider = kNoId;
+  };
 
   const GroundTask& task_;
   std::vector<std::vector<std::uint32_t>> literals_of_;  // fact -> timed literals on it, in time order
   std::vector<char> restricted_;
   std::vector<std::vector<Window>> windows_;
   std::vector<FactId> touched_;
+  std::vector<char> windowed_;
+  std::vector<FactId> windowed_facts_;
+  std::vector<double> provider_span_;  // by action
+  std::vector<std::vector<Span>> spans_;  // by windowed fact; cleared by reset
 };
 
 }  // namespace alplan

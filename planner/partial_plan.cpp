@@ -22,6 +22,18 @@ bool interfere(const Footprint& a, const Footprint& b) {
          intersects(a.reads_values, b.writes_values);
 }
 
+// Whether `ender`'s end deletes (and does not give back) a fact `holder`
+// needs over all: `ender` may not end while `holder` runs.
+bool end_threatens(const GroundAction& ender, const GroundAction& holder) {
+  for (FactId f : holder.over_all.positive) {
+    if (std::find(ender.end.del.begin(), ender.end.del.end(), f) != ender.end.del.end() &&
+        std::find(ender.end.add.begin(), ender.end.add.end(), f) == ender.end.add.end()) {
+      return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 PartialPlan::PartialPlan(const TaskIndex& index, double epsilon, double release,
@@ -133,6 +145,17 @@ bool PartialPlan::append(const StepRecord& step) {
     facts_.add_constraints(end_fp.reads, end_fp.writes, end, epsilon_, edges, node_of_step_);
     values_.add_constraints(end_fp.reads_values, end_fp.writes_values, end, epsilon_, edges, node_of_step_);
     // The new start itself precedes the ends of the others it touches.
+    // An end that would break a running action's invariant can come only
+    // after that action's end (the successor generator refuses it before):
+    // said now, a start that cannot finish before such an end fails here,
+    // not many steps below (a bake in a firing too short for it).
+    const GroundAction& started = index_->task().actions[step.snap.index];
+    for (const PendingEnd& p : pending_) {
+      if (p.action == step.snap.index) continue;
+      const GroundAction& other = index_->task().actions[p.action];
+      if (end_threatens(other, started)) edges.push_back({end, p.node, epsilon_});
+      if (end_threatens(started, other)) edges.push_back({p.node, end, epsilon_});
+    }
   }
   std::vector<NumericVarId> invariant_reads;
   if (continuous_) {

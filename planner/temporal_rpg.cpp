@@ -268,7 +268,16 @@ std::shared_ptr<const TemporalRpg::Graph> TemporalRpg::build(const TaskIndex& in
 
 void TemporalRpg::Exploration::reach(FactId f, double time, Achiever achiever, double cost) {
   const bool by_action = achiever.kind != AchieverKind::State && achiever.kind != AchieverKind::TimedLiteral;
-  if (by_action && windows_.open_from(f, time)) {
+  bool opened = false;
+  if (by_action && windows_.windowed(f)) {
+    // Only providers' starts give a windowed fact: usable for their span,
+    // less the separations before a holder starts and after it ends.
+    const double span = windows_.provider_span(achiever.index) - 2.0 * plan_->epsilon();
+    opened = achiever.kind == AchieverKind::Start && span >= 0.0 && windows_.open_span(f, time, span, achiever.index);
+  } else if (by_action) {
+    opened = windows_.open_from(f, time);
+  }
+  if (opened) {
     // Actions that waited for this fact to become usable again retry.
     std::vector<std::pair<ActionId, bool>> waiting = std::move(parked_on_[f]);
     parked_on_[f].clear();
@@ -568,6 +577,17 @@ HeuristicValue TemporalRpg::Exploration::run(const SearchState& state, const Par
   for (ActionId a = 0; a < rpg_.actions_.size(); ++a) {
     if (rpg_.actions_[a].start_pre.empty() && !running_.at(a, generation_)) try_start(a, 0.0);
   }
+  // A running provider of windowed facts that needs nothing to start can
+  // fire again once it ends: spans from then on (the relaxation starts no
+  // second copy of a running action).
+  for (const RunningAction& running : state.running()) {
+    const double span = windows_.provider_span(running.action) - 2.0 * plan.epsilon();
+    if (span < 0.0 || !rpg_.actions_[running.action].start_pre.empty()) continue;
+    const double again = plan.pending_end_time(running.action) + 2.0 * plan.epsilon();
+    for (FactId f : task.actions[running.action].start.add) {
+      if (windows_.windowed(f)) windows_.open_span(f, again, span, running.action);
+    }
+  }
   for (const RunningAction& running : state.running()) {
     if (end_count_.at(running.action, generation_) == 0) try_end(running.action);
   }
@@ -740,7 +760,19 @@ HeuristicValue TemporalRpg::Exploration::extract(const SearchState& state, doubl
     count += 1.0;
     if (metric) value.cost += metric->start_cost[a] + metric->end_cost[a];
     const RelaxedAction& r = rpg_.actions_[a];
-    open.insert(open.end(), r.start_pre.begin(), r.start_pre.end());
+    for (FactId f : r.start_pre) {
+      // A windowed fact held over all comes from a provider whose span is
+      // long enough for this action, not from the fact's earliest achiever
+      // (a bake of 15 needs the 20-unit firing, not the 8-unit one).
+      const ActionId provider = r.durative && windows_.windowed(f) && !state.fact(f)
+                                    ? windows_.span_provider(f, std::max(0.0, duration_of(a)))
+                                    : kNoId;
+      if (provider != kNoId && provider != a) {
+        numeric_support.push_back(provider);
+      } else {
+        open.push_back(f);
+      }
+    }
     need_numeric(r.start_numeric);
   };
   auto count_end = [&](ActionId a) {
@@ -748,9 +780,16 @@ HeuristicValue TemporalRpg::Exploration::extract(const SearchState& state, doubl
     counted_end_.at(a, generation_) = 1;
     count += 1.0;
     const RelaxedAction& r = rpg_.actions_[a];
-    open.insert(open.end(), r.end_pre.begin(), r.end_pre.end());
+    const bool running = state.is_running(a);
+    const std::vector<FactId>& invariant = task.actions[a].over_all.positive;
+    for (FactId f : r.end_pre) {
+      // The start chose the provider of a windowed invariant.
+      const bool chosen = !running && windows_.windowed(f) && !state.fact(f) &&
+                          std::find(invariant.begin(), invariant.end(), f) != invariant.end();
+      if (!chosen) open.push_back(f);
+    }
     need_numeric(r.end_numeric);
-    if (!state.is_running(a)) count_start(a);
+    if (!running) count_start(a);
   };
   auto drain = [&] {
     while (!open.empty() || !numeric_support.empty()) {
