@@ -5,7 +5,10 @@ include(${CMAKE_CURRENT_LIST_DIR}/expect_run.cmake)
 
 set(ipc ${SHARED}/benchmarks/ipc)
 set(zeno ${ipc}/ipc-2002/zenotravel-time-simple-automatic)
-set(floor ${ipc}/ipc-2011/floor-tile-temporal-satisficing)
+# Not solved in 60 s by any engine (benchmarks/README.md): a limit at 0.3 s on
+# any machine. (Floor-tile 2011 instance 5 was, until goal orders solved it in
+# 0.2 s.)
+set(train ${ipc}/ipc-2008/model-train-temporal-satisficing-numeric-fluents)
 set(data ${DATA}/planner)
 
 expect_run(0 "; plan found" ${ALPLAN} plan ${zeno}/domain.pddl ${zeno}/instances/instance-1.pddl
@@ -17,7 +20,8 @@ expect_run(0 "\"status\": \"solved\"" ${ALPLAN} plan --json --search wastar --we
   ${data}/mixed-domain.pddl ${data}/mixed-problem.pddl)
 expect_run(10 "the goal can never hold ((at island))" ${ALPLAN} plan ${data}/mixed-domain.pddl
   ${data}/mixed-unreachable.pddl)
-expect_run(11 "limit" ${ALPLAN} plan --time-limit 0.3 ${floor}/domain.pddl ${floor}/instances/instance-5.pddl)
+expect_run(11 "limit" ${ALPLAN} plan --time-limit 0.3 ${train}/domain.pddl ${train}/instances/instance-2.pddl)
+expect_run(0 "; plan found" ${ALPLAN} plan --no-goal-orders ${zeno}/domain.pddl ${zeno}/instances/instance-1.pddl)
 expect_run(0 "(fill) [5.000]" ${ALPLAN} plan ${data}/tank-continuous.pddl ${data}/tank-problem.pddl)
 expect_run(2 "non-linear in #t" ${ALPLAN} plan ${data}/tank-nonlinear.pddl ${data}/tank-problem.pddl)
 expect_run(2 "no-such-file.pddl" ${ALPLAN} plan ${data}/no-such-file.pddl ${data}/tank-problem.pddl)
