@@ -47,11 +47,12 @@ std::vector<CompressedAction> compress_actions(const GroundTask& task) {
   std::vector<CompressedAction> actions;
   for (const GroundAction& action : task.actions) {
     if (never(action)) continue;
-    actions.push_back(compress(action));
+    const CompressedAction base = compress(action);
+    actions.push_back(base);
     for (const HappeningEffects* effects : {&action.start, &action.end}) {
       for (const ConditionalEffect& conditional : effects->conditional) {
         if (conditional.condition.never || conditional.add.empty()) continue;
-        CompressedAction with = actions.back();
+        CompressedAction with = base;
         append(with.pre, conditional.condition.positive);
         append(with.add, conditional.add);
         sort_unique(with.pre);

@@ -45,7 +45,6 @@ struct GoalOrderOptions {
 
 class GoalOrders {
  public:
-  GoalOrders() = default;
   // Orders for a search from the facts `start` (nothing running).
   GoalOrders(const GroundTask& task, const std::vector<FactId>& start, const GoalOrderOptions& options = {});
 

@@ -47,14 +47,6 @@ std::shared_ptr<const GroundTask> column(const std::string& goal) {
   return ground(test::load_task_text(kColumn, column_problem(goal)).normalized);
 }
 
-FactId fact_named(const GroundTask& task, const std::string& name) {
-  for (FactId f = 0; f < task.facts.size(); ++f) {
-    if (task.fact_name(f) == name) return f;
-  }
-  FAIL("no fact " << name);
-  return kNoId;
-}
-
 }  // namespace
 
 TEST_CASE("h^2 finds that a painted tile is never stood on, and two painted tiles can hold together",
@@ -62,22 +54,22 @@ TEST_CASE("h^2 finds that a painted tile is never stood on, and two painted tile
   const auto task = column("(painted t2) (painted t3)");
   const FactPairMutexes mutexes(*task, task->initial_facts);
   REQUIRE(mutexes.analysed());
-  const FactId painted2 = fact_named(*task, "(painted t2)");
-  const FactId painted3 = fact_named(*task, "(painted t3)");
-  CHECK_FALSE(mutexes.reachable(fact_named(*task, "(at r t2)"), painted2));
-  CHECK_FALSE(mutexes.reachable(fact_named(*task, "(clear t2)"), painted2));
-  CHECK_FALSE(mutexes.reachable(fact_named(*task, "(at r t1)"), fact_named(*task, "(clear t1)")));
+  const FactId painted2 = test::fact_named(*task, "(painted t2)");
+  const FactId painted3 = test::fact_named(*task, "(painted t3)");
+  CHECK_FALSE(mutexes.reachable(test::fact_named(*task, "(at r t2)"), painted2));
+  CHECK_FALSE(mutexes.reachable(test::fact_named(*task, "(clear t2)"), painted2));
+  CHECK_FALSE(mutexes.reachable(test::fact_named(*task, "(at r t1)"), test::fact_named(*task, "(clear t1)")));
   CHECK(mutexes.reachable(painted2, painted3));
-  CHECK(mutexes.reachable(fact_named(*task, "(at r t1)"), painted2));
+  CHECK(mutexes.reachable(test::fact_named(*task, "(at r t1)"), painted2));
 }
 
 TEST_CASE("The top tile is painted before the one below it, and that one before the next (obedient orders)",
           "[goal-orders]") {
   const auto task = column("(painted t1) (painted t2) (painted t3)");
   const GoalOrders orders(*task, task->initial_facts);
-  const FactId p1 = fact_named(*task, "(painted t1)");
-  const FactId p2 = fact_named(*task, "(painted t2)");
-  const FactId p3 = fact_named(*task, "(painted t3)");
+  const FactId p1 = test::fact_named(*task, "(painted t1)");
+  const FactId p2 = test::fact_named(*task, "(painted t2)");
+  const FactId p3 = test::fact_named(*task, "(painted t3)");
   // t3 can only be painted from t2; t2 from t1 or t3, and t3 is painted
   // first; so t2 from t1, before t1 is.
   std::vector<GoalOrder> found = orders.orders();
@@ -115,12 +107,12 @@ TEST_CASE("Goals that do not constrain each other, goals an action deletes, and 
   // From a start where t3 is already painted, only t2 and t1 are ordered.
   const auto three = column("(painted t1) (painted t2) (painted t3)");
   std::vector<FactId> start = three->initial_facts;
-  start.erase(std::remove(start.begin(), start.end(), fact_named(*three, "(clear t3)")), start.end());
-  start.push_back(fact_named(*three, "(painted t3)"));
+  start.erase(std::remove(start.begin(), start.end(), test::fact_named(*three, "(clear t3)")), start.end());
+  start.push_back(test::fact_named(*three, "(painted t3)"));
   const GoalOrders from_painted(*three, start);
   REQUIRE(from_painted.orders().size() == 1);
   CHECK(from_painted.orders().front() ==
-        GoalOrder{fact_named(*three, "(painted t2)"), fact_named(*three, "(painted t1)")});
+        GoalOrder{test::fact_named(*three, "(painted t2)"), test::fact_named(*three, "(painted t1)")});
 }
 
 TEST_CASE("Tasks above the work bound are not analysed, and every pair counts as reachable", "[goal-orders]") {
@@ -129,7 +121,7 @@ TEST_CASE("Tasks above the work bound are not analysed, and every pair counts as
   options.max_work_per_round = 10;
   const FactPairMutexes mutexes(*task, task->initial_facts, options);
   CHECK_FALSE(mutexes.analysed());
-  CHECK(mutexes.reachable(fact_named(*task, "(at r t2)"), fact_named(*task, "(painted t2)")));
+  CHECK(mutexes.reachable(test::fact_named(*task, "(at r t2)"), test::fact_named(*task, "(painted t2)")));
 }
 
 TEST_CASE("Pruning by goal orders solves floor-tile 2011 instance 3 within a node limit that stops the search without",
@@ -145,4 +137,29 @@ TEST_CASE("Pruning by goal orders solves floor-tile 2011 instance 3 within a nod
   options.goal_orders = false;
   const PlannerResult without = Planner(ground(task.normalized), options).plan();
   CHECK(without.status == Status::LimitReached);
+}
+
+TEST_CASE("Each conditional effect becomes its own compressed action, with only its own condition and adds",
+          "[goal-orders]") {
+  const char* const domain = R"(
+(define (domain switches) (:requirements :conditional-effects)
+  (:predicates (a) (b) (c) (d))
+  (:action set-a :parameters () :precondition () :effect (a))
+  (:action set-c :parameters () :precondition () :effect (c))
+  (:action flip :parameters () :precondition () :effect (and (when (a) (b)) (when (c) (d)))))
+)";
+  const auto task =
+      ground(test::load_task_text(domain, "(define (problem p) (:domain switches) (:goal (and (b) (d))))").normalized);
+  const FactId a = test::fact_named(*task, "(a)");
+  const FactId b = test::fact_named(*task, "(b)");
+  const FactId c = test::fact_named(*task, "(c)");
+  const FactId d = test::fact_named(*task, "(d)");
+  const std::vector<CompressedAction> actions = compress_actions(*task);
+  auto has = [&](const std::vector<FactId>& pre, const std::vector<FactId>& add) {
+    return std::any_of(actions.begin(), actions.end(),
+                       [&](const CompressedAction& x) { return x.pre == pre && x.add == add; });
+  };
+  CHECK(has({a}, {b}));
+  CHECK(has({c}, {d}));
+  CHECK_FALSE(has({std::min(a, c), std::max(a, c)}, {std::min(b, d), std::max(b, d)}));
 }

@@ -53,14 +53,6 @@ StepRecord start_of(const GroundTask& task, const std::string& name, double dura
   return step;
 }
 
-FactId fact_named(const GroundTask& task, const std::string& name) {
-  for (FactId f = 0; f < task.facts.size(); ++f) {
-    if (task.fact_name(f) == name) return f;
-  }
-  FAIL("no fact " << name);
-  return kNoId;
-}
-
 HeuristicValue root_value(const std::shared_ptr<const GroundTask>& task) {
   const TaskIndex index(task);
   const PartialPlan plan(index, 0.001);
@@ -92,8 +84,8 @@ TEST_CASE("A fact only firings give is windowed, and the relaxation counts the f
           "[required-concurrency]") {
   const auto task = kiln(true);
   const FactWindows windows(*task);
-  CHECK(windows.windowed(fact_named(*task, "(ready)")));
-  CHECK_FALSE(windows.windowed(fact_named(*task, "(baked)")));
+  CHECK(windows.windowed(test::fact_named(*task, "(ready)")));
+  CHECK_FALSE(windows.windowed(test::fact_named(*task, "(baked)")));
   CHECK(windows.provider_span(test::action_named(*task, "(fire-long)")) == 20.0);
 
   const HeuristicValue value = root_value(task);

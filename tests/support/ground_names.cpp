@@ -12,6 +12,14 @@ ActionId action_named(const GroundTask& task, const std::string& name) {
   return kNoId;
 }
 
+FactId fact_named(const GroundTask& task, const std::string& name) {
+  for (FactId f = 0; f < task.facts.size(); ++f) {
+    if (task.fact_name(f) == name) return f;
+  }
+  FAIL("no fact " << name);
+  return kNoId;
+}
+
 NumericVarId variable_named(const GroundTask& task, const std::string& name) {
   for (NumericVarId v = 0; v < task.initial_values.size(); ++v) {
     if (task.variable_name(v) == name) return v;
