@@ -5,6 +5,7 @@
 
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include "benchmarks/harness/grounding_bench.h"
 #include "benchmarks/harness/planner_bench.h"
@@ -46,6 +47,7 @@ struct BenchPlannersOptions {
   double memory_limit = 4096;
   int jobs = 1;
   int first = 0;
+  std::string instances;  // "A-B": positions A to B of each domain
   bool anytime = false;
   std::string search = "ehc";
   std::string order;  // "": the planner's default
@@ -63,6 +65,17 @@ int run_planners(const BenchPlannersOptions& options) {
   o.jobs = options.jobs;
   o.progress_bar = isatty(STDERR_FILENO) != 0;
   o.first = options.first;
+  if (!options.instances.empty()) {
+    int from = 0, to = 0;
+    char dash = 0;
+    std::istringstream range(options.instances);
+    if (!(range >> from >> dash >> to) || dash != '-' || from < 1 || to < from || !range.eof()) {
+      std::cerr << "error: --instances " << options.instances << ": expected A-B with 1 <= A <= B (e.g. 6-10)\n";
+      return kExitInputError;
+    }
+    o.from = from;
+    o.to = to;
+  }
   o.anytime = options.anytime;
   o.search = options.search;
   o.order = options.order;
@@ -106,6 +119,8 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   p->add_option("--jobs", planners->jobs, "Runs at once (1 for timings comparable to the baseline)")
       ->check(CLI::PositiveNumber);
   p->add_option("--first", planners->first, "Only the first N problems of each domain");
+  p->add_option("--instances", planners->instances,
+                 "Only problems A to B of each domain, e.g. 6-10 (a test set beside the first five)");
   p->add_flag("--anytime", planners->anytime, "Let each run improve its plan until the time limit");
   p->add_option("--search", planners->search, "ehc, gbfs or wastar")->check(CLI::IsMember({"ehc", "gbfs", "wastar"}));
   p->add_option("--order", planners->order, "How wastar orders nodes: metric or steps")

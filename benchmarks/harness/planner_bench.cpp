@@ -196,7 +196,8 @@ int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions
 }  // namespace
 
 int run_planner_bench(const PlannerBenchOptions& options, std::ostream& out, std::ostream& progress) {
-  const std::vector<SuiteProblem> suite = first_problems(load_suite(options.suite), options.first);
+  const std::vector<SuiteProblem> suite =
+      problems_in_range(first_problems(load_suite(options.suite), options.first), options.from, options.to);
   std::filesystem::create_directories(plans_dir(options));
   switch (options.array.role) {
     case ArrayRole::submit:

@@ -27,6 +27,9 @@ struct PlannerBenchOptions {
   int jobs = 1;
   bool progress_bar = false;  // a bar with rate and ETA on the progress stream (a terminal)
   int first = 0;           // only the first N problems of each domain (0: all)
+  // Only the problems at these positions of each domain (1-based, inclusive;
+  // 0: no bound), after `first`.
+  int from = 0, to = 0;
   bool anytime = false;
   std::string search = "ehc";
   std::string order;       // wastar's ordering, metric or steps ("": the planner's default)

@@ -122,6 +122,16 @@ std::vector<SuiteProblem> first_problems(const std::vector<SuiteProblem>& suite,
   return result;
 }
 
+std::vector<SuiteProblem> problems_in_range(const std::vector<SuiteProblem>& suite, int from, int to) {
+  std::map<std::string, int> position;
+  std::vector<SuiteProblem> result;
+  for (const SuiteProblem& p : suite) {
+    const int n = ++position[p.domain];
+    if (n >= from && (to <= 0 || n <= to)) result.push_back(p);
+  }
+  return result;
+}
+
 std::vector<SuiteProblem> largest_problems(const std::vector<SuiteProblem>& suite) {
   std::map<std::string, SuiteProblem> largest;
   for (const SuiteProblem& p : suite) {

@@ -26,6 +26,10 @@ std::vector<SuiteProblem> load_suite(const std::string& folder_or_list);
 
 // The first `count` problems of every domain (count 0: all).
 std::vector<SuiteProblem> first_problems(const std::vector<SuiteProblem>& suite, int count);
+// The problems at positions `from`..`to` (1-based, inclusive) of every
+// domain, counted as first_problems counts them: instances 6-10 are a test
+// set beside the first five. to 0: to the last.
+std::vector<SuiteProblem> problems_in_range(const std::vector<SuiteProblem>& suite, int from, int to);
 // The largest problem file of every domain.
 std::vector<SuiteProblem> largest_problems(const std::vector<SuiteProblem>& suite);
 

@@ -24,6 +24,11 @@ TEST_CASE("a suite folder lists every domain+problem pair of the IPC set") {
     }
   }
   CHECK(first_problems(suite, 5).size() == 37 * 5);
+  // Instances 6-10, the test set: five of every domain, none of the first five.
+  const std::vector<SuiteProblem> test_set = problems_in_range(suite, 6, 10);
+  CHECK(test_set.size() == 37 * 5);
+  for (const SuiteProblem& p : test_set) CHECK(p.number >= 6);
+  CHECK(problems_in_range(suite, 1, 5).size() == 37 * 5);
   const std::vector<SuiteProblem> largest = largest_problems(suite);
   CHECK(largest.size() == 37);
 }
