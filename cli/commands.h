@@ -25,6 +25,7 @@ void add_plan_command(CLI::App& app, int& exit_code);
 void add_scenario_command(CLI::App& app, int& exit_code);
 void add_gen_command(CLI::App& app, int& exit_code);
 void add_report_command(CLI::App& app, int& exit_code);
+void add_fuzz_command(CLI::App& app, int& exit_code);
 // In the perception module (perception_module.h):
 void add_perceive_command(CLI::App& app, int& exit_code);
 void add_deliberate_command(CLI::App& app, int& exit_code);

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   alplan::cli::add_gen_command(app, exit_code);
   alplan::cli::add_bench_command(app, exit_code);
   alplan::cli::add_report_command(app, exit_code);
+  alplan::cli::add_fuzz_command(app, exit_code);
   // Listed for --help; they run in the perception module (perception_module.h).
   for (const alplan::cli::ModuleCommand& c : alplan::cli::kPerceptionCommands) {
     app.add_subcommand(c.name, c.help)->allow_extras();

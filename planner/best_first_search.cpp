@@ -30,7 +30,7 @@ class BestFirstSearch : public SearchEngine {
         deferred_(options_.deferred && !by_metric()),
         // Ordered by the metric, a node drawn at random could end the search
         // with a plan the main queue would have ranked behind a cheaper one.
-        type_exploration_(options_.type_exploration && !by_metric()),
+        type_exploration_(options_.type_exploration && !by_metric() && !options_.complete),
         novelty_(options_.novelty && options_.weight == 0),
         novelties_(options_.novelty_width),
         types_(options_.seed) {}
@@ -40,6 +40,7 @@ class BestFirstSearch : public SearchEngine {
     if (deferred_) traits += ", deferred";
     if (type_exploration_) traits += ", type-based";
     if (novelty_) traits += ", novelty";
+    if (options_.complete) traits += ", complete";
     if (options_.weight == 0) return traits.empty() ? "gbfs" : "gbfs (" + traits.substr(2) + ")";
     return "wastar (w=" + std::to_string(options_.weight) + (options_.metric ? ", metric" : "") + traits + ")";
   }
@@ -50,7 +51,8 @@ class BestFirstSearch : public SearchEngine {
       space_.set_root_heuristic(heuristic_, stats_);
       const SearchNode& root = space_.node(space_.root());
       if (root.h == std::numeric_limits<double>::infinity()) return SearchStatus::Exhausted;
-      if (root.h == 0 && (solution_ = space_.goal_reached(space_.root(), space_.partial_plan(space_.root())))) {
+      if ((root.h == 0 || options_.complete) &&
+          (solution_ = space_.goal_reached(space_.root(), space_.partial_plan(space_.root())))) {
         return SearchStatus::Solved;
       }
       push(space_.root(), false);
@@ -67,7 +69,7 @@ class BestFirstSearch : public SearchEngine {
       if (!space_.evaluate_stored(*id, plan, heuristic_, stats_)) return SearchStatus::InProgress;
       const SearchNode& n = space_.node(*id);
       if (options_.prune && options_.prune(n)) return SearchStatus::InProgress;
-      if (n.h == 0 && (solution_ = space_.goal_reached(*id, plan))) return SearchStatus::Solved;
+      if ((n.h == 0 || options_.complete) && (solution_ = space_.goal_reached(*id, plan))) return SearchStatus::Solved;
     }
     ++stats_.expanded;
     std::vector<Child> children = space_.children(*id, plan, stats_);
@@ -91,7 +93,7 @@ class BestFirstSearch : public SearchEngine {
       PartialPlan child_plan = child.plan;
       std::optional<NodeId> stored = space_.insert(std::move(child), stats_);
       if (!stored) continue;
-      if (space_.node(*stored).h == 0) {
+      if (space_.node(*stored).h == 0 || options_.complete) {
         if (std::optional<Solution> goal = space_.goal_reached(*stored, child_plan)) {
           if (!by_metric()) {
             solution_ = std::move(goal);

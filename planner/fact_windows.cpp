@@ -62,7 +62,7 @@ void FactWindows::find_windowed_facts() {
   // gives none keeps its span unused.
 }
 
-void FactWindows::reset(const SearchState& state, const PartialPlan& plan) {
+void FactWindows::reset(const SearchState& state, const PartialPlan& plan, bool running_ends) {
   for (FactId f : touched_) {
     restricted_[f] = 0;
     windows_[f].clear();
@@ -70,12 +70,15 @@ void FactWindows::reset(const SearchState& state, const PartialPlan& plan) {
   touched_.clear();
   // Deadlines from running actions whose end deletes a fact true now.
   std::vector<std::pair<FactId, double>> closing;
-  const std::vector<RunningAction>& running = state.running();
+  static const std::vector<RunningAction> kNone;
+  const std::vector<RunningAction>& running = running_ends ? state.running() : kNone;
   const std::vector<double> latest = running.empty() ? std::vector<double>{} : plan.latest_end_times(running);
   for (std::size_t i = 0; i < running.size(); ++i) {
     if (latest[i] == kInfinity) continue;
-    for (FactId f : task_.actions[running[i].action].end.del) {
-      if (state.fact(f)) closing.emplace_back(f, latest[i]);
+    const HappeningEffects& end = task_.actions[running[i].action].end;
+    for (FactId f : end.del) {
+      // An end that deletes and adds a fact leaves it true (adds win).
+      if (state.fact(f) && std::find(end.add.begin(), end.add.end(), f) == end.add.end()) closing.emplace_back(f, latest[i]);
     }
   }
   std::vector<FactId> candidates;
@@ -164,7 +167,10 @@ bool FactWindows::open_from(FactId f, double time) {
 // first window that can, or infinity when none can.
 bool FactWindows::covers(FactId f, double from, double to, double& moved) const {
   for (const Window& w : windows_[f]) {
-    if (w.second <= to + kTolerance && !(w.second == kInfinity)) continue;  // closes too soon
+    // Closes too soon. A window closing exactly at the end still covers an
+    // over-all condition (VAL checks it on the open interval); at a point
+    // it may be a mutex, which the relaxation need not see.
+    if (w.second < to - kTolerance) continue;
     if (w.first <= from + kTolerance) return true;
     moved = w.first - from;
     return false;

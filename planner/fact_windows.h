@@ -40,7 +40,11 @@ class FactWindows {
   ActionId span_provider(FactId fact, double length) const;
 
   // Recomputes the windows for a state and the partial plan behind it.
-  void reset(const SearchState& state, const PartialPlan& plan);
+  // `running_ends`: facts running actions' ends delete close at the latest
+  // time those ends can come with every other step at its earliest (a
+  // guess: the steps may move later); without it only timed literals close
+  // windows, which is a bound.
+  void reset(const SearchState& state, const PartialPlan& plan, bool running_ends = true);
 
   bool restricted(FactId fact) const { return restricted_[fact]; }
   // An action achieves the fact at `time`: usable from then on. True if this

@@ -71,7 +71,7 @@ std::string HappeningExecutor::explain(const EvaluationError& error) const {
 }
 
 HappeningExecutor::HappeningExecutor(const GroundTask& task, const ValidatorOptions& options)
-    : task_(task), epsilon_(options.epsilon), val_total_time_(options.val_total_time) {}
+    : task_(task), epsilon_(options.epsilon), val_total_time_(options.val_total_time), numeric_slack_(options.numeric_slack) {}
 
 const GroundAction* HappeningExecutor::action_of(const Event& e) const {
   if (e.point == Point::Til) return nullptr;
@@ -193,7 +193,7 @@ std::optional<Violation> HappeningExecutor::check_conditions(const Event& e) {
     }
   }
   const ConditionSet& condition = e.point == Point::End ? action->at_end : action->at_start;
-  if (auto failed = first_unsatisfied(condition, state_, context, kNumericSlack)) {
+  if (auto failed = first_unsatisfied(condition, state_, context, numeric_slack_)) {
     Violation v = violation(Violation::Kind::UnsatisfiedPrecondition, e);
     v.condition = describe(task_, condition, *failed);
     return v;
@@ -210,6 +210,17 @@ HappeningExecutor::Footprint HappeningExecutor::footprint(const Event& e) const 
   }
   const GroundAction& action = *action_of(e);
   collect_reads(e.point == Point::End ? action.at_end : action.at_start, f.reads, f.reads_values);
+  // A condition on a derived fact reads what it is derived from (VAL).
+  if (!task_.axioms.empty()) {
+    if (!derived_) derived_ = std::make_unique<DerivedSupport>(task_);
+    const std::vector<FactId> read(f.reads.begin(), f.reads.end());
+    for (FactId p : read) {
+      if (!task_.is_derived(p)) continue;
+      const DerivedSupport::Support& s = derived_->of(p);
+      f.reads.insert(s.facts.begin(), s.facts.end());
+      f.reads_values.insert(s.variables.begin(), s.variables.end());
+    }
+  }
   for (const GroundDurationConstraint& d : action.duration) collect_variables(d.value, f.reads_values);
   const HappeningEffects& effects = e.point == Point::End ? action.end : action.start;
   const EvaluationContext context = context_of(e);
@@ -224,7 +235,7 @@ HappeningExecutor::Footprint HappeningExecutor::footprint(const Event& e) const 
   };
   add_effects(effects.add, effects.del, effects.numeric);
   for (const ConditionalEffect& c : effects.conditional) {
-    if (holds(c.condition, state_, context, kNumericSlack)) add_effects(c.add, c.del, c.numeric);
+    if (holds(c.condition, state_, context, numeric_slack_)) add_effects(c.add, c.del, c.numeric);
   }
   return f;
 }
@@ -294,7 +305,7 @@ std::optional<Violation> HappeningExecutor::apply(const std::vector<Event>& even
     };
     collect(effects.add, effects.del, effects.numeric);
     for (const ConditionalEffect& c : effects.conditional) {
-      if (holds(c.condition, state_, context, kNumericSlack)) collect(c.add, c.del, c.numeric);
+      if (holds(c.condition, state_, context, numeric_slack_)) collect(c.add, c.del, c.numeric);
     }
   }
   for (FactId f : dels) state_.set_fact(f, false);
@@ -326,7 +337,7 @@ std::optional<Violation> HappeningExecutor::check_invariants(const ExplicitState
     if (invariant.empty()) continue;
     EvaluationContext context;
     context.duration = steps_[scheduled].duration;
-    if (auto failed = first_unsatisfied(invariant, state, context, rates_.empty() ? 0.0 : kNumericSlack)) {
+    if (auto failed = first_unsatisfied(invariant, state, context, rates_.empty() ? 0.0 : numeric_slack_)) {
       Violation v;
       v.kind = Violation::Kind::UnsatisfiedInvariant;
       v.time = at;
@@ -421,7 +432,7 @@ ValidationResult HappeningExecutor::finish_run(std::size_t plan_steps) {
       return result;
     }
   }
-  if (auto failed = first_unsatisfied(task_.goal, state_, EvaluationContext{}, kNumericSlack)) {
+  if (auto failed = first_unsatisfied(task_.goal, state_, EvaluationContext{}, numeric_slack_)) {
     Violation v;
     v.kind = Violation::Kind::GoalNotReached;
     v.time = time_;

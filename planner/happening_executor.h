@@ -5,11 +5,13 @@
 
 #include <cstddef>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "planner/derived_support.h"
 #include "planner/evaluation.h"
 #include "planner/explicit_state.h"
 #include "planner/ground_task.h"
@@ -95,6 +97,9 @@ class HappeningExecutor {
   const GroundTask& task_;
   double epsilon_;
   bool val_total_time_;
+  double numeric_slack_;
+  // The supports of derived facts, found as conditions on them are met.
+  mutable std::unique_ptr<DerivedSupport> derived_;
   std::vector<ScheduledStep> steps_;
   std::vector<std::vector<Event>> happenings_;
   std::vector<double> happening_times_;

@@ -1,6 +1,7 @@
 #include "planner/normalize.h"
 
 #include <algorithm>
+#include <limits>
 #include <map>
 
 #include "pddl_parser/type_hierarchy.h"
@@ -113,6 +114,21 @@ ActionSchema convert_action(const pddl::Action& a, FormulaConverter& convert) {
   return schema;
 }
 
+// Whether constant duration constraints admit no duration but 0.
+bool always_zero_duration(const std::vector<pddl::DurationConstraint>& constraints) {
+  double lo = 0.0, hi = std::numeric_limits<double>::infinity();
+  for (const pddl::DurationConstraint& d : constraints) {
+    if (d.value.kind != pddl::NumericExpression::Kind::Number) return false;
+    switch (d.comparison) {
+      case pddl::Comparison::Equal: lo = std::max(lo, d.value.value); hi = std::min(hi, d.value.value); break;
+      case pddl::Comparison::LessEqual: hi = std::min(hi, d.value.value); break;
+      case pddl::Comparison::GreaterEqual: lo = std::max(lo, d.value.value); break;
+      default: return false;
+    }
+  }
+  return lo == 0.0 && hi == 0.0;
+}
+
 ActionSchema convert_durative(const pddl::DurativeAction& a, FormulaConverter& convert) {
   ActionSchema schema;
   schema.name = a.name;
@@ -129,6 +145,10 @@ ActionSchema convert_durative(const pddl::DurativeAction& a, FormulaConverter& c
     schema.at_end = convert.timed_part(*a.condition, pddl::TimeSpecifier::AtEnd, scope);
   }
   if (a.effect) convert.effects(*a.effect, true, scope, schema);
+  // A zero-duration action's invariant spans the empty interval between its
+  // start and its end, which are one happening: VAL never checks it, so it
+  // constrains nothing (and must not make the action unreachable).
+  if (always_zero_duration(a.duration)) schema.over_all = LiftedCondition{};
   schema.variable_slots = scope.slots_used();
   return schema;
 }

@@ -34,6 +34,49 @@ bool end_threatens(const GroundAction& ender, const GroundAction& holder) {
   return false;
 }
 
+// Whether an action's start and end interfere when they fall in one
+// happening, as VAL judges two members of a happening (one writes a fact or
+// value the other reads, or they write it in ways that do not commute): a
+// zero-duration action whose snaps interfere has no valid schedule.
+bool start_and_end_interfere(const GroundAction& a) {
+  auto reads = [](const ConditionSet& c, std::vector<FactId>& facts) {
+    facts.insert(facts.end(), c.positive.begin(), c.positive.end());
+    facts.insert(facts.end(), c.negative.begin(), c.negative.end());
+    facts.insert(facts.end(), c.mentioned.begin(), c.mentioned.end());
+  };
+  auto contains = [](const std::vector<FactId>& v, FactId f) { return std::find(v.begin(), v.end(), f) != v.end(); };
+  std::vector<FactId> start_reads, end_reads;
+  reads(a.at_start, start_reads);
+  reads(a.at_end, end_reads);
+  for (const HappeningEffects* e : {&a.start, &a.end}) {
+    if (!e->conditional.empty()) return true;  // judged conservatively
+  }
+  const auto writes_read = [&](const HappeningEffects& e, const std::vector<FactId>& read) {
+    return std::any_of(e.add.begin(), e.add.end(), [&](FactId f) { return contains(read, f); }) ||
+           std::any_of(e.del.begin(), e.del.end(), [&](FactId f) { return contains(read, f); });
+  };
+  if (writes_read(a.start, end_reads) || writes_read(a.end, start_reads)) return true;
+  for (FactId f : a.start.add) {
+    if (contains(a.end.del, f)) return true;
+  }
+  for (FactId f : a.start.del) {
+    if (contains(a.end.add, f)) return true;
+  }
+  // Numeric: any value written by one and touched by the other, unless both
+  // only increase or decrease it (VAL lets additive updates commute).
+  for (const NumericAssignment& w : a.start.numeric) {
+    for (const NumericAssignment& x : a.end.numeric) {
+      const bool additive = [](const NumericAssignment& n) {
+        return n.assign == pddl::AssignOperator::Increase || n.assign == pddl::AssignOperator::Decrease;
+      }(w) && (x.assign == pddl::AssignOperator::Increase || x.assign == pddl::AssignOperator::Decrease);
+      if (w.variable == x.variable && !additive) return true;
+    }
+  }
+  const bool numeric_reads = !a.at_start.numeric.empty() || !a.at_end.numeric.empty();
+  const bool numeric_writes = !a.start.numeric.empty() || !a.end.numeric.empty();
+  return numeric_reads && numeric_writes;  // judged conservatively
+}
+
 }  // namespace
 
 PartialPlan::PartialPlan(const TaskIndex& index, double epsilon, double release,
@@ -88,10 +131,11 @@ void PartialPlan::Ledger::record(const std::vector<std::uint32_t>& reads_keys,
   }
 }
 
-void PartialPlan::order_before_pending(const Footprint& fp, std::uint32_t node, ActionId except,
+void PartialPlan::order_before_pending(const Footprint& fp, std::uint32_t node, std::size_t except,
                                        std::vector<TemporalEdge>& edges) const {
-  for (const PendingEnd& p : pending_) {
-    if (p.action == except) continue;
+  for (std::size_t i = 0; i < pending_.size(); ++i) {
+    const PendingEnd& p = pending_[i];
+    if (i == except) continue;
     if (interfere(fp, index_->footprint({SnapKind::End, p.action}))) edges.push_back({node, p.node, epsilon_});
   }
 }
@@ -114,7 +158,12 @@ bool PartialPlan::append(const StepRecord& step) {
   std::uint32_t new_nodes = 1;
   std::size_t ending = pending_.size();
   if (step.snap.kind == SnapKind::End) {
-    auto found = std::find_if(pending_.begin(), pending_.end(), [&](const PendingEnd& p) { return p.action == step.snap.index; });
+    // The run this end closes: the one its start step began (an action may
+    // run twice at once), or one running since before the plan.
+    const std::uint32_t start_node = step.start_step == kNoId ? 0 : node_of_step_[step.start_step];
+    auto found = std::find_if(pending_.begin(), pending_.end(), [&](const PendingEnd& p) {
+      return p.action == step.snap.index && p.start_node == start_node;
+    });
     if (found == pending_.end()) return false;  // not running
     ending = static_cast<std::size_t>(found - pending_.begin());
     node = found->node;
@@ -128,8 +177,19 @@ bool PartialPlan::append(const StepRecord& step) {
   }
   facts_.add_constraints(fp.reads, fp.writes, node, epsilon_, edges, node_of_step_);
   values_.add_constraints(fp.reads_values, fp.writes_values, node, epsilon_, edges, node_of_step_);
-  order_before_pending(fp, node, step.snap.kind == SnapKind::End ? step.snap.index : kNoId, edges);
+  order_before_pending(fp, node, ending, edges);
+  if (step.snap.kind == SnapKind::End && step.max_duration == 0.0 && step.start_step != kNoId &&
+      !start_and_end_interfere(index_->task().actions[step.snap.index])) {
+    // A zero-duration action's start and end form one happening; unless
+    // they interfere (then the separation makes it unschedulable, as VAL
+    // refuses it), nothing separates them.
+    const std::uint32_t start_node = node_of_step_[step.start_step];
+    std::erase_if(edges, [&](const TemporalEdge& e) { return e.from == start_node && e.to == node && e.weight > 0.0; });
+  }
   if (step.snap.kind == SnapKind::TimedLiteral) {
+    // Timed literals keep the order of their times: no separation between
+    // two of them (two at one time deleting one fact are one happening).
+    std::erase_if(edges, [&](const TemporalEdge& e) { return e.from != 0 && is_timed_literal_node(e.from); });
     const double at = index_->task().timed_literals[step.snap.index].time;
     edges.push_back({0, node, at});
     edges.push_back({node, 0, -at});
@@ -151,7 +211,6 @@ bool PartialPlan::append(const StepRecord& step) {
     // not many steps below (a bake in a firing too short for it).
     const GroundAction& started = index_->task().actions[step.snap.index];
     for (const PendingEnd& p : pending_) {
-      if (p.action == step.snap.index) continue;
       const GroundAction& other = index_->task().actions[p.action];
       if (end_threatens(other, started)) edges.push_back({end, p.node, epsilon_});
       if (end_threatens(started, other)) edges.push_back({p.node, end, epsilon_});
@@ -166,7 +225,7 @@ bool PartialPlan::append(const StepRecord& step) {
       values_.add_constraints(invariant_reads, {}, node, epsilon_, edges, node_of_step_);
       Footprint reads;
       reads.reads_values = invariant_reads;
-      order_before_pending(reads, node, step.snap.kind == SnapKind::End ? step.snap.index : kNoId, edges);
+      order_before_pending(reads, node, ending, edges);
     }
     const SimpleTemporalNetwork before = network_;
     if (!network_.add_nodes(new_nodes, edges)) return false;
@@ -191,6 +250,13 @@ bool PartialPlan::append(const StepRecord& step) {
   if (ending < pending_.size()) pending_.erase(pending_.begin() + static_cast<std::ptrdiff_t>(ending));
   if (step.snap.kind == SnapKind::Start) pending_.push_back({step.snap.index, node + 1, node, step.max_duration});
   return true;
+}
+
+bool PartialPlan::is_timed_literal_node(std::uint32_t node) const {
+  for (std::size_t s = 0; s < steps_.size(); ++s) {
+    if (node_of_step_[s] == node) return steps_[s].snap.kind == SnapKind::TimedLiteral;
+  }
+  return false;
 }
 
 double PartialPlan::node_time(std::uint32_t node) const {
@@ -238,10 +304,11 @@ std::vector<std::pair<ActionId, std::vector<NumericVarId>>> PartialPlan::invaria
 }
 
 double PartialPlan::pending_end_time(ActionId action) const {
+  double earliest = std::numeric_limits<double>::infinity();
   for (const PendingEnd& p : pending_) {
-    if (p.action == action) return node_time(p.node);
+    if (p.action == action) earliest = std::min(earliest, node_time(p.node));
   }
-  return 0.0;
+  return earliest == std::numeric_limits<double>::infinity() ? 0.0 : earliest;
 }
 
 std::vector<double> PartialPlan::latest_end_times(const std::vector<RunningAction>& running) const {
@@ -252,7 +319,10 @@ std::vector<double> PartialPlan::latest_end_times(const std::vector<RunningActio
   std::vector<std::uint32_t> starting(network_.size(), 0), ending(network_.size(), 0);
   for (std::uint32_t i = 0; i < running.size(); ++i) {
     const ActionId action = running[i].action;
-    auto p = std::find_if(pending_.begin(), pending_.end(), [&](const PendingEnd& e) { return e.action == action; });
+    const std::uint32_t step = running[i].start_step;
+    const std::uint32_t start_node = step == kNoId || step >= node_of_step_.size() ? 0 : node_of_step_[step];
+    auto p = std::find_if(pending_.begin(), pending_.end(),
+                          [&](const PendingEnd& e) { return e.action == action && e.start_node == start_node; });
     if (p == pending_.end()) continue;
     pending[i] = &*p;
     if (p->start_node == 0) latest_start[i] = 0.0;

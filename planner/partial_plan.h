@@ -80,7 +80,8 @@ class PartialPlan {
   double changing_value_time(NumericVarId v) const;
   // With continuous change: see ContinuousSchedule::failing_at_end.
   std::vector<std::pair<ActionId, std::vector<NumericVarId>>> invariants_failing_at_end() const;
-  // The earliest time the end of a running action can come.
+  // The earliest time the end of a running action can come (of its
+  // earliest run, when it runs more than once).
   double pending_end_time(ActionId action) const;
   // For each of `running`, in its order: the latest time its end can come
   // with every other step at its earliest time, how much room the action has
@@ -96,6 +97,33 @@ class PartialPlan {
   // The earliest time a new snap may use the fact as it now stands.
   double available_from(FactId fact) const;
   double epsilon() const { return epsilon_; }
+
+  // What the schedule allows of every step appended later. A later step is
+  // ordered after the origin (the release), the last writer of each fact and
+  // variable it touches, and (if it writes one) the readers since that write;
+  // and before the pending ends it interferes with, and a timed literal at its
+  // time, which binds it to the origin. So a new constraint can close a cycle
+  // through the existing network only by entering it at a pending end (or at
+  // the origin, while timed literals remain: the targets) and leaving it at a
+  // source (the origin, a last writer, a reader since, a running action's
+  // start or end). Two plans of one state compare by the longest path from
+  // each target to each source (Dechter, Meiri & Pearl's minimal network,
+  // restricted to those points): if one's are all no longer, any sequence of
+  // steps that can be scheduled after the other can be scheduled after it.
+  // With nothing running and no timed literal left there is no target: the
+  // past constrains no future and all plans of the state are alike.
+  struct Interface {
+    // Per target (timed literals' origin first, then the runs in order of
+    // action and start), the longest path to each source, by source id
+    // (kind * 2^32 + key); a key without a writer stands at the origin.
+    struct Target {
+      std::vector<std::pair<std::uint64_t, double>> longest;  // sorted by id
+      double to_origin = 0.0;
+    };
+    std::vector<Target> targets;
+    bool allows_all_of(const Interface& other) const;
+  };
+  Interface interface(bool timed_literals_remain) const;
 
  private:
   struct Use {
@@ -121,10 +149,13 @@ class PartialPlan {
     std::uint32_t start_node;  // 0 for an action running before the plan
     double max_duration;
   };
-  void order_before_pending(const Footprint& fp, std::uint32_t node, ActionId except,
+  // Orders `node` before every pending end it interferes with, but the
+  // one at index `except` (the end being appended; pending_.size(): none).
+  void order_before_pending(const Footprint& fp, std::uint32_t node, std::size_t except,
                             std::vector<TemporalEdge>& edges) const;
 
   double node_time(std::uint32_t node) const;
+  bool is_timed_literal_node(std::uint32_t node) const;
   SnapNodes snap_nodes(const StepRecord& step, std::uint32_t node) const;
 
   const TaskIndex* index_;

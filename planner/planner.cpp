@@ -32,18 +32,46 @@ std::string plan_text(const Plan& plan) {
   return out;
 }
 
-// Whether a schedule can rule out a future: a timed initial literal, a
-// durative action whose duration is bounded above, or continuous change
-// (states then hold the values of one schedule among many).
-bool deadlines_possible(const GroundTask& task) {
-  if (!task.timed_literals.empty()) return true;
-  for (const GroundAction& a : task.actions) {
-    if (!a.continuous.empty()) return true;
-    for (const GroundDurationConstraint& d : a.duration) {
-      if (d.comparison != pddl::Comparison::GreaterEqual) return true;
+// Why an exhausted complete search is not a proof for this task, or "" when
+// it is: the search tries only the shortest and longest durations of an
+// action whose effects or conditions read ?duration, and with continuous
+// change a state holds the values of one schedule among many.
+std::string proof_limits(const TaskIndex& index) {
+  const GroundTask& task = index.task();
+  for (ActionId a = 0; a < task.actions.size(); ++a) {
+    if (!task.actions[a].continuous.empty()) {
+      return "with continuous change a state holds the values of one schedule among many";
     }
   }
-  return false;
+  for (ActionId a = 0; a < task.actions.size(); ++a) {
+    if (task.actions[a].durative && index.duration_dependent(a)) {
+      return "only the shortest and longest durations of " + task.action_name(task.actions[a]) +
+             " (whose effects or conditions read ?duration) were tried";
+    }
+  }
+  return "";
+}
+
+// Timed literals that add and delete one fact at one time: VAL judges their
+// happening a mutex, and every plan runs through it (the goal is checked
+// after the last timed literal), so no plan is valid. Literals within a
+// tenth of epsilon form one happening, as in the validator.
+std::optional<std::string> clashing_timed_literals(const GroundTask& task, std::uint32_t first, double epsilon) {
+  const std::vector<GroundTimedLiteral>& tils = task.timed_literals;
+  for (std::size_t g = first; g < tils.size();) {
+    std::size_t end = g;
+    while (end < tils.size() && tils[end].time - tils[g].time <= epsilon / 10.0) ++end;
+    for (std::size_t i = g; i < end; ++i) {
+      for (std::size_t j = g; j < end; ++j) {
+        if (tils[i].fact == tils[j].fact && tils[i].positive && !tils[j].positive) {
+          return "timed initial literals add and delete " + task.fact_name(tils[i].fact) + " at time " +
+                 format_plan_time(tils[i].time) + ", a mutex (VAL) in every plan";
+        }
+      }
+    }
+    g = end;
+  }
+  return std::nullopt;
 }
 
 bool is_initial(const GroundTask& task, const PlanningStart& start) {
@@ -100,6 +128,9 @@ struct EngineChoice {
   bool typed = false;     // type-based exploration; greedy engines only
   bool novelty = false;   // ordered by (novelty, h); greedy engines only
   bool goal_orders = false;  // prunes states that break the goal orders
+  // Misses no plan (SearchSpaceOptions all on, BestFirstOptions::complete):
+  // its exhaustion proves that no plan exists, where proving() allows.
+  bool complete = false;
 };
 
 struct Phase {
@@ -167,7 +198,9 @@ PhaseOutcome run_phase(const Phase& phase, const TaskIndex& index, const SearchS
   std::vector<std::unique_ptr<SearchSpace>> spaces;
   std::vector<std::unique_ptr<SearchEngine>> engines;
   for (const EngineChoice& choice : phase.engines) {
-    spaces.push_back(std::make_unique<SearchSpace>(index, start, options.epsilon));
+    SearchSpaceOptions space_options;
+    if (choice.complete) space_options = {true, true, true};
+    spaces.push_back(std::make_unique<SearchSpace>(index, start, options.epsilon, space_options));
     if (choice.goal_orders && orders && !orders->empty()) spaces.back()->prune_by(orders);
     BestFirstOptions bfs = base;
     bfs.weight = choice.weight;
@@ -179,6 +212,7 @@ PhaseOutcome run_phase(const Phase& phase, const TaskIndex& index, const SearchS
     bfs.deferred = base.deferred || choice.deferred;
     bfs.novelty = choice.novelty && choice.kind == "gbfs";
     bfs.novelty_width = options.novelty_width;
+    bfs.complete = choice.complete;
     engines.push_back(choice.kind == "ehc"
                           ? make_enforced_hill_climbing(*spaces.back(), heuristic, true, base.deadline)
                           : make_best_first_search(*spaces.back(), heuristic, bfs));
@@ -383,6 +417,11 @@ PlannerResult Planner::search_from(const PlanningStart& start, const std::functi
     result.message = "no plan exists: the goal can never hold (" + *task_->goal.never + ")";
     return result;
   }
+  if (const auto clash = clashing_timed_literals(*task_, start.next_timed_literal, options_.epsilon)) {
+    result.status = PlannerResult::Status::Unsolvable;
+    result.message = "no plan exists: " + *clash;
+    return result;
+  }
   SearchStart search_start;
   search_start.state = SearchState(task_->facts.size(), start.values);
   for (FactId f : start.facts) search_start.state.set_fact(f, true);
@@ -441,6 +480,17 @@ PlannerResult Planner::search_from(const PlanningStart& start, const std::functi
     pipeline = {{{{"gbfs", 0.0, false, options_.type_exploration, options_.novelty}}, 0}};
   }
   if (options_.search == "wastar") pipeline = {{{{"wastar", options_.weight}}, 0}};
+  // When EHC and its fallback have exhausted their spaces without a plan, a
+  // complete search goes over it again, keeping what they dropped (a
+  // guiding dead end the sound relaxation does not confirm, an action run
+  // twice at once, a schedule that only looked worse): it finds the plan
+  // they missed, or its exhaustion proves there is none.
+  std::size_t prover = pipeline.size();
+  if (options_.search == "ehc") {
+    EngineChoice complete{"wastar", options_.weight};
+    complete.complete = true;
+    pipeline.push_back({{complete}, 0, false});
+  }
   if (options_.anytime) {
     for (double w : {5.0, 3.0, 2.0, 1.5, 1.0}) {
       if (w >= options_.anytime_min_weight) pipeline.push_back({{{"wastar", w}}, options_.anytime_expansions});
@@ -449,11 +499,13 @@ PlannerResult Planner::search_from(const PlanningStart& start, const std::functi
   double best_value = std::numeric_limits<double>::infinity();
   bool exhausted_all = true;
   std::string proof;
+  // Why an exhausted search is not a proof.
+  std::string not_proven = "only incomplete searches ran";
   const Clock::time_point search_began = Clock::now();
   for (std::size_t phase = 0; phase < pipeline.size(); ++phase) {
     if (!options_.anytime && !result.plans.empty()) break;
     const bool fallback = phase == 1 && options_.search == "ehc";
-    if (fallback && !result.plans.empty()) continue;
+    if ((fallback || phase == prover) && !result.plans.empty()) continue;
     BestFirstOptions bfs;
     bfs.deadline = deadline;
     bfs.metric = order_metric;
@@ -482,22 +534,27 @@ PlannerResult Planner::search_from(const PlanningStart& start, const std::functi
       break;  // a limit was reached
     }
     if (outcome.status == SearchStatus::Exhausted) {
-      if (outcome.root_dead_end) {
-        proof = "the goal is unreachable even in the relaxation (temporal relaxed planning graph)";
+      if (outcome.root_dead_end && result.plans.empty()) {
+        // A dead root is a proof only if the sound relaxation agrees.
         const PartialPlan root(index, options_.epsilon, search_start.release, search_start.state.running(),
                                search_start.state.values());
-        heuristic.evaluate(search_start.state, root);
-        std::string facts;
-        for (FactId f : heuristic.unreached_goals()) facts += (facts.empty() ? "" : " ") + task_->fact_name(f);
-        if (!facts.empty()) proof += ": it never reaches " + facts;
-        break;
+        if (heuristic.evaluate(search_start.state, root, Relaxation::Sound).dead_end()) {
+          proof = "the goal is unreachable even in the relaxation (temporal relaxed planning graph)";
+          std::string facts;
+          for (FactId f : heuristic.unreached_goals()) facts += (facts.empty() ? "" : " ") + task_->fact_name(f);
+          if (!facts.empty()) proof += ": it never reaches " + facts;
+          break;
+        }
       }
-      // EHC is incomplete. A best-first search without a bound is complete
-      // only where schedules cannot close doors: no deadlines (timed
-      // literals) and no upper bounds on durations.
-      const bool complete_search = pipeline[phase].engines.front().kind != "ehc";
-      if (complete_search && result.plans.empty() && !deadlines_possible(*task_)) {
-        proof = "the search space is exhausted";
+      const bool complete_search =
+          std::any_of(pipeline[phase].engines.begin(), pipeline[phase].engines.end(),
+                      [](const EngineChoice& e) { return e.complete; });
+      if (complete_search && result.plans.empty()) {
+        not_proven = proof_limits(index);
+        if (not_proven.empty()) {
+          proof = "the search space is exhausted";
+          break;
+        }
       }
       continue;
     }
@@ -532,7 +589,7 @@ PlannerResult Planner::search_from(const PlanningStart& start, const std::functi
     result.message = "no plan exists: " + proof;
   } else if (exhausted_all) {
     result.status = PlannerResult::Status::Exhausted;
-    result.message = "the search space is exhausted without a plan; with deadlines this is not a proof";
+    result.message = "the search space is exhausted without a plan; this is not a proof: " + not_proven;
   } else {
     result.status = PlannerResult::Status::LimitReached;
     result.message = "the time, node or memory limit was reached before a plan was found";

@@ -65,6 +65,11 @@ struct BestFirstOptions {
   // within the node's h (planner/novelty_table.h), instead of by h alone.
   bool novelty = false;
   int novelty_width = 1;
+  // A search that must not miss a plan: every node is tested for the goal
+  // (not only where h = 0, which a heuristic that is not goal-aware could
+  // hide), and no queue draws at random. Its search space must keep what it
+  // cannot afford to drop (SearchSpaceOptions).
+  bool complete = false;
   NodeBound prune;
   SearchDeadline deadline;
 };

@@ -6,16 +6,41 @@
 
 namespace alplan {
 
-SearchSpace::SearchSpace(const TaskIndex& index, const SearchStart& start, double epsilon)
+bool schedules_can_close_doors(const GroundTask& task, const SearchState& start) {
+  if (!task.timed_literals.empty()) return true;
+  for (const RunningAction& r : start.running()) {
+    if (r.max_duration < kInfiniteDuration) return true;
+  }
+  for (const GroundAction& a : task.actions) {
+    if (!a.continuous.empty()) return true;
+    for (const GroundDurationConstraint& d : a.duration) {
+      if (d.comparison != pddl::Comparison::GreaterEqual && d.comparison != pddl::Comparison::Greater) return true;
+    }
+  }
+  return false;
+}
+
+bool SearchSpace::timed_literals_remain(const SearchState& state) const {
+  return state.next_timed_literal() < index_.task().timed_literals.size();
+}
+
+SearchSpace::SearchSpace(const TaskIndex& index, const SearchStart& start, double epsilon, SearchSpaceOptions options)
     : index_(index),
-      successors_(index),
+      successors_(index, options.self_overlap),
       epsilon_(epsilon),
       release_(start.release),
-      deadlines_(!index.task().timed_literals.empty()) {
+      options_(options),
+      deadlines_(!index.task().timed_literals.empty()),
+      schedules_matter_(options.exact_duplicates && schedules_can_close_doors(index.task(), start.state)) {
   SearchNode root;
   root.state = start.state;
   nodes_.push_back(std::move(root));
-  nodes_.back().signature = signature_of(nodes_.back().state, partial_plan(0));
+  const PartialPlan root_plan = partial_plan(0);
+  nodes_.back().signature = signature_of(nodes_.back().state, root_plan);
+  if (schedules_matter_) {
+    nodes_.back().interface = std::make_shared<const PartialPlan::Interface>(
+        root_plan.interface(timed_literals_remain(nodes_.back().state)));
+  }
   seen_[&nodes_.back().state].push_back(0);
 }
 
@@ -28,6 +53,12 @@ TemporalSignature SearchSpace::signature_of(const SearchState& state, const Part
 
 bool SearchSpace::dominated(const SearchNode& candidate, NodeId stored) const {
   constexpr double kTolerance = 1e-9;
+  if (options_.exact_duplicates) {
+    // Without deadlines or upper bounds every sequence of snaps can be
+    // scheduled (all constraints are lower bounds), so the state decides.
+    if (!schedules_matter_) return true;
+    return nodes_[stored].interface->allows_all_of(*candidate.interface);
+  }
   const TemporalSignature& a = nodes_[stored].signature;
   const TemporalSignature& b = candidate.signature;
   if (deadlines_ && a.frontier > b.frontier + kTolerance) return false;
@@ -75,6 +106,10 @@ std::optional<Child> SearchSpace::schedule(NodeId id, const PartialPlan& plan, S
   child.node.depth = nodes_[id].depth + 1;
   child.node.makespan = child.plan.makespan();
   child.node.signature = signature_of(child.node.state, child.plan);
+  if (schedules_matter_) {
+    child.node.interface =
+        std::make_shared<const PartialPlan::Interface>(child.plan.interface(timed_literals_remain(child.node.state)));
+  }
   return child;
 }
 
@@ -99,6 +134,11 @@ bool SearchSpace::evaluate_node(SearchNode& node, const PartialPlan& plan, Tempo
     return false;
   }
   HeuristicValue value = heuristic.evaluate(node.state, plan);
+  if (value.dead_end() && options_.confirm_dead_ends) {
+    // The guiding relaxation's dead end, confirmed or not by the sound one.
+    HeuristicValue sound = heuristic.evaluate(node.state, plan, Relaxation::Sound);
+    if (!sound.dead_end()) value = std::move(sound);
+  }
   node.h = value.h;
   node.helpful = std::move(value.helpful);
   node.evaluated = true;
@@ -122,6 +162,10 @@ bool SearchSpace::evaluate_stored(NodeId id, const PartialPlan& plan, TemporalRp
 void SearchSpace::set_root_heuristic(TemporalRpg& heuristic, SearchStatistics& stats) {
   ++stats.evaluated;
   HeuristicValue value = heuristic.evaluate(nodes_[0].state, partial_plan(0));
+  if (value.dead_end() && options_.confirm_dead_ends) {
+    HeuristicValue sound = heuristic.evaluate(nodes_[0].state, partial_plan(0), Relaxation::Sound);
+    if (!sound.dead_end()) value = std::move(sound);
+  }
   nodes_[0].h = value.h;
   nodes_[0].helpful = std::move(value.helpful);
   nodes_[0].makespan_bound = std::max(nodes_[0].makespan, value.relaxed_makespan - epsilon_);

@@ -22,6 +22,11 @@ namespace alplan {
 
 using NodeId = std::uint32_t;
 
+// Whether a schedule can rule out a future: a timed initial literal, an
+// upper bound on a duration (a running action's included), or continuous
+// change. Otherwise every sequence of applicable snaps can be scheduled.
+bool schedules_can_close_doors(const GroundTask& task, const SearchState& start);
+
 // What of a node's schedule decides which futures remain feasible: how late
 // each running action may still end, and (with deadlines) how late the plan
 // has already got. POPF compares states without it and can lose plans; we
@@ -45,6 +50,8 @@ struct SearchNode {
   double makespan_bound = 0.0;
   double relaxed_cost = 0.0;  // the heuristic's estimate of the metric still to come
   TemporalSignature signature;
+  // With exact duplicates: what the schedule allows of every future step.
+  std::shared_ptr<const PartialPlan::Interface> interface;
   std::vector<Snap> helpful;
   // False while the node carries its parent's h (deferred evaluation).
   bool evaluated = false;
@@ -73,9 +80,26 @@ struct Child {
   PartialPlan plan;
 };
 
+// How a search space treats what a search that must not miss a plan cannot
+// afford to drop. The defaults are POPF's, which lose plans in corner cases
+// for speed; a proving search (search_engine.h, `complete`) turns all on.
+struct SearchSpaceOptions {
+  // An action may run twice at once (successor_generator.h).
+  bool self_overlap = false;
+  // A guiding dead end is pruned only if the sound relaxation confirms it
+  // (temporal_rpg.h, Relaxation); otherwise the node keeps the sound h.
+  bool confirm_dead_ends = false;
+  // Where schedules can close doors (timed literals, durations bounded
+  // above), a node is a duplicate only if a stored node with its state
+  // allows every future its schedule allows (PartialPlan::interface):
+  // POPF's comparison of states alone, and our cheaper dominance on the
+  // running actions' latest ends, can drop the only schedule that works.
+  bool exact_duplicates = false;
+};
+
 class SearchSpace {
  public:
-  SearchSpace(const TaskIndex& index, const SearchStart& start, double epsilon);
+  SearchSpace(const TaskIndex& index, const SearchStart& start, double epsilon, SearchSpaceOptions options = {});
 
   NodeId root() const { return 0; }
   const SearchNode& node(NodeId id) const { return nodes_[id]; }
@@ -123,10 +147,14 @@ class SearchSpace {
   double epsilon_;
   double release_;
   bool dominated(const SearchNode& candidate, NodeId stored) const;
+  bool timed_literals_remain(const SearchState& state) const;
   static TemporalSignature signature_of(const SearchState& state, const PartialPlan& plan);
   bool evaluate_node(SearchNode& node, const PartialPlan& plan, TemporalRpg& heuristic, SearchStatistics& stats) const;
 
+  SearchSpaceOptions options_;
   bool deadlines_;  // the task has timed initial literals
+  // Exact duplicates are needed only where a schedule can close a door.
+  bool schedules_matter_;
   std::shared_ptr<const GoalOrders> orders_;
   std::deque<SearchNode> nodes_;
   std::unordered_map<const SearchState*, std::vector<NodeId>, SearchStateHash, SearchStateEqual> seen_;

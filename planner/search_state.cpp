@@ -14,7 +14,7 @@ void SearchState::start(const RunningAction& action) {
 
 void SearchState::set_start_step(ActionId action, std::uint32_t step) {
   for (RunningAction& r : running_) {
-    if (r.action == action) r.start_step = step;
+    if (r.action == action && r.start_step == kStepNotYetKnown) r.start_step = step;
   }
 }
 

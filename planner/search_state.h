@@ -12,6 +12,10 @@
 
 namespace alplan {
 
+// A running action's start step while the successor that started it is
+// not yet in a plan (SearchSpace::schedule fills it in).
+constexpr std::uint32_t kStepNotYetKnown = kNoId - 1;
+
 struct RunningAction {
   ActionId action = 0;
   std::uint32_t start_step = kNoId;  // kNoId: running since before the plan began
@@ -40,7 +44,8 @@ class SearchState {
   const std::vector<RunningAction>& running() const { return running_; }
   void start(const RunningAction& action);
   void finish(std::size_t index) { running_.erase(running_.begin() + static_cast<std::ptrdiff_t>(index)); }
-  // Records which plan step started a running action (known once appended).
+  // Records which plan step started the instance of `action` just started
+  // (the one whose step is kStepNotYetKnown).
   void set_start_step(ActionId action, std::uint32_t step);
   bool is_running(ActionId action) const;
 
@@ -53,7 +58,9 @@ class SearchState {
  private:
   std::vector<std::uint64_t> bits_;
   std::vector<double> values_;
-  std::vector<RunningAction> running_;  // in order of action id
+  // In order of action id; instances of one action (an action running twice
+  // at once) in the order they started.
+  std::vector<RunningAction> running_;
   std::uint32_t next_til_ = 0;
 };
 

@@ -110,8 +110,8 @@ bool SuccessorGenerator::condition_holds(const ConditionSet& c, const SearchStat
   }
 }
 
-SuccessorGenerator::SuccessorGenerator(const TaskIndex& index)
-    : index_(index), continuous_(index.continuous().get()) {
+SuccessorGenerator::SuccessorGenerator(const TaskIndex& index, bool self_overlap)
+    : index_(index), self_overlap_(self_overlap), continuous_(index.continuous().get()) {
   const auto& actions = index.task().actions;
   constant_start_window_.reserve(actions.size());
   for (const GroundAction& a : actions) constant_start_window_.push_back(constant_duration_window(a, Moment::Start));
@@ -128,6 +128,9 @@ bool SuccessorGenerator::attach_continuous(const GroundAction& action, const Sea
 
 bool SuccessorGenerator::invariants_hold(const SearchState& state) const {
   for (const RunningAction& r : state.running()) {
+    // A zero-duration action's invariant spans an empty interval: VAL never
+    // checks it, and nothing running alongside can break it.
+    if (r.max_duration == 0.0) continue;
     if (!condition_holds(index_.task().actions[r.action].over_all, state, r.min_duration)) return false;
   }
   return true;
@@ -180,7 +183,7 @@ void SuccessorGenerator::add_action(const SearchState& state, ActionId id, std::
     }
     return;
   }
-  if (state.is_running(id)) return;
+  if (state.is_running(id) && (!self_overlap_ || !action.continuous.empty())) return;
   const std::optional<DurationWindow>& constant = constant_start_window_[id];
   const DurationWindow window = constant ? *constant : duration_window(action, Moment::Start, state, continuous_);
   if (!window.valid) return;
@@ -201,7 +204,7 @@ void SuccessorGenerator::add_action(const SearchState& state, ActionId id, std::
     if (!apply_effects(action.start, state, duration, s.state)) continue;
     // The new action's invariant must hold right after its start, and so
     // must everyone else's.
-    s.state.start({id, kNoId, min, max});
+    s.state.start({id, kStepNotYetKnown, min, max});
     if (!invariants_hold(s.state)) continue;
     out.push_back(std::move(s));
   }
@@ -232,7 +235,8 @@ std::optional<SearchState> SuccessorGenerator::apply(const SearchState& state, c
     default: add_action(state, step.snap.index, candidates); break;
   }
   for (Successor& s : candidates) {
-    if (s.step.snap == step.snap && s.step.min_duration == step.min_duration) return std::move(s.state);
+    const bool same_run = step.snap.kind != SnapKind::End || s.step.start_step == step.start_step;
+    if (s.step.snap == step.snap && s.step.min_duration == step.min_duration && same_run) return std::move(s.state);
   }
   return std::nullopt;
 }

@@ -6,8 +6,11 @@
 // - an end needs its at-end condition;
 // - no snap may break the over-all condition of an action still running;
 // - timed initial literals are applied in time order;
-// - an action does not run twice at once (POPF's rule; it keeps symmetric
-//   branches out of the search).
+// - by default an action does not run twice at once (POPF's rule; it keeps
+//   symmetric branches out of the search); with `self_overlap` it may, as
+//   VAL allows, which a search that must not miss a plan needs (a counter
+//   raised by two overlapping runs of one action). Actions with continuous
+//   effects never overlap themselves (their schedule tracks one run each).
 // Conditions are evaluated exactly (no slack), so plans hold under VAL's
 // slightly more lenient comparisons too.
 #pragma once
@@ -36,7 +39,7 @@ struct DurationWindow {
 
 class SuccessorGenerator {
  public:
-  explicit SuccessorGenerator(const TaskIndex& index);
+  explicit SuccessorGenerator(const TaskIndex& index, bool self_overlap = false);
 
   // Every applicable snap: ends of running actions first, then the next
   // timed literal, then starts and instantaneous actions.
@@ -63,6 +66,7 @@ class SuccessorGenerator {
                          StepRecord& step) const;
 
   const TaskIndex& index_;
+  bool self_overlap_;
   const ContinuousModel* continuous_;  // null without continuous change
   // Per action, its start's duration window when it is the same in every
   // state (constant_duration_window), read instead of evaluated.

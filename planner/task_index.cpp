@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <map>
 
+#include "planner/derived_support.h"
+
 namespace alplan {
 namespace {
 
@@ -82,54 +84,18 @@ bool conditions_mention_duration(const ConditionSet& c) {
   });
 }
 
-// The basic facts and variables a derived fact depends on, through every
-// axiom that can derive it. A snap reading a derived fact reads all of them:
-// without this, a writer of one of them could be scheduled at the same time
-// as the reader, which VAL rejects (the derived value changes in between).
-class DerivedSupport {
- public:
-  explicit DerivedSupport(const GroundTask& t) : task_(t), memo_(t.facts.size()), state_(t.facts.size(), 0) {
-    for (std::uint32_t x = 0; x < t.axioms.size(); ++x) by_head_[t.axioms[x].head].push_back(x);
+// A snap reading a derived fact reads every fact and variable it depends on
+// (derived_support.h): without this, a writer of one of them could be
+// scheduled at the same time as the reader, which VAL rejects.
+void expand_derived_reads(const GroundTask& task, DerivedSupport& support, Footprint& fp) {
+  const std::vector<FactId> reads = fp.reads;
+  for (FactId f : reads) {
+    if (!task.is_derived(f)) continue;
+    const DerivedSupport::Support& s = support.of(f);
+    fp.reads.insert(fp.reads.end(), s.facts.begin(), s.facts.end());
+    fp.reads_values.insert(fp.reads_values.end(), s.variables.begin(), s.variables.end());
   }
-
-  void expand(Footprint& fp) {
-    const std::vector<FactId> reads = fp.reads;
-    for (FactId f : reads) {
-      if (!task_.is_derived(f)) continue;
-      const Footprint& s = support(f);
-      fp.reads.insert(fp.reads.end(), s.reads.begin(), s.reads.end());
-      fp.reads_values.insert(fp.reads_values.end(), s.reads_values.begin(), s.reads_values.end());
-    }
-  }
-
- private:
-  const Footprint& support(FactId f) {
-    if (state_[f] != 0) return memo_[f];  // done, or on the stack (a recursive rule)
-    state_[f] = 1;
-    Footprint body;
-    for (std::uint32_t x : by_head_[f]) condition_reads(task_.axioms[x].body, body);
-    Footprint out;
-    for (FactId g : body.reads) {
-      if (!task_.is_derived(g)) {
-        out.reads.push_back(g);
-        continue;
-      }
-      const Footprint& inner = support(g);
-      out.reads.insert(out.reads.end(), inner.reads.begin(), inner.reads.end());
-      out.reads_values.insert(out.reads_values.end(), inner.reads_values.begin(), inner.reads_values.end());
-    }
-    out.reads_values.insert(out.reads_values.end(), body.reads_values.begin(), body.reads_values.end());
-    finish(out);
-    memo_[f] = std::move(out);
-    state_[f] = 2;
-    return memo_[f];
-  }
-
-  const GroundTask& task_;
-  std::vector<Footprint> memo_;
-  std::vector<char> state_;
-  std::map<FactId, std::vector<std::uint32_t>> by_head_;
-};
+}
 
 }  // namespace
 
@@ -193,7 +159,7 @@ std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const Gr
     DerivedSupport derived(t);
     for (std::vector<Footprint>* list : {&x.instant, &x.start, &x.end}) {
       for (Footprint& fp : *list) {
-        derived.expand(fp);
+        expand_derived_reads(t, derived, fp);
         finish(fp);
       }
     }

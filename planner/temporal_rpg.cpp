@@ -49,7 +49,7 @@ class TemporalRpg::Exploration {
       : rpg_(rpg), continuous_(rpg.index_.continuous().get()), windows_(rpg.index_.task()) {
     if (continuous_ && rpg.options_.resource_balance) balance_.emplace(rpg.index_.task(), *continuous_);
   }
-  HeuristicValue run(const SearchState& state, const PartialPlan& plan);
+  HeuristicValue run(const SearchState& state, const PartialPlan& plan, Relaxation mode);
 
  private:
   template <typename T>
@@ -93,6 +93,7 @@ class TemporalRpg::Exploration {
   bool goals_reached() const { return goals_left_ == 0 && satisfiable(rpg_.goal_numeric_); }
 
   TemporalRpg& rpg_;
+  Relaxation mode_ = Relaxation::Guiding;
   const ContinuousModel* continuous_;  // null without continuous change: read once, not per action
   std::vector<std::pair<ActionId, double>> repetitions_;  // producer, applications asked (extract's)
   const SearchState* state_ = nullptr;
@@ -168,10 +169,10 @@ void TemporalRpg::Exploration::reach(FactId f, double time, Achiever achiever, d
   const bool by_action = achiever.kind != AchieverKind::State && achiever.kind != AchieverKind::TimedLiteral;
   bool opened = false;
   if (by_action && windows_.windowed(f)) {
-    // Only providers' starts give a windowed fact: usable for their span,
-    // less the separations before a holder starts and after it ends.
-    const double span = windows_.provider_span(achiever.index) - 2.0 * plan_->epsilon();
-    opened = achiever.kind == AchieverKind::Start && span >= 0.0 && windows_.open_span(f, time, span, achiever.index);
+    // Only providers' starts give a windowed fact: usable for their span at
+    // most (VAL lets a holder start with its provider and end with it).
+    const double span = windows_.provider_span(achiever.index);
+    opened = achiever.kind == AchieverKind::Start && windows_.open_span(f, time, span, achiever.index);
   } else if (by_action) {
     opened = windows_.open_from(f, time);
   }
@@ -293,8 +294,8 @@ void TemporalRpg::Exploration::apply_numeric(const std::vector<const NumericAssi
   }
 }
 
-HeuristicValue TemporalRpg::evaluate(const SearchState& state, const PartialPlan& plan) {
-  return exploration_->run(state, plan);
+HeuristicValue TemporalRpg::evaluate(const SearchState& state, const PartialPlan& plan, Relaxation mode) {
+  return exploration_->run(state, plan, mode);
 }
 
 std::vector<FactId> TemporalRpg::unreached_goals() const {
@@ -307,11 +308,11 @@ std::vector<FactId> TemporalRpg::unreached_goals() const {
   return unreached;
 }
 
+// A lower bound on the action's duration in any state from here on: the
+// relaxed times must be lower bounds for a dead end to be one.
 double TemporalRpg::Exploration::duration_of(ActionId a) {
   const double fixed = rpg_.actions_[a].fixed_duration;
-  if (!std::isnan(fixed)) return fixed;
-  const DurationWindow w = duration_window(rpg_.index_.task().actions[a], Moment::Start, *state_, continuous_);
-  return w.valid ? w.min : -1.0;
+  return std::isnan(fixed) ? 0.0 : fixed;
 }
 
 double TemporalRpg::Exploration::cost_of(const std::vector<FactId>& facts) {
@@ -336,9 +337,7 @@ void TemporalRpg::Exploration::try_start(ActionId a, double time) {
   const double epsilon = plan_->epsilon();
   const double duration = r.durative ? duration_of(a) : 0.0;
   if (duration < 0.0) return;
-  static const std::vector<FactId> kNone;
-  const FactWindows::Fit fit = windows_.fit(time, duration, g.at_start.positive, r.durative ? g.over_all.positive : kNone,
-                                            r.durative ? g.at_end.positive : kNone);
+  const FactWindows::Fit fit = windows_.fit(time, duration, g.at_start.positive, r.held_over_all, r.held_at_end);
   if (!fit.ok) {
     park(fit.blocking, a, false);
     return;
@@ -351,10 +350,13 @@ void TemporalRpg::Exploration::try_start(ActionId a, double time) {
     apply_numeric(r.start_numeric_effects, a);
     return;
   }
-  started_at_.at(a, generation_) = start;
-  start_cost_.at(a, generation_) = cost;
   for (FactId f : r.start_add) reach(f, start + epsilon, {AchieverKind::Start, a}, cost);
   apply_numeric(r.start_numeric_effects, a);
+  // A running action started again: its end is already owed by the run in
+  // the state, which comes no later than the new run's would.
+  if (running_.at(a, generation_)) return;
+  started_at_.at(a, generation_) = start;
+  start_cost_.at(a, generation_) = cost;
   double& ready = end_ready_.at(a, generation_);
   ready = std::max(ready, start + duration);
   if (--end_count_.at(a, generation_) == 0) try_end(a);
@@ -367,17 +369,23 @@ void TemporalRpg::Exploration::try_end(ActionId a) {
     return;
   }
   const GroundAction& g = rpg_.index_.task().actions[a];
-  const double end = end_ready_.at(a, generation_);
+  double end = end_ready_.at(a, generation_);
   // A running action's end: its invariant was checked as it ran.
   const bool running = running_.at(a, generation_);
   if (!running) {
+    // An end waiting for its at-end condition need not keep the action
+    // running from its earliest start: the action may start late, so its
+    // invariant need only fit the shortest run ending then (or later).
     const double start = started_at_.at(a, generation_);
+    const double shortest = duration_of(a);
     static const std::vector<FactId> kNone;
-    const FactWindows::Fit fit = windows_.fit(start, end - start, kNone, g.over_all.positive, g.at_end.positive);
-    if (!fit.ok || fit.start > start + 1e-9) {
-      if (!fit.ok) park(fit.blocking, a, true);
+    const FactWindows::Fit fit =
+        windows_.fit(std::max(start, end - shortest), shortest, kNone, r.held_over_all, r.held_at_end);
+    if (!fit.ok) {
+      park(fit.blocking, a, true);
       return;
     }
+    end = std::max(end, fit.start + shortest);
   } else {
     const FactWindows::Fit fit = windows_.fit(end, 0.0, g.at_end.positive, {}, {});
     if (!fit.ok) {
@@ -419,10 +427,11 @@ void TemporalRpg::Exploration::process(FactId f, double time) {
   if (std::binary_search(rpg_.goal_facts_.begin(), rpg_.goal_facts_.end(), f)) --goals_left_;
 }
 
-HeuristicValue TemporalRpg::Exploration::run(const SearchState& state, const PartialPlan& plan) {
+HeuristicValue TemporalRpg::Exploration::run(const SearchState& state, const PartialPlan& plan, Relaxation mode) {
   const GroundTask& task = rpg_.index_.task();
   state_ = &state;
   plan_ = &plan;
+  mode_ = mode;
   if (++generation_ == 0) generation_ = 1;  // stamps start at 0: never reuse it
   queue_ = {};
   goals_left_ = rpg_.goal_facts_.size();
@@ -454,7 +463,7 @@ HeuristicValue TemporalRpg::Exploration::run(const SearchState& state, const Par
   }
   for (FactId f : parked_facts_) parked_on_[f].clear();
   parked_facts_.clear();
-  windows_.reset(state, plan);
+  windows_.reset(state, plan, mode == Relaxation::Guiding);
   // What holds now, what timed literals will give, what running actions owe.
   for (std::size_t word = 0; word < state.bits().size(); ++word) {
     for (std::uint64_t w = state.bits()[word]; w != 0; w &= w - 1) {
@@ -467,24 +476,21 @@ HeuristicValue TemporalRpg::Exploration::run(const SearchState& state, const Par
     if (til.positive) reach(til.fact, til.time + plan.epsilon(), {AchieverKind::TimedLiteral, t}, 0.0);
   }
   for (const RunningAction& running : state.running()) {
+    if (running_.at(running.action, generation_)) continue;  // the earliest run of it counts
     running_.at(running.action, generation_) = 1;
     double& ready = end_ready_.at(running.action, generation_);
     ready = std::max(ready, plan.pending_end_time(running.action));
     --end_count_.at(running.action, generation_);
   }
+  // Actions that need nothing start now. A running one may start again:
+  // at once in the sound relaxation (VAL lets an action overlap itself),
+  // once its run ends in the guiding one (POPF's search starts no second
+  // run, and a provider started again at once would open spans a holder
+  // cannot use: temporal-machine-shop's firings).
   for (ActionId a = 0; a < rpg_.actions_.size(); ++a) {
-    if (rpg_.actions_[a].start_pre.empty() && !running_.at(a, generation_)) try_start(a, 0.0);
-  }
-  // A running provider of windowed facts that needs nothing to start can
-  // fire again once it ends: spans from then on (the relaxation starts no
-  // second copy of a running action).
-  for (const RunningAction& running : state.running()) {
-    const double span = windows_.provider_span(running.action) - 2.0 * plan.epsilon();
-    if (span < 0.0 || !rpg_.actions_[running.action].start_pre.empty()) continue;
-    const double again = plan.pending_end_time(running.action) + 2.0 * plan.epsilon();
-    for (FactId f : task.actions[running.action].start.add) {
-      if (windows_.windowed(f)) windows_.open_span(f, again, span, running.action);
-    }
+    if (!rpg_.actions_[a].start_pre.empty()) continue;
+    const bool running = running_.at(a, generation_);
+    try_start(a, running && mode_ == Relaxation::Guiding ? plan.pending_end_time(a) : 0.0);
   }
   for (const RunningAction& running : state.running()) {
     if (end_count_.at(running.action, generation_) == 0) try_end(running.action);
@@ -502,7 +508,7 @@ HeuristicValue TemporalRpg::Exploration::run(const SearchState& state, const Par
   }
   if (!reached) return HeuristicValue{};
   HeuristicValue value = extract(state, goal_time);
-  if (continuous_ && continuous_dead_end(value)) return HeuristicValue{};
+  if (continuous_ && mode == Relaxation::Guiding && continuous_dead_end(value)) return HeuristicValue{};
   return value;
 }
 

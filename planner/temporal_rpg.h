@@ -33,6 +33,29 @@ struct HeuristicValue {
   bool dead_end() const { return h == std::numeric_limits<double>::infinity(); }
 };
 
+// Which relaxation an evaluation computes.
+// - Sound: a true over-approximation of what any plan from the state can
+//   reach, so a goal it never reaches is a proof that the state is a dead
+//   end: deletes ignored; facts usable from lower bounds on the times they
+//   can be achieved (the epsilon after an achiever is the separation every
+//   plan of ours keeps between dependent happenings); windows closed only by
+//   timed initial literals, whose times are fixed; a windowed fact's spans
+//   as long as its provider's longest duration; an action's own start
+//   exempt from the windows of its invariant; an action may start late so
+//   that its invariant fits; durations that read changing values taken as
+//   0; numeric effects relaxed to interval bounds, a give-back counted as a
+//   producer wherever its variable is assigned as well as added to; a
+//   running action may start again at once.
+// - Guiding (what the search orders by): the same, and a fact a running
+//   action's end deletes closes at the latest time that end can come with
+//   every other step at its earliest (the steps could move later, so this is
+//   a guess, not a bound); a running action starts again only once its run
+//   ends; with continuous change, a running action whose invariant must
+//   fail before any help can arrive is a dead end. Its dead ends guide and
+//   prune the searches that need not be complete; a search that proves must
+//   confirm one with the sound relaxation before pruning it.
+enum class Relaxation { Guiding, Sound };
+
 struct TemporalRpgOptions {
   bool helpful_actions = true;
   // With continuous change: count the producers the relaxed plan's
@@ -63,7 +86,8 @@ class TemporalRpg {
 
   // `plan` is the partial plan that leads to `state`, for the times at which
   // its facts became true and its running actions started.
-  HeuristicValue evaluate(const SearchState& state, const PartialPlan& plan);
+  HeuristicValue evaluate(const SearchState& state, const PartialPlan& plan,
+                          Relaxation mode = Relaxation::Guiding);
   // The goal facts the last evaluation never reached (a dead end's reason).
   std::vector<FactId> unreached_goals() const;
   const std::shared_ptr<const Graph>& graph() const { return graph_; }
@@ -74,6 +98,10 @@ class TemporalRpg {
     std::vector<FactId> start_pre, end_pre;
     std::vector<std::uint32_t> start_numeric, end_numeric;  // indices into comparisons_
     std::vector<FactId> start_add, end_add;
+    // The over-all and at-end facts whose windows the action must fit: those
+    // its own start does not give (an action holding what it gives itself
+    // at start needs no one else's window for it).
+    std::vector<FactId> held_over_all, held_at_end;
     std::vector<const NumericAssignment*> start_numeric_effects, end_numeric_effects;
     // End effects that give back what the start took (a catalyst, a borrowed
     // tool count): net zero, so applied only for an action already running
@@ -82,7 +110,9 @@ class TemporalRpg {
     std::vector<const NumericAssignment*> end_returns;
     bool durative = false;
     // The start's minimum duration when no duration constraint reads the
-    // state, -1 when they admit none; NaN: evaluated per state.
+    // state, -1 when they admit none; NaN when a constraint reads a value
+    // actions change: the relaxation then takes 0, the only lower bound
+    // that holds in every state the plan may reach before the start.
     double fixed_duration = std::numeric_limits<double>::quiet_NaN();
   };
   struct Event {

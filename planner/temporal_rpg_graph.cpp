@@ -34,6 +34,26 @@ std::shared_ptr<const TemporalRpg::Graph> TemporalRpg::build(const TaskIndex& in
   graph->axiom_watchers.resize(facts);
   graph->numeric_watchers.resize(task.numeric.size());
   graph->actions.resize(task.actions.size());
+  // A give-back (an end returning what its start took) is no producer only
+  // where every change of its variable is additive: an assignment while the
+  // action runs would make the return a real gain.
+  std::vector<char> additive_only(task.numeric.size(), 1);
+  for (const GroundAction& g : task.actions) {
+    for (const HappeningEffects* e : {&g.start, &g.end}) {
+      auto note = [&](const std::vector<NumericAssignment>& effects) {
+        for (const NumericAssignment& n : effects) {
+          if (n.assign != pddl::AssignOperator::Increase && n.assign != pddl::AssignOperator::Decrease) {
+            additive_only[n.variable] = 0;
+          }
+        }
+      };
+      note(e->numeric);
+      for (const ConditionalEffect& c : e->conditional) note(c.numeric);
+    }
+    for (const ContinuousEffect& c : g.continuous) additive_only[c.variable] = 0;
+  }
+  // Over-all comparisons, decided after the comparisons' variables are known.
+  std::vector<std::pair<ActionId, std::uint32_t>> over_all_comparisons;
   auto numeric_list = [&](const ConditionSet& c, std::vector<std::uint32_t>& out) {
     const std::uint32_t first = add_comparisons(c.numeric);
     for (std::uint32_t i = 0; i < c.numeric.size(); ++i) out.push_back(first + i);
@@ -61,7 +81,7 @@ std::shared_ptr<const TemporalRpg::Graph> TemporalRpg::build(const TaskIndex& in
       std::vector<const NumericAssignment*> kept;
       for (std::size_t i = 0; i < r.end_numeric_effects.size(); ++i) {
         const NumericAssignment* n = r.end_numeric_effects[i];
-        (i < unconditional && give_back(g, *n) ? r.end_returns : kept).push_back(n);
+        (i < unconditional && additive_only[n->variable] && give_back(g, *n) ? r.end_returns : kept).push_back(n);
       }
       r.end_numeric_effects = std::move(kept);
     }
@@ -80,8 +100,16 @@ std::shared_ptr<const TemporalRpg::Graph> TemporalRpg::build(const TaskIndex& in
       }
       r.end_pre = g.at_end.positive;
       r.end_pre.insert(r.end_pre.end(), g.over_all.positive.begin(), g.over_all.positive.end());
-      numeric_list(g.over_all, r.start_numeric);
+      const std::uint32_t first = add_comparisons(g.over_all.numeric);
+      for (std::uint32_t i = 0; i < g.over_all.numeric.size(); ++i) over_all_comparisons.emplace_back(a, first + i);
       numeric_list(g.at_end, r.end_numeric);
+      auto own = [&](FactId f) { return std::find(r.start_add.begin(), r.start_add.end(), f) != r.start_add.end(); };
+      for (FactId f : g.over_all.positive) {
+        if (!own(f)) r.held_over_all.push_back(f);
+      }
+      for (FactId f : g.at_end.positive) {
+        if (!own(f)) r.held_at_end.push_back(f);
+      }
     }
     std::sort(r.start_pre.begin(), r.start_pre.end());
     r.start_pre.erase(std::unique(r.start_pre.begin(), r.start_pre.end()), r.start_pre.end());
@@ -104,6 +132,19 @@ std::shared_ptr<const TemporalRpg::Graph> TemporalRpg::build(const TaskIndex& in
       if (e->kind == GroundExpression::Kind::Variable) graph->comparison_variables[c].push_back(e->variable);
       for (const GroundExpression& o : e->operands) stack.push_back(&o);
     }
+  }
+  // An over-all comparison is checked as the action starts, unless the
+  // start's own effects change what it reads: it must hold after them, not
+  // before, so it is checked at the end instead (later is weaker in the
+  // relaxation, whose bounds only widen).
+  for (const auto& [a, c] : over_all_comparisons) {
+    RelaxedAction& r = graph->actions[a];
+    bool own = false;
+    for (const NumericAssignment* n : r.start_numeric_effects) {
+      const std::vector<NumericVarId>& reads = graph->comparison_variables[c];
+      own = own || std::find(reads.begin(), reads.end(), n->variable) != reads.end();
+    }
+    (own ? r.end_numeric : r.start_numeric).push_back(c);
   }
   for (ActionId a = 0; a < graph->actions.size(); ++a) {
     for (const auto* list : {&graph->actions[a].start_numeric, &graph->actions[a].end_numeric}) {

@@ -21,6 +21,7 @@
 #include <optional>
 #include <unordered_map>
 
+#include "planner/evaluation.h"
 #include "planner/ground_task.h"
 #include "planner/instantiate.h"
 #include "planner/normalized_task.h"
@@ -36,6 +37,10 @@ struct ValidatorOptions {
   // omits the flag (IPC 2004 umts) it reports steps + timed literals. We
   // report the makespan; set this to reproduce VAL's number.
   bool val_total_time = false;
+  // VAL compares numeric conditions with a slack (evaluation.h), so that
+  // `(< x 2)` holds at x = 2. The planner evaluates exactly; a tester that
+  // asks whether the planner missed a plan asks with 0.
+  double numeric_slack = kNumericSlack;
 };
 
 struct ValidationResult {

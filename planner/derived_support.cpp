@@ -1,0 +1,78 @@
+#include "planner/derived_support.h"
+
+#include <algorithm>
+#include <set>
+
+namespace alplan {
+namespace {
+
+void expression_variables(const GroundExpression& e, std::set<NumericVarId>& out) {
+  if (e.kind == GroundExpression::Kind::Variable) out.insert(e.variable);
+  for (const GroundExpression& o : e.operands) expression_variables(o, out);
+}
+
+void formula_reads(const GroundFormula& f, std::vector<FactId>& facts, std::set<NumericVarId>& variables) {
+  if (f.kind == GroundFormula::Kind::Literal) facts.push_back(f.fact);
+  if (f.kind == GroundFormula::Kind::Comparison) {
+    expression_variables(f.comparison.left, variables);
+    expression_variables(f.comparison.right, variables);
+  }
+  for (const GroundFormula& c : f.children) formula_reads(c, facts, variables);
+}
+
+void body_reads(const ConditionSet& c, std::vector<FactId>& facts, std::set<NumericVarId>& variables) {
+  facts.insert(facts.end(), c.positive.begin(), c.positive.end());
+  facts.insert(facts.end(), c.negative.begin(), c.negative.end());
+  facts.insert(facts.end(), c.mentioned.begin(), c.mentioned.end());
+  for (const GroundComparison& cmp : c.numeric) {
+    expression_variables(cmp.left, variables);
+    expression_variables(cmp.right, variables);
+  }
+  for (const GroundFormula& f : c.complex) formula_reads(f, facts, variables);
+}
+
+}  // namespace
+
+DerivedSupport::DerivedSupport(const GroundTask& task) : task_(task) {
+  for (std::uint32_t x = 0; x < task.axioms.size(); ++x) by_head_[task.axioms[x].head].push_back(x);
+}
+
+const DerivedSupport::Support& DerivedSupport::of(FactId derived) {
+  if (auto it = done_.find(derived); it != done_.end()) return it->second;
+  // A search over the derived facts below this one; a finished one's support
+  // is taken whole.
+  std::set<FactId> basic;
+  std::set<NumericVarId> variables;
+  std::set<FactId> seen{derived};
+  std::vector<FactId> open{derived};
+  while (!open.empty()) {
+    const FactId d = open.back();
+    open.pop_back();
+    if (d != derived) {
+      if (auto it = done_.find(d); it != done_.end()) {
+        basic.insert(it->second.facts.begin(), it->second.facts.end());
+        variables.insert(it->second.variables.begin(), it->second.variables.end());
+        continue;
+      }
+    }
+    const auto rules = by_head_.find(d);
+    if (rules == by_head_.end()) continue;
+    for (std::uint32_t x : rules->second) {
+      std::vector<FactId> reads;
+      body_reads(task_.axioms[x].body, reads, variables);
+      for (FactId f : reads) {
+        if (!by_head_.count(f)) {
+          basic.insert(f);
+        } else if (seen.insert(f).second) {
+          open.push_back(f);
+        }
+      }
+    }
+  }
+  Support& s = done_[derived];
+  s.facts.assign(basic.begin(), basic.end());
+  s.variables.assign(variables.begin(), variables.end());
+  return s;
+}
+
+}  // namespace alplan
