@@ -152,7 +152,7 @@ void states_expanded(benchmark::State& state, const NamedProblem& p) {
   std::size_t expanded = 0;
   for (auto _ : state) {
     alplan::PlannerOptions options;
-    options.search = "gbfs";
+    options.search = alplan::alias("gbfs");
     options.time_limit = 30.0;
     alplan::PlannerResult result = alplan::Planner(task, options).plan();
     if (result.status != alplan::PlannerResult::Status::Solved) return state.SkipWithError("not solved");

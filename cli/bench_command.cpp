@@ -122,7 +122,9 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   p->add_option("--instances", planners->instances,
                  "Only problems A to B of each domain, e.g. 6-10 (a test set beside the first five)");
   p->add_flag("--anytime", planners->anytime, "Let each run improve its plan until the time limit");
-  p->add_option("--search", planners->search, "ehc, gbfs or wastar")->check(CLI::IsMember({"ehc", "gbfs", "wastar"}));
+  p->add_option("--search", planners->search,
+                 "The search configuration of every run: ehc (the default), gbfs, wastar, an alias or an expression "
+                 "(alplan plan --search)");
   p->add_option("--order", planners->order, "How wastar orders nodes: metric or steps")
       ->check(CLI::IsMember({"metric", "steps"}));
   p->add_option("--plan-arg", planners->plan_args,

@@ -31,25 +31,18 @@ struct PlanOptions {
   std::string problem;
   double time_limit = 60.0;
   double memory_limit = 0.0;
-  bool anytime = false;
   bool reserve_planning_time = false;
   double epsilon = 0.001;
-  std::string search = "ehc";
+  std::string alias;  // --alias NAME: a named configuration
+  // --search and the flags before the configuration language, as shorthands.
+  SearchShorthands search;
   std::string heuristic = "trpg";
-  double weight = 3.0;
-  std::string order = PlannerOptions{}.order;
-  bool deferred_evaluation = PlannerOptions{}.deferred_evaluation;
-  bool type_exploration = PlannerOptions{}.type_exploration;
-  bool novelty = PlannerOptions{}.novelty;
-  int novelty_width = PlannerOptions{}.novelty_width;
-  bool fallback_novelty = PlannerOptions{}.fallback_novelty;
-  bool goal_orders = PlannerOptions{}.goal_orders;
-  bool fallback_deferred = PlannerOptions{}.fallback_deferred;
+  std::string order = "steps";
   std::optional<std::uint64_t> ehc_expansions;
-  double ehc_time_share = PlannerOptions{}.ehc_time_share;
-  bool prune_irrelevant = PlannerOptions{}.prune_irrelevant;
-  bool resource_balance = PlannerOptions{}.resource_balance;
-  bool count_repetitions = PlannerOptions{}.count_repetitions;
+  bool prune_irrelevant = true;
+  // Shorthand flags given on the command line (they shape only the named
+  // searches ehc, gbfs and wastar).
+  std::vector<std::string> shorthands_given;
   std::string out;
   bool json = false;
   bool quiet = false;
@@ -127,6 +120,25 @@ int limit_reached(const PlanOptions& options, const std::string& message) {
   return kExitLimit;
 }
 
+// The configuration the options ask for: --alias, --search (a name or an
+// expression) and the shorthand flags, which shape only the named searches.
+SearchConfiguration search_configuration(const PlanOptions& options) {
+  SearchShorthands s = options.search;
+  if (!options.alias.empty()) {
+    alias_expression(options.alias);  // throws for an unknown name
+    s.search = options.alias;
+  }
+  if (!shaped_by_knobs(s.search) && !options.shorthands_given.empty()) {
+    throw SearchConfigurationError(options.shorthands_given.front() +
+                                   " shapes the configurations ehc, gbfs, wastar, default and anytime; with another "
+                                   "configuration write it in the expression");
+  }
+  s.knobs.heuristic.helpful = options.heuristic == "trpg";
+  s.metric_order = options.order == "metric";
+  if (options.ehc_expansions) s.knobs.ehc_expansions = *options.ehc_expansions;
+  return configuration_from(s);
+}
+
 // Loads, grounds and plans; `phase` names the step under way, so that a
 // limit reached anywhere can say where. `task` receives the grounded task,
 // for the caller to decide when it is freed.
@@ -152,23 +164,13 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
   if (grounding >= options.time_limit) return limit_reached(options, "the time limit was reached while grounding");
   phase = "search";
   PlannerOptions planner_options;
-  planner_options.search = options.search;
-  planner_options.heuristic = options.heuristic;
-  planner_options.weight = options.weight;
-  planner_options.order = options.order;
-  planner_options.deferred_evaluation = options.deferred_evaluation;
-  planner_options.type_exploration = options.type_exploration;
-  planner_options.novelty = options.novelty;
-  planner_options.novelty_width = options.novelty_width;
-  planner_options.fallback_novelty = options.fallback_novelty;
-  planner_options.goal_orders = options.goal_orders;
-  planner_options.fallback_deferred = options.fallback_deferred;
-  if (options.ehc_expansions) planner_options.ehc_expansions = *options.ehc_expansions;
-  planner_options.ehc_time_share = options.ehc_time_share;
+  try {
+    planner_options.search = search_configuration(options);
+  } catch (const SearchConfigurationError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitInputError;
+  }
   planner_options.prune_irrelevant = options.prune_irrelevant;
-  planner_options.resource_balance = options.resource_balance;
-  planner_options.count_repetitions = options.count_repetitions;
-  planner_options.anytime = options.anytime;
   planner_options.epsilon = options.epsilon;
   planner_options.reserve_planning_time = options.reserve_planning_time;
   planner_options.time_limit = std::max(0.0, options.time_limit - grounding);
@@ -207,7 +209,7 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
           {"validation", result.times.validation}}}};
     std::cout << j.dump(2) << "\n";
   } else {
-    if (options.anytime && result.best()) print_best(result, std::cout);
+    if (planner_options.search.engine.kind == EngineSpec::Kind::Anytime && result.best()) print_best(result, std::cout);
     if (result.status != PlannerResult::Status::Solved) std::cout << "; " << result.message << "\n";
     std::cout << "; status: " << status_name(result.status) << "; expanded " << result.statistics.expanded
               << ", evaluated " << result.statistics.evaluated << ", grounding "
@@ -262,53 +264,72 @@ void add_plan_command(CLI::App& app, int& exit_code) {
   cmd->add_option("PROBLEM", options->problem, "Problem file")->required();
   cmd->add_option("--time-limit", options->time_limit, "Seconds for grounding and search")->check(CLI::NonNegativeNumber);
   cmd->add_option("--memory-limit", options->memory_limit, "MiB of address space")->check(CLI::NonNegativeNumber);
-  cmd->add_flag("--anytime", options->anytime, "Keep improving the plan until the time limit");
+  cmd->add_flag("--anytime", options->search.anytime, "Keep improving the plan until the time limit");
   cmd->add_option("--epsilon", options->epsilon, "Separation of dependent happenings (OPTIC's 0.001 by default)")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--reserve-planning-time", options->reserve_planning_time,
                 "Start no step before the time limit has passed (deadlines shrink by the planning budget)");
-  cmd->add_option("--search", options->search, "ehc (falls back to gbfs), gbfs or wastar")
-      ->check(CLI::IsMember({"ehc", "gbfs", "wastar"}));
-  cmd->add_option("--heuristic", options->heuristic, "trpg (temporal relaxed planning graph) or trpg-nohelpful")
-      ->check(CLI::IsMember({"trpg", "trpg-nohelpful"}));
-  cmd->add_option("--weight", options->weight, "Weight of h in wastar")->check(CLI::PositiveNumber);
+  cmd->add_option("--search", options->search.search,
+                  "A search configuration: ehc (the default: EHC falling back to a portfolio, then a complete "
+                  "search), gbfs, wastar, an alias, or an expression such as "
+                  "'then(ehc(trpg), complete(wastar(trpg, w=1)))' (planner/README.md)");
+  cmd->add_option("--alias", options->alias,
+                  "A named configuration: default, anytime, ehc, gbfs, wastar, complete (planner/README.md)");
+  // The flags before the configuration language: shorthands shaping ehc, gbfs and wastar.
+  auto shorthand_options = std::make_shared<std::vector<CLI::Option*>>();
+  auto shorthand = [&](CLI::Option* o) {
+    shorthand_options->push_back(o);
+    return o;
+  };
+  shorthand(cmd->add_option("--heuristic", options->heuristic, "trpg (temporal relaxed planning graph) or trpg-nohelpful")
+                ->check(CLI::IsMember({"trpg", "trpg-nohelpful"})));
+  shorthand(cmd->add_option("--weight", options->search.knobs.weight, "Weight of h in wastar")->check(CLI::Number));
   cmd->add_option("--order", options->order,
                   "How wastar (and anytime search) orders nodes: metric (cost and makespan so far and to come, "
                   "for a minimised metric that only grows) or steps (default)")
       ->check(CLI::IsMember({"metric", "steps"}));
-  cmd->add_option("--ehc-expansions", options->ehc_expansions,
-                  "EHC gives up after this many expansions and GBFS and wastar take turns (default 20000)");
-  cmd->add_option("--ehc-time-share", options->ehc_time_share,
-                  "EHC also gives up after this share of the time limit (default 0.25; 1: only the expansions count)")
-      ->check(CLI::Range(0.0, 1.0));
-  cmd->add_flag("--deferred", options->deferred_evaluation,
-                "GBFS and wastar evaluate a node when they expand it, not when they generate it");
-  cmd->add_flag("--type-exploration,!--no-type-exploration", options->type_exploration,
-                "GBFS also expands every fourth node drawn at random by (h, g) (Xie et al. 2014; seeded, reproducible; "
-                "in EHC's fallback a typed GBFS runs beside the plain one; default on)");
-  cmd->add_flag("--novelty,!--no-novelty", options->novelty,
-                "GBFS orders its queues by novelty within h, then h (best-first width search, Lipovetzky & Geffner "
-                "2017)");
-  cmd->add_option("--novelty-width", options->novelty_width, "Engines ordered by novelty count new facts (1) or new pairs of facts too (2, default)")
-      ->check(CLI::Range(1, 2));
-  cmd->add_flag("--fallback-novelty,!--no-fallback-novelty", options->fallback_novelty,
-                "The typed GBFS of EHC's fallback orders its queues by novelty within h, then h (default on)");
-  cmd->add_flag("--fallback-deferred,!--no-fallback-deferred", options->fallback_deferred,
-                "EHC's fallback adds a GBFS with deferred evaluation to the GBFS and wastar taking turns (default on)");
-  cmd->add_flag("--goal-orders,!--no-goal-orders", options->goal_orders,
-                "EHC and the plain GBFS of its fallback prune states holding a goal that another, still false, must "
-                "precede (orders from h^2 mutexes, Koehler & Hoffmann 2000; default on)");
+  shorthand(cmd->add_option("--ehc-expansions", options->ehc_expansions,
+                            "EHC gives up after this many expansions and GBFS and wastar take turns (default 20000)"));
+  shorthand(cmd->add_option("--ehc-time-share", options->search.knobs.ehc_time_share,
+                            "EHC also gives up after this share of the time limit (default 0.25; 1: only the "
+                            "expansions count)")
+                ->check(CLI::Range(0.0, 1.0)));
+  shorthand(cmd->add_flag("--deferred", options->search.knobs.deferred,
+                          "GBFS and wastar evaluate a node when they expand it, not when they generate it"));
+  shorthand(cmd->add_flag("--type-exploration,!--no-type-exploration", options->search.knobs.type_exploration,
+                          "GBFS also expands every fourth node drawn at random by (h, g) (Xie et al. 2014; seeded, "
+                          "reproducible; in EHC's fallback a typed GBFS runs beside the plain one; default on)"));
+  shorthand(cmd->add_flag("--novelty,!--no-novelty", options->search.novelty,
+                          "GBFS orders its queues by novelty within h, then h (best-first width search, Lipovetzky & "
+                          "Geffner 2017)"));
+  shorthand(cmd->add_option("--novelty-width", options->search.knobs.novelty_width,
+                            "Engines ordered by novelty count new facts (1) or new pairs of facts too (2, default)")
+                ->check(CLI::Range(1, 2)));
+  shorthand(cmd->add_flag("--fallback-novelty,!--no-fallback-novelty", options->search.knobs.fallback_novelty,
+                          "The typed GBFS of EHC's fallback orders its queues by novelty within h, then h (default on)"));
+  shorthand(cmd->add_flag("--fallback-deferred,!--no-fallback-deferred", options->search.knobs.fallback_deferred,
+                          "EHC's fallback adds a GBFS with deferred evaluation to the GBFS and wastar taking turns "
+                          "(default on)"));
+  shorthand(cmd->add_flag("--goal-orders,!--no-goal-orders", options->search.knobs.goal_orders,
+                          "EHC and the plain GBFS of its fallback prune states holding a goal that another, still "
+                          "false, must precede (orders from h^2 mutexes, Koehler & Hoffmann 2000; default on)"));
   cmd->add_flag("!--no-relevance", options->prune_irrelevant,
                 "Search every ground action, not only those that can contribute to the goal");
-  cmd->add_flag("!--no-repetitions", options->count_repetitions,
-                "Without continuous change: do not count how often a constant producer must repeat to meet a numeric "
-                "condition");
-  cmd->add_flag("!--no-resource-balance", options->resource_balance,
-                "With continuous change: do not count the recharges and refuels the relaxed plan's consumption needs");
+  shorthand(cmd->add_flag("!--no-repetitions", options->search.knobs.heuristic.repetitions,
+                          "Without continuous change: do not count how often a constant producer must repeat to meet "
+                          "a numeric condition"));
+  shorthand(cmd->add_flag("!--no-resource-balance", options->search.knobs.heuristic.balance,
+                          "With continuous change: do not count the recharges and refuels the relaxed plan's "
+                          "consumption needs"));
   cmd->add_option("--out", options->out, "Write the best plan to this file");
   cmd->add_flag("--json", options->json, "Print the result as JSON");
   cmd->add_flag("-q,--quiet", options->quiet, "Do not print warnings about the input");
-  cmd->callback([options, &exit_code] { exit_code = run(*options); });
+  cmd->callback([options, shorthand_options, &exit_code] {
+    for (const CLI::Option* o : *shorthand_options) {
+      if (o->count() > 0) options->shorthands_given.push_back(o->get_name());
+    }
+    exit_code = run(*options);
+  });
 }
 
 }  // namespace alplan::cli

@@ -26,9 +26,9 @@ MissionRun run_mission(const MissionInput& input, const ScenarioOptions& options
   MissionRun run;
   // The first plan is the best the planner can prove within its time: the
   // metric penalises suggestions, and the first plan found may suggest.
-  PlannerOptions initial;
+  PlannerOptions initial = repair::executing_planner_options();
   initial.epsilon = options.epsilon;
-  initial.anytime = true;
+  initial.search = alias("anytime");
   initial.time_limit = options.planning_time;
   const repair::PlanningOutcome planned = repair::plan_in_process(*input.domain, input.problem, 0.0, initial);
   if (!planned.plan) throw NoInitialPlan(input.problem.name + ": no initial plan: " + planned.message);

@@ -120,19 +120,21 @@ class HomeRun {
         events_(event_options()),
         returns_(base_, settings.object_return_s),
         return_levels_(settings.battery ? domains::return_levels(base_) : std::map<std::string, double>{}) {
-    planner_.anytime = settings.planner_expansions > 0;
-    planner_.anytime_expansions = settings.planner_expansions;
-    planner_.anytime_min_weight = 3.0;
     // One evaluation per expansion, not one per child: the anytime
     // weights cost a sixth of the time with the same outcomes (1 h of the
-    // large home, home/README.md).
-    planner_.deferred_evaluation = true;
+    // large home, home/README.md). EHC's own budget counts expansions; EHC
+    // stores about two nodes per expansion on the home's relevant actions
+    // (~16 children each), so a fifth of the node limit leaves the fallback
+    // searches room.
+    SearchShorthands search;
+    search.knobs.deferred = true;
+    search.knobs.ehc_expansions = std::min<std::uint64_t>(search.knobs.ehc_expansions, settings.planner_node_limit / 5);
+    search.anytime = settings.planner_expansions > 0;
+    search.anytime_min_weight = 3.0;
+    search.anytime_expansions = settings.planner_expansions;
+    planner_.search = configuration_from(search);
     planner_.time_limit = settings.planning_time;
     planner_.node_limit = settings.planner_node_limit;
-    // EHC's own budget counts expansions; EHC stores about two nodes per
-    // expansion on the home's relevant actions (~16 children each), so a
-    // fifth of the node limit leaves the fallback searches room.
-    planner_.ehc_expansions = std::min<std::uint64_t>(planner_.ehc_expansions, settings.planner_node_limit / 5);
     planner_.epsilon = 0.002;
     // In real time the world goes on while the planner thinks: no step
     // starts before the planning budget has passed.
@@ -140,8 +142,9 @@ class HomeRun {
     // Repairs and merges answer a world that has changed under a running
     // plan: their first plan goes out, improved only as far as this allows.
     replanner_ = planner_;
-    replanner_.anytime = settings.replan_expansions > 0;
-    replanner_.anytime_expansions = settings.replan_expansions;
+    search.anytime = settings.replan_expansions > 0;
+    search.anytime_expansions = settings.replan_expansions;
+    replanner_.search = configuration_from(search);
     repair::StrategyOptions strategy;
     strategy.planner = replanner_;
     strategy_ = repair::make_strategy(settings.strategy, strategy);
@@ -518,7 +521,8 @@ class HomeRun {
   ObjectReturns returns_;
   std::map<std::string, double> return_levels_;  // with batteries: per robot, enough to reach a dock
   std::mt19937_64 events_random_{settings_.seed * 104729 + 3};
-  PlannerOptions planner_, replanner_;
+  PlannerOptions planner_ = repair::executing_planner_options();
+  PlannerOptions replanner_;
   std::unique_ptr<repair::RepairStrategy> strategy_;
   std::vector<PerceivedGoal> pending_, active_;
   std::vector<PerceivedGoal> unplannable_;  // no plan found: they wait for their windows to close

@@ -24,7 +24,7 @@ using OpenList = std::priority_queue<Entry, std::vector<Entry>, std::greater<Ent
 
 class BestFirstSearch : public SearchEngine {
  public:
-  BestFirstSearch(SearchSpace& space, TemporalRpg& heuristic, BestFirstOptions options)
+  BestFirstSearch(SearchSpace& space, Heuristic& heuristic, BestFirstOptions options)
       : space_(space), heuristic_(heuristic), options_(std::move(options)),
         // Ordered by the metric, a goal must be known when it is queued.
         deferred_(options_.deferred && !by_metric()),
@@ -188,7 +188,7 @@ class BestFirstSearch : public SearchEngine {
   }
 
   SearchSpace& space_;
-  TemporalRpg& heuristic_;
+  Heuristic& heuristic_;
   BestFirstOptions options_;
   bool deferred_;
   bool type_exploration_;
@@ -205,7 +205,7 @@ class BestFirstSearch : public SearchEngine {
 
 }  // namespace
 
-std::unique_ptr<SearchEngine> make_best_first_search(SearchSpace& space, TemporalRpg& heuristic,
+std::unique_ptr<SearchEngine> make_best_first_search(SearchSpace& space, Heuristic& heuristic,
                                                      BestFirstOptions options) {
   return std::make_unique<BestFirstSearch>(space, heuristic, std::move(options));
 }

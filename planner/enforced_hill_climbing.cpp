@@ -12,7 +12,7 @@ bool is_helpful(const SearchNode& parent, const StepRecord& step) {
 
 class EnforcedHillClimbing : public SearchEngine {
  public:
-  EnforcedHillClimbing(SearchSpace& space, TemporalRpg& heuristic, bool helpful_only, SearchDeadline deadline)
+  EnforcedHillClimbing(SearchSpace& space, Heuristic& heuristic, bool helpful_only, SearchDeadline deadline)
       : space_(space), heuristic_(heuristic), helpful_only_(helpful_only), deadline_(deadline) {}
 
   std::string name() const override { return helpful_only_ ? "ehc (helpful actions)" : "ehc"; }
@@ -73,7 +73,7 @@ class EnforcedHillClimbing : public SearchEngine {
   }
 
   SearchSpace& space_;
-  TemporalRpg& heuristic_;
+  Heuristic& heuristic_;
   bool helpful_only_;
   SearchDeadline deadline_;
   bool started_ = false;
@@ -83,7 +83,7 @@ class EnforcedHillClimbing : public SearchEngine {
 
 }  // namespace
 
-std::unique_ptr<SearchEngine> make_enforced_hill_climbing(SearchSpace& space, TemporalRpg& heuristic,
+std::unique_ptr<SearchEngine> make_enforced_hill_climbing(SearchSpace& space, Heuristic& heuristic,
                                                           bool helpful_only, SearchDeadline deadline) {
   return std::make_unique<EnforcedHillClimbing>(space, heuristic, helpful_only, deadline);
 }

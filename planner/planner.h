@@ -20,6 +20,8 @@
 #include "planner/ground_task.h"
 #include "planner/plan.h"
 #include "planner/relevance.h"
+#include "planner/search_configuration.h"
+#include "planner/search_pipeline.h"
 #include "planner/search_space.h"
 #include "planner/task_index.h"
 #include "planner/temporal_rpg.h"
@@ -28,23 +30,9 @@
 namespace alplan {
 
 struct PlannerOptions {
-  std::string search = "ehc";      // ehc (falls back to gbfs + wastar), gbfs, wastar
-  std::string heuristic = "trpg";  // trpg, or trpg-nohelpful
-  double weight = 3.0;             // for wastar, and wastar's turns in the ehc fallback
-  // How weighted A* (search "wastar", and the anytime phases) orders its
-  // nodes: "metric" (g = the metric so far, h = the metric still to come,
-  // for a minimised metric that only grows; other tasks fall back to steps)
-  // or "steps" (g = snaps, h = relaxed plan length). GBFS, EHC and the
-  // weighted A* taking turns in EHC's fallback are on steps either way.
-  // Steps by default: on the baseline suite (20 s, anytime) the metric
-  // order improved one first plan, steps ended better on 20 problems and
-  // worse on none (benchmarks/README.md).
-  std::string order = "steps";
-  // EHC gives up after this many expansions (it is incomplete and can wander
-  // on plateaus); GBFS and weighted A* then take turns.
-  std::uint64_t ehc_expansions = 20000;
-  // ... or after this share of the time limit, whichever comes first.
-  double ehc_time_share = 0.25;
+  // What searches, with which heuristics and pruning, in which order
+  // (search_configuration.h): the `default` alias unless set.
+  SearchConfiguration search = alias("default");
   // Seconds from the call to plan(), setup and search; checked before every
   // heuristic evaluation, so a large task overruns it by one evaluation.
   double time_limit = std::numeric_limits<double>::infinity();
@@ -53,15 +41,6 @@ struct PlannerOptions {
   // stops as at a limit, its memory handed over unfreed; 0: none. Set below
   // RLIMIT_AS, so a search ends before an allocation is refused.
   std::size_t address_space_limit = 0;
-  bool anytime = false;            // keep improving after the first plan
-  // Anytime mode runs weighted A* with weights 5, 3, 2, 1.5 and 1 in turn,
-  // each bounded by the best plan so far, down to this weight (the lower
-  // the weight, the longer it takes to find nothing better).
-  double anytime_min_weight = 1.0;
-  // With this set, each weight gives up after so many expansions (0: until
-  // it finds a better plan or proves there is none). Proving is what costs:
-  // most of the time the first plan is not beaten.
-  std::uint64_t anytime_expansions = 0;
   double epsilon = 0.001;          // separation of dependent happenings
   // Planning takes time the world does not stop for: with this set, no step
   // starts before now + time_limit, so deadlines (timed literals) shrink by
@@ -70,40 +49,9 @@ struct PlannerOptions {
   // Search only the actions that can contribute to the goal
   // (planner/relevance.h); the plans are the same, the heuristic cheaper.
   bool prune_irrelevant = true;
-  // GBFS and weighted A* evaluate a node when they expand it, under its
-  // parent's h until then (search_engine.h); EHC is unchanged.
-  bool deferred_evaluation = false;
-  // GBFS also expands every fourth node from a queue drawing at random by
-  // (h, g) (planner/type_bucket_queue.h); the draws are seeded, so a run is
-  // reproducible. In EHC's fallback the typed GBFS runs beside a plain one
-  // (and the deferred GBFS is typed): neither alone solves every problem
-  // the pair does (benchmarks/README.md).
-  bool type_exploration = true;
-  // EHC's fallback runs a GBFS with deferred evaluation as well, all its
-  // engines taking turns. Both on since the whole IPC suite gained with them
-  // (benchmarks/README.md).
-  bool fallback_deferred = true;
-  // EHC's fallback's typed eager GBFS orders its queues by novelty within
-  // h, then h (planner/novelty_table.h).
-  bool fallback_novelty = true;
-  // EHC and the plain GBFS of its fallback treat a state that holds a goal
-  // which another goal must precede, without that goal, as a dead end
-  // (planner/goal_orders.h); the fallback's other engines do not, so the
-  // portfolio stays complete.
-  bool goal_orders = true;
-  // With continuous change: the heuristic counts the producers (recharges,
-  // refuels) the relaxed plan's consumption needs (planner/resource_shortfall.h).
-  bool resource_balance = true;
-  // Without continuous change: an unmet numeric condition counts the
-  // repetitions of a constant producer it needs (planner/numeric_relaxation.h).
-  bool count_repetitions = true;
-  // GBFS orders its queues by (novelty, h), novelty within the node's h
-  // (planner/novelty_table.h).
-  bool novelty = false;
-  // Novelty of facts (1) or of pairs of facts as well (2), for every engine
-  // ordered by novelty. 2 solves storage 2011, which 1 does not
-  // (benchmarks/README.md).
-  int novelty_width = 2;
+  // Lift each plan to the partial order its causal links need and schedule
+  // it again (planner/plan_deordering.h); kept when valid and no worse.
+  bool deorder = true;
 };
 
 struct FoundPlan {
@@ -119,10 +67,11 @@ struct SearchPhaseTimes {
 };
 
 struct PlannerResult {
-  // Unsolvable is claimed only with a proof: the relaxation fails from the
-  // start, or a complete search is exhausted on a task without deadlines
-  // (timed initial literals), where ignoring schedules in duplicate
-  // detection loses nothing. Otherwise an exhausted search is Exhausted.
+  // Unsolvable is claimed only with a proof: the goal is grounded away, the
+  // timed literals clash, the sound relaxation fails from the start, or a
+  // complete search (search_configuration.h) is exhausted where nothing in
+  // the task keeps that from being a proof. Otherwise an exhausted search is
+  // Exhausted, and the message says why it proves nothing.
   enum class Status { Solved, Unsolvable, Exhausted, LimitReached, Unsupported, InternalError };
   Status status = Status::LimitReached;
   std::vector<FoundPlan> plans;  // each better than the one before; the last is the best
@@ -195,6 +144,8 @@ class Planner {
   // plan_from on the relevant actions' view, its ids mapped.
   PlannerResult plan_relevant(const PlanningStart& start, const std::function<void(const FoundPlan&)>& on_plan);
   PlannerResult search_from(const PlanningStart& start, const std::function<void(const FoundPlan&)>& on_plan);
+  std::optional<PlannerResult> refused(const TaskIndex& index, const PlanningStart& start) const;
+  void finish(PlannerResult& result, const PipelineOutcome& outcome) const;
 
   std::shared_ptr<const GroundTask> task_;
   PlannerOptions options_;

@@ -77,10 +77,10 @@ struct BestFirstOptions {
 // Enforced hill-climbing (Hoffmann & Nebel 2001) over helpful snaps, as
 // POPF's first search: breadth-first from the best node until a child has a
 // strictly smaller h. Exhausted when a plateau has no exit.
-std::unique_ptr<SearchEngine> make_enforced_hill_climbing(SearchSpace& space, TemporalRpg& heuristic,
+std::unique_ptr<SearchEngine> make_enforced_hill_climbing(SearchSpace& space, Heuristic& heuristic,
                                                           bool helpful_only = true, SearchDeadline deadline = {});
 // Greedy best-first search or weighted A*.
-std::unique_ptr<SearchEngine> make_best_first_search(SearchSpace& space, TemporalRpg& heuristic,
+std::unique_ptr<SearchEngine> make_best_first_search(SearchSpace& space, Heuristic& heuristic,
                                                      BestFirstOptions options);
 
 }  // namespace alplan

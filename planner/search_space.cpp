@@ -123,7 +123,7 @@ std::vector<Child> SearchSpace::children(NodeId id, const PartialPlan& plan, Sea
   return result;
 }
 
-bool SearchSpace::evaluate_node(SearchNode& node, const PartialPlan& plan, TemporalRpg& heuristic,
+bool SearchSpace::evaluate_node(SearchNode& node, const PartialPlan& plan, Heuristic& heuristic,
                                 SearchStatistics& stats) const {
   ++stats.evaluated;
   if (orders_ && orders_->broken_by(node.state)) {
@@ -150,16 +150,16 @@ bool SearchSpace::evaluate_node(SearchNode& node, const PartialPlan& plan, Tempo
   return !value.dead_end();
 }
 
-bool SearchSpace::evaluate(Child& child, TemporalRpg& heuristic, SearchStatistics& stats) const {
+bool SearchSpace::evaluate(Child& child, Heuristic& heuristic, SearchStatistics& stats) const {
   return evaluate_node(child.node, child.plan, heuristic, stats);
 }
 
-bool SearchSpace::evaluate_stored(NodeId id, const PartialPlan& plan, TemporalRpg& heuristic,
+bool SearchSpace::evaluate_stored(NodeId id, const PartialPlan& plan, Heuristic& heuristic,
                                   SearchStatistics& stats) {
   return evaluate_node(nodes_[id], plan, heuristic, stats);
 }
 
-void SearchSpace::set_root_heuristic(TemporalRpg& heuristic, SearchStatistics& stats) {
+void SearchSpace::set_root_heuristic(Heuristic& heuristic, SearchStatistics& stats) {
   ++stats.evaluated;
   HeuristicValue value = heuristic.evaluate(nodes_[0].state, partial_plan(0));
   if (value.dead_end() && options_.confirm_dead_ends) {

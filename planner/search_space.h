@@ -117,16 +117,16 @@ class SearchSpace {
   std::optional<Child> schedule(NodeId id, const PartialPlan& plan, Successor successor,
                                 SearchStatistics& stats) const;
   // Evaluates a child; false for a dead end.
-  bool evaluate(Child& child, TemporalRpg& heuristic, SearchStatistics& stats) const;
+  bool evaluate(Child& child, Heuristic& heuristic, SearchStatistics& stats) const;
   // The same for a node stored unevaluated (deferred evaluation).
-  bool evaluate_stored(NodeId id, const PartialPlan& plan, TemporalRpg& heuristic, SearchStatistics& stats);
+  bool evaluate_stored(NodeId id, const PartialPlan& plan, Heuristic& heuristic, SearchStatistics& stats);
   // Stores a child unless a stored node with its state dominates it.
   std::optional<NodeId> insert(Child child, SearchStatistics& stats);
   // Whether insert() would drop the child as a duplicate (counted then):
   // the state and its timing are known before the heuristic is, so engines
   // ask first and evaluate only new children.
   bool known(const Child& child, SearchStatistics& stats) const;
-  void set_root_heuristic(TemporalRpg& heuristic, SearchStatistics& stats);
+  void set_root_heuristic(Heuristic& heuristic, SearchStatistics& stats);
   // The stored node with this state, if any.
   std::optional<NodeId> find(const SearchState& state) const;
 
@@ -149,7 +149,7 @@ class SearchSpace {
   bool dominated(const SearchNode& candidate, NodeId stored) const;
   bool timed_literals_remain(const SearchState& state) const;
   static TemporalSignature signature_of(const SearchState& state, const PartialPlan& plan);
-  bool evaluate_node(SearchNode& node, const PartialPlan& plan, TemporalRpg& heuristic, SearchStatistics& stats) const;
+  bool evaluate_node(SearchNode& node, const PartialPlan& plan, Heuristic& heuristic, SearchStatistics& stats) const;
 
   SearchSpaceOptions options_;
   bool deadlines_;  // the task has timed initial literals

@@ -104,7 +104,7 @@ py::object execute(const py::object& domain_arg, const py::object& problem_arg, 
   } catch (const std::invalid_argument& e) {
     throw py::value_error(e.what());
   }
-  PlannerOptions initial;
+  PlannerOptions initial = repair::executing_planner_options();
   initial.epsilon = epsilon;
   initial.time_limit = time_limit;
   const repair::PlanningOutcome planned = repair::plan_in_process(*domain.ast, *problem.ast, 0.0, initial);

@@ -61,32 +61,39 @@ PyFoundPlan found_plan(const FoundPlan& p) {
   return out;
 }
 
-// Keyword arguments onto PlannerOptions; an unknown one is a TypeError.
+// Keyword arguments onto PlannerOptions; an unknown one is a TypeError. The
+// search is `search` (ehc, gbfs, wastar, an alias or an expression,
+// planner/search_configuration.h) or `alias`; the other keywords are the
+// shorthands `alplan plan`'s flags are.
 PlannerOptions planner_options(double time_limit, const py::kwargs& options) {
   PlannerOptions o;
   o.time_limit = time_limit;
+  SearchShorthands search;
+  std::string heuristic = "trpg", order = "steps";
   for (const auto& [key, value] : options) {
     const std::string k = py::str(key);
-    if (k == "anytime") o.anytime = value.cast<bool>();
-    else if (k == "search") o.search = value.cast<std::string>();
-    else if (k == "heuristic") o.heuristic = value.cast<std::string>();
-    else if (k == "weight") o.weight = value.cast<double>();
-    else if (k == "order") o.order = value.cast<std::string>();
+    if (k == "anytime") search.anytime = value.cast<bool>();
+    else if (k == "search" || k == "alias") search.search = value.cast<std::string>();
+    else if (k == "heuristic") heuristic = value.cast<std::string>();
+    else if (k == "weight") search.knobs.weight = value.cast<double>();
+    else if (k == "order") order = value.cast<std::string>();
     else if (k == "epsilon") o.epsilon = value.cast<double>();
     else if (k == "reserve_planning_time") o.reserve_planning_time = value.cast<bool>();
-    else if (k == "anytime_min_weight") o.anytime_min_weight = value.cast<double>();
-    else if (k == "anytime_expansions") o.anytime_expansions = value.cast<std::uint64_t>();
-    else if (k == "ehc_expansions") o.ehc_expansions = value.cast<std::uint64_t>();
+    else if (k == "anytime_min_weight") search.anytime_min_weight = value.cast<double>();
+    else if (k == "anytime_expansions") search.anytime_expansions = value.cast<std::uint64_t>();
+    else if (k == "ehc_expansions") search.knobs.ehc_expansions = value.cast<std::uint64_t>();
     else throw py::type_error("plan() got an unexpected keyword argument '" + k + "'");
   }
-  if (o.search != "ehc" && o.search != "gbfs" && o.search != "wastar") {
-    throw py::value_error("search must be ehc, gbfs or wastar, not '" + o.search + "'");
+  if (order != "metric" && order != "steps") throw py::value_error("order must be metric or steps, not '" + order + "'");
+  if (heuristic != "trpg" && heuristic != "trpg-nohelpful") {
+    throw py::value_error("heuristic must be trpg or trpg-nohelpful, not '" + heuristic + "'");
   }
-  if (o.order != "metric" && o.order != "steps") {
-    throw py::value_error("order must be metric or steps, not '" + o.order + "'");
-  }
-  if (o.heuristic != "trpg" && o.heuristic != "trpg-nohelpful") {
-    throw py::value_error("heuristic must be trpg or trpg-nohelpful, not '" + o.heuristic + "'");
+  search.metric_order = order == "metric";
+  search.knobs.heuristic.helpful = heuristic == "trpg";
+  try {
+    o.search = configuration_from(search);
+  } catch (const SearchConfigurationError& e) {
+    throw py::value_error(e.what());
   }
   return o;
 }

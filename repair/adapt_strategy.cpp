@@ -73,10 +73,8 @@ class AdaptStrategy : public RepairStrategy {
     }
     const std::optional<NumericVarId> cost = total_cost(*task);
     PlannerOptions planner = options_.planner;
-    planner.anytime = true;
+    planner.search = with_anytime(planner.search, options_.adapt_min_weight, options_.adapt_expansions);
     planner.time_limit = std::min(planner.time_limit, options_.adapt_budget);
-    planner.anytime_min_weight = options_.adapt_min_weight;
-    planner.anytime_expansions = options_.adapt_expansions;
     const std::shared_ptr<const GroundTask> view = cost ? penalised(*task, keep, *cost, options_.adapt_penalty) : task;
     PlanningStart start = initial_start(*view);
     start.now = request.now;

@@ -353,7 +353,7 @@ class Execution {
     // suggestion) that the metric would never choose.
     PlannerOptions planner = options_.planner;
     planner.epsilon = plan_.epsilon;
-    planner.anytime = true;
+    planner.search = with_anytime(planner.search);
     planner.time_limit = std::min(planner.time_limit, options_.proactive_budget);
     RepairResult result = replan_from(r, *mission_.domain, known, planner);
     result.integrated = seen;

@@ -33,7 +33,7 @@ struct MonitorOptions {
   bool proactive = false;
   double proactive_gain = 1.0;
   double proactive_budget = 0.25;  // seconds of anytime search per look
-  PlannerOptions planner;  // for the proactive plans
+  PlannerOptions planner = executing_planner_options();  // for the proactive plans
   // Ground the mission's problem once, when execution starts, and let the
   // repairs reuse that grounding while the observed world stays within it
   // (planner/grounding_cache.h); off, every repair grounds from scratch.

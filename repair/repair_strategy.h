@@ -28,8 +28,20 @@
 
 namespace alplan::repair {
 
+// Planner options for plans a robot executes under the monitor: as the
+// planner's, without deordering (planner/plan_deordering.h). A deordered
+// plan may start a step at the instant the step it needs ends, where VAL
+// allows it (an invariant is no start condition); the monitor's world runs
+// one happening's members in some order, and the paper's figures are
+// OPTIC's schedules, which keep one epsilon there.
+inline PlannerOptions executing_planner_options() {
+  PlannerOptions options;
+  options.deorder = false;
+  return options;
+}
+
 struct StrategyOptions {
-  PlannerOptions planner;
+  PlannerOptions planner = executing_planner_options();
   // Schemas that hand an object over; `suggest` plans without them.
   std::set<std::string> handling_actions{"carry", "fill", "give"};
   // `adapt`: the cost of an action the old plan lacks, and the search budget.
@@ -40,7 +52,7 @@ struct StrategyOptions {
   // plan in 57 repairs and took 60% of the time.
   double adapt_min_weight = 3.0;
   // Expansions each anytime weight may spend looking for a closer plan
-  // (PlannerOptions::anytime_expansions); 0: until proven.
+  // (with_anytime, search_configuration.h); 0: until proven.
   std::uint64_t adapt_expansions = 0;
 };
 

@@ -75,7 +75,9 @@ void write_task(const Disagreement& d, const std::string& dir) {
   std::ofstream(folder / "finding.txt") << d.kind << "\nplanner: " << d.planner_status << "\n" << d.message << "\n";
 }
 
-std::string plan_text(const Plan& plan) { return write_plan(plan, 3); }
+std::string plan_text(const Plan& plan) {
+  return plan.steps.empty() ? "; the empty plan: the goal holds from the start\n" : write_plan(plan, 3);
+}
 
 // One task: the planner, then (where it found nothing) the brute force.
 void check_task(std::uint64_t seed, const DifferentialOptions& options, DifferentialReport& report) {

@@ -274,9 +274,10 @@ std::unique_ptr<StudySetup> prepare_study(const RepairBenchOptions& o, const std
   // Repairs are judged by the metric (a suggestion costs 500): a first plan
   // found by step count would suggest wherever it can, whichever objects a
   // strategy brings in. A short anytime search, the same for every strategy.
-  strategy_options.planner.anytime = o.repair_anytime;
-  strategy_options.planner.anytime_min_weight = o.repair_min_weight;
-  strategy_options.planner.anytime_expansions = o.repair_expansions;
+  if (o.repair_anytime) {
+    strategy_options.planner.search =
+        with_anytime(strategy_options.planner.search, o.repair_min_weight, o.repair_expansions);
+  }
   for (const std::string& name : o.strategies) {
     setup->strategies.push_back(repair::make_strategy(name, strategy_options));
     setup->order.push_back(name);
@@ -301,10 +302,9 @@ std::vector<RunRecord> run_home(StudySetup& setup, int h, const RepairBenchOptio
   // As a mission plans (domains/mission_run.h): the best plan found in a
   // short anytime search, since the metric penalises suggestions and the
   // first plan found often suggests.
-  PlannerOptions initial;
+  PlannerOptions initial = repair::executing_planner_options();
   initial.epsilon = o.epsilon;
-  initial.anytime = true;
-  initial.anytime_expansions = o.initial_expansions;
+  initial.search = with_anytime(initial.search, 1.0, o.initial_expansions);
   initial.time_limit = std::min(o.planning_time, o.initial_planning_time);
   const repair::PlanningOutcome planned = repair::plan_in_process(setup.domain, *files.problem, 0.0, initial);
   std::vector<RunRecord> records;

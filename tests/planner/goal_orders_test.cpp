@@ -130,11 +130,12 @@ TEST_CASE("Pruning by goal orders solves floor-tile 2011 instance 3 within a nod
   const test::LoadedTask task = test::load_task(dir + "domain.pddl", dir + "instances/instance-3.pddl");
   PlannerOptions options;
   options.node_limit = 40'000;
-  options.goal_orders = true;
   const PlannerResult with = Planner(ground(task.normalized), options).plan();
   REQUIRE(with.status == Status::Solved);
   CHECK(with.best()->validation.valid);
-  options.goal_orders = false;
+  DefaultSearchKnobs no_orders;
+  no_orders.goal_orders = false;
+  options.search = parse_search_configuration(default_expression(no_orders));
   const PlannerResult without = Planner(ground(task.normalized), options).plan();
   CHECK(without.status == Status::LimitReached);
 }

@@ -20,8 +20,7 @@ std::shared_ptr<const GroundTask> ground_text(const std::string& domain, const s
 // First plan of weighted A* (w=3) alone, no anytime improvement.
 PlannerResult first_plan(const std::shared_ptr<const GroundTask>& task, const std::string& order) {
   PlannerOptions options;
-  options.search = "wastar";
-  options.order = order;
+  options.search = parse_search_configuration("wastar(trpg, w=3, order=" + order + ")");
   options.time_limit = 20.0;
   return Planner(task, options).plan();
 }
@@ -100,10 +99,13 @@ TEST_CASE("metric order: a metric that is not minimised and monotone keeps the s
 }
 
 TEST_CASE("metric order: an unknown order is refused") {
-  auto task = ground_text(kErrand, errand_problem("minimize (total-cost)"));
-  const PlannerResult result = first_plan(task, "cost");
-  CHECK(result.status == Status::Unsupported);
-  CHECK(result.message.find("unknown order 'cost'") != std::string::npos);
+  // In the configuration, before any task is read (search_configuration.h).
+  try {
+    parse_search_configuration("wastar(trpg, order=cost)");
+    FAIL("an unknown order was accepted");
+  } catch (const SearchConfigurationError& e) {
+    CHECK(std::string(e.what()).find("order is steps or metric") != std::string::npos);
+  }
 }
 
 TEST_CASE("linear metric: weights of total-time and fluents, and what each action adds") {

@@ -21,9 +21,7 @@ PlannerResult greedy_on_storage(bool novelty, std::size_t node_limit) {
   const std::string dir = test::benchmarks_dir() + "/ipc/ipc-2014/storage-temporal-satisficing/";
   const test::LoadedTask task = test::load_task(dir + "domain.pddl", dir + "instances/instance-5.pddl");
   PlannerOptions options;
-  options.search = "gbfs";
-  options.type_exploration = false;
-  options.novelty = novelty;
+  options.search = parse_search_configuration(novelty ? "gbfs(trpg, novelty=2)" : "gbfs(trpg)");
   options.node_limit = node_limit;
   return Planner(ground(task.normalized), options).plan();
 }
@@ -39,6 +37,6 @@ TEST_CASE("novelty: a greedy search ordered by novelty escapes the dead ends of 
   const PlannerResult with_novelty = greedy_on_storage(true, limit);
   REQUIRE(with_novelty.status == Status::Solved);
   CHECK(with_novelty.best()->validation.valid);
-  CHECK(with_novelty.best()->engine == "gbfs (novelty)");
+  CHECK(with_novelty.best()->engine.rfind("gbfs (novelty)", 0) == 0);
   CHECK(greedy_on_storage(false, limit).status == Status::LimitReached);
 }

@@ -144,7 +144,7 @@ TEST_CASE("facts a precondition names under a static antecedent still order the 
   CHECK(found);
   for (const std::string search : {"ehc", "gbfs", "wastar"}) {
     PlannerOptions options;
-    options.search = search;
+    options.search = configuration_named(search);
     PlannerResult result = solve(task, options);
     INFO(search << ": " << result.message);
     REQUIRE(result.status == Status::Solved);
@@ -184,7 +184,7 @@ TEST_CASE("numeric fluents, negative preconditions, conditional effects and deri
   auto task = ground_text(kMixed, kMixedProblem);
   for (const std::string search : {"ehc", "gbfs", "wastar"}) {
     PlannerOptions options;
-    options.search = search;
+    options.search = configuration_named(search);
     PlannerResult result = solve(task, options);
     INFO(search << ": " << result.message);
     REQUIRE(result.status == Status::Solved);
@@ -248,7 +248,7 @@ TEST_CASE("non-linear continuous effects are rejected with the construct and its
 TEST_CASE("anytime search returns ever better plans under a monotone metric") {
   auto task = ground_text(kMixed, kMixedProblem);
   PlannerOptions options;
-  options.anytime = true;
+  options.search = alias("anytime");
   options.time_limit = 10.0;
   std::vector<double> streamed;
   PlannerResult result = Planner(task, options).plan([&](const FoundPlan& p) { streamed.push_back(p.validation.value); });
@@ -262,10 +262,10 @@ TEST_CASE("anytime search returns ever better plans under a monotone metric") {
 TEST_CASE("anytime search under an expansion cap per weight keeps its plans and expands less") {
   auto task = ground_text(kMixed, kMixedProblem);
   PlannerOptions options;
-  options.anytime = true;
+  options.search = alias("anytime");
   options.time_limit = 10.0;
   const PlannerResult full = Planner(task, options).plan();
-  options.anytime_expansions = 1;
+  options.search = with_anytime(options.search, 1.0, 1);
   const PlannerResult capped = Planner(task, options).plan();
   REQUIRE(capped.status == Status::Solved);
   REQUIRE(capped.best());
@@ -273,8 +273,7 @@ TEST_CASE("anytime search under an expansion cap per weight keeps its plans and 
   CHECK(capped.best()->validation.value >= full.best()->validation.value);
   CHECK(capped.statistics.expanded < full.statistics.expanded);
   // Stopping at weight 5 runs one weight of five.
-  options.anytime_expansions = 0;
-  options.anytime_min_weight = 5.0;
+  options.search = with_anytime(options.search, 5.0, 0);
   const PlannerResult heavy = Planner(task, options).plan();
   REQUIRE(heavy.best());
   CHECK(heavy.best()->validation.value >= full.best()->validation.value);
@@ -293,7 +292,9 @@ TEST_CASE("EHC hands over to its fallback after its share of the time limit") {
   const PlannerResult climbed = Planner(task, options).plan();
   REQUIRE(climbed.best());
   CHECK(climbed.best()->engine.find("ehc") != std::string::npos);
-  options.ehc_time_share = 0.0;
+  DefaultSearchKnobs no_share;
+  no_share.ehc_time_share = 0.0;
+  options.search = parse_search_configuration(default_expression(no_share));
   const PlannerResult handed = Planner(task, options).plan();
   REQUIRE(handed.best());
   CHECK(handed.best()->validation.valid);
@@ -416,7 +417,9 @@ TEST_CASE("a search stops below its address-space limit and hands its memory ove
   // The guard is under test, not the engines: with the novelty-ordered GBFS
   // in the fallback this search grows too slowly to reach the limit in 120 s
   // (measured), without it by tens of MB a second.
-  options.fallback_novelty = false;
+  DefaultSearchKnobs no_novelty;
+  no_novelty.fallback_novelty = false;
+  options.search = parse_search_configuration(default_expression(no_novelty));
   const auto began = std::chrono::steady_clock::now();
   const PlannerResult r = Planner(task, options).plan();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
@@ -439,7 +442,7 @@ TEST_CASE("duplicates are recognised before they are evaluated") {
   for (const std::string search : {"gbfs", "wastar"}) {
     INFO(search);
     PlannerOptions options;
-    options.search = search;
+    options.search = configuration_named(search);
     options.node_limit = 2000;
     const PlannerResult r = Planner(task, options).plan();
     REQUIRE(r.status == Status::LimitReached);
@@ -456,9 +459,12 @@ TEST_CASE("deferred evaluation: one evaluation per expansion, the same kind of p
     for (const std::string search : {"gbfs", "wastar"}) {
       INFO(problem << " " << search);
       PlannerOptions eager;
-      eager.search = search;
+      eager.search = configuration_named(search);
       PlannerOptions deferred = eager;
-      deferred.deferred_evaluation = true;
+      SearchShorthands shorthands;
+      shorthands.search = search;
+      shorthands.knobs.deferred = true;
+      deferred.search = configuration_from(shorthands);
       const PlannerResult a = Planner(task, eager).plan();
       const PlannerResult b = Planner(task, deferred).plan();
       REQUIRE(a.status == Status::Solved);
@@ -476,9 +482,7 @@ TEST_CASE("deferred evaluation: one evaluation per expansion, the same kind of p
   // deferring is refused quietly there.
   const auto task = ground_text(kMatch, kMatchProblem);
   PlannerOptions metric;
-  metric.search = "wastar";
-  metric.order = "metric";
-  metric.deferred_evaluation = true;
+  metric.search = parse_search_configuration("wastar(trpg, w=3, order=metric, deferred=true)");
   const PlannerResult m = Planner(task, metric).plan();
   REQUIRE(m.status == Status::Solved);
   CHECK(m.best()->engine.find("deferred") == std::string::npos);
@@ -490,10 +494,9 @@ TEST_CASE("type-based exploration: valid plans, the same run twice, a different 
     INFO(problem);
     auto task = ground_ipc(problem);
     PlannerOptions plain;
-    plain.search = "gbfs";
-    plain.type_exploration = false;
+    plain.search = parse_search_configuration("gbfs(trpg)");
     PlannerOptions typed = plain;
-    typed.type_exploration = true;
+    typed.search = parse_search_configuration("gbfs(trpg, queue=typed)");
     const PlannerResult a = Planner(task, plain).plan();
     const PlannerResult b = Planner(task, typed).plan();
     const PlannerResult c = Planner(task, typed).plan();
@@ -515,12 +518,14 @@ TEST_CASE("EHC's fallback with a deferred GBFS among its engines finds valid pla
                                     "ipc-2011/match-cellar-temporal-satisficing/instances/instance-1.pddl"}) {
     INFO(problem);
     auto task = ground_ipc(problem);
+    DefaultSearchKnobs knobs;
+    knobs.ehc_expansions = 1;  // straight to the fallback
+    knobs.fallback_deferred = false;
     PlannerOptions two;
-    two.ehc_expansions = 1;  // straight to the fallback
-    two.type_exploration = true;
-    two.fallback_deferred = false;
+    two.search = parse_search_configuration(default_expression(knobs));
     PlannerOptions three = two;
-    three.fallback_deferred = true;
+    knobs.fallback_deferred = true;
+    three.search = parse_search_configuration(default_expression(knobs));
     const PlannerResult a = Planner(task, two).plan();
     const PlannerResult b = Planner(task, three).plan();
     const PlannerResult c = Planner(task, three).plan();
@@ -542,14 +547,13 @@ TEST_CASE("type-based exploration leaves the dining philosophers' plateau that G
   // benchmarks/README.md), with type-based exploration 1,175.
   auto task = ground_ipc("ipc-2004/promela-dining-philosophers-derived-predicates-adl/instances/instance-3.pddl");
   PlannerOptions options;
-  options.search = "gbfs";
-  options.type_exploration = true;
+  options.search = parse_search_configuration("gbfs(trpg, queue=typed)");
   options.node_limit = 20000;
   const PlannerResult typed = Planner(task, options).plan();
   REQUIRE(typed.status == Status::Solved);
   CHECK(typed.best()->validation.valid);
   CHECK(typed.statistics.expanded < 5000);
-  options.type_exploration = false;
+  options.search = parse_search_configuration("gbfs(trpg)");
   CHECK(Planner(task, options).plan().status == Status::LimitReached);
 }
 

@@ -104,7 +104,7 @@ def test_anytime_gives_improving_plans():
 def test_options_are_checked():
     with pytest.raises(TypeError, match="unexpected keyword argument 'speed'"):
         alplan.plan(os.path.join(MATCH, "domain.pddl"), os.path.join(MATCH, "instances", "instance-1.pddl"), speed=2)
-    with pytest.raises(ValueError, match="search must be"):
+    with pytest.raises(ValueError, match="unknown engine 'dfs'"):
         alplan.plan(os.path.join(MATCH, "domain.pddl"), os.path.join(MATCH, "instances", "instance-1.pddl"),
                     search="dfs")
     with pytest.raises(ValueError, match="order must be"):

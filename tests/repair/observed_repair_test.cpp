@@ -156,7 +156,7 @@ Generated generated(std::uint64_t seed) {
   g.domain = repair::augment_domain(*paper.domain, g.ontology);
   g.problem = *load_pddl_text(pddl::write_domain(*paper.domain), "domain.pddl", home.problem, "home.pddl").problem;
   PlannerOptions planner;
-  planner.anytime = true;
+  planner.search = with_anytime(planner.search);
   planner.time_limit = 1.0;
   const repair::PlanningOutcome planned = repair::plan_in_process(g.domain, g.problem, 0.0, planner);
   REQUIRE(planned.plan);

@@ -1,0 +1,142 @@
+// Search configurations as components (Fast Downward's option parser and
+// aliases): a small expression language names the engines, their heuristic,
+// their open lists and their pruning, and how they are combined.
+//
+//   configuration := engine
+//   engine        := ehc(HEURISTIC, expansions=N, time_share=F, goal_orders=B)
+//                  | gbfs(HEURISTIC, queue=plain|typed, novelty=0|1|2, deferred=B, preferred=B, goal_orders=B)
+//                  | wastar(HEURISTIC, w=W, order=steps|metric, deferred=B, preferred=B)
+//                  | complete(ENGINE)               a gbfs or wastar that misses no plan
+//                  | portfolio(ENGINE, ENGINE, ...) leaf engines taking turns, one expansion each
+//                  | then(ENGINE, ENGINE, ...)      phases: the next runs when one gives up
+//                  | anytime(ENGINE, weights=[W, ...], expansions=N, order=steps|metric)
+//   HEURISTIC     := trpg(helpful=B, repetitions=B, balance=B) | blind
+//
+// Leaf engines and portfolios also take `expansions=N` and `time_share=F`
+// (of the time limit): past either the phase gives up and the next of a
+// `then` runs. A name alone stands for its call with defaults (`gbfs` is
+// `gbfs(trpg)`); booleans are true/false. Named configurations (aliases):
+// `default` (EHC, falling back to a portfolio of greedy searches and
+// weighted A*, then a complete search), `anytime` (the default, then weighted
+// A* with falling weights under the best plan's value), `gbfs`, `wastar`,
+// `ehc` (the default: EHC and its fallback, as `--search ehc` always meant),
+// and `complete`. planner/README.md documents each component.
+//
+// Which engine may prune what (and so which may prove unsolvability):
+// - `goal_orders` prunes states holding a goal that another still-false
+//   goal must precede (goal_orders.h): the orders come from a compression of
+//   durative actions into classical steps, a heuristic for temporal tasks,
+//   so an engine using them never proves anything.
+// - Every engine but a complete one prunes on the guiding relaxation's dead
+//   ends, drops a node whose state a stored node has with a schedule that
+//   looks no worse (TemporalSignature), and never runs an action twice at
+//   once; a complete one prunes only dead ends the sound relaxation confirms,
+//   compares schedules exactly and lets actions overlap themselves
+//   (SearchSpaceOptions), so its exhaustion proves that no plan exists.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace alplan {
+
+struct HeuristicSpec {
+  enum class Kind { Trpg, Blind };
+  Kind kind = Kind::Trpg;
+  bool helpful = true;      // trpg: helpful actions
+  bool repetitions = true;  // trpg: repetitions of constant producers
+  bool balance = true;      // trpg: resource balance with continuous change
+  bool operator==(const HeuristicSpec&) const = default;
+};
+
+struct EngineSpec {
+  enum class Kind { Ehc, Gbfs, Wastar, Portfolio, Then, Anytime };
+  Kind kind = Kind::Ehc;
+  HeuristicSpec heuristic;
+  // A phase's budget: past so many expansions (0: no bound), or this share
+  // of the time limit (1: the whole), it gives up.
+  std::uint64_t expansions = 0;
+  double time_share = 1.0;
+  bool goal_orders = false;  // ehc, gbfs
+  bool typed = false;        // gbfs: a type-based queue beside the others
+  int novelty = 0;           // gbfs: order by novelty of this width within h (0: by h)
+  bool deferred = false;     // gbfs, wastar: evaluate when expanded
+  bool preferred = true;     // gbfs, wastar: a queue of helpful children
+  double weight = 3.0;       // wastar
+  bool metric_order = false; // wastar, anytime: order by the metric, not steps
+  bool complete = false;     // gbfs, wastar: miss no plan
+  std::vector<double> weights;           // anytime
+  std::vector<EngineSpec> children;      // portfolio, then; anytime: the first search
+  bool operator==(const EngineSpec&) const = default;
+};
+
+struct SearchConfiguration {
+  EngineSpec engine;
+  // Writes the configuration back as an expression `parse` reads to the same.
+  std::string to_string() const;
+};
+
+// A malformed expression: the message names the place (a character offset)
+// and what was expected.
+class SearchConfigurationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+SearchConfiguration parse_search_configuration(std::string_view expression);
+// The expression of a named configuration; throws for an unknown name.
+std::string alias_expression(std::string_view name);
+std::vector<std::string> alias_names();
+SearchConfiguration alias(std::string_view name);
+
+// The default configuration with its historical knobs (the flags of
+// `alplan plan` before this language; they stay as shorthands).
+struct DefaultSearchKnobs {
+  std::uint64_t ehc_expansions = 20000;
+  double ehc_time_share = 0.25;
+  bool type_exploration = true;
+  bool fallback_deferred = true;
+  bool fallback_novelty = true;
+  int novelty_width = 2;
+  bool goal_orders = true;
+  double weight = 3.0;
+  bool deferred = false;  // every greedy and weighted A* search evaluates when it expands
+  HeuristicSpec heuristic;
+};
+std::string default_expression(const DefaultSearchKnobs& knobs = {});
+
+// Wraps a first search into anytime mode: weighted A* with weights from
+// `weights` down to `min_weight`, each capped at `expansions` (0: none).
+std::string anytime_expression(const std::string& first, double min_weight = 1.0, std::uint64_t expansions = 0,
+                               bool metric_order = false);
+
+// `configuration` in anytime mode: followed by weighted A* with the weights
+// 5, 3, 2, 1.5, 1 down to `min_weight`, each capped at `expansions` (0: until
+// it finds a better plan or proves there is none). An anytime configuration
+// keeps its first search and takes these weights and cap.
+SearchConfiguration with_anytime(const SearchConfiguration& configuration, double min_weight = 1.0,
+                                 std::uint64_t expansions = 0);
+
+// The flags of `alplan plan` before this language, kept as shorthands (and
+// the Python module's keywords): `search` names ehc, gbfs or wastar (shaped
+// by the knobs, as the flags shaped them), or any alias or expression (the
+// knobs then do not apply); `anytime` wraps the result in anytime mode.
+struct SearchShorthands {
+  std::string search = "ehc";
+  DefaultSearchKnobs knobs;
+  bool novelty = false;       // gbfs ordered by novelty of knobs.novelty_width
+  bool metric_order = false;  // wastar and the anytime phases order by the metric
+  bool anytime = false;
+  double anytime_min_weight = 1.0;
+  std::uint64_t anytime_expansions = 0;
+};
+SearchConfiguration configuration_from(const SearchShorthands& shorthands);
+// configuration_from with only `search` given.
+SearchConfiguration configuration_named(std::string_view search);
+// Whether `search` is one of the names the knobs shape.
+bool shaped_by_knobs(std::string_view search);
+
+}  // namespace alplan

@@ -1,0 +1,254 @@
+#include "planner/search_pipeline.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "planner/address_space.h"
+#include "planner/evaluation.h"
+
+namespace alplan {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+struct Phase {
+  std::vector<EngineSpec> engines;  // leaves
+  std::uint64_t expansions = 0;     // 0: no budget
+  double time_share = 1.0;          // of the time limit; 1: no budget
+  bool improving = false;           // an anytime phase, after a first plan
+};
+
+const EngineSpec& first_leaf(const EngineSpec& e) { return e.children.empty() ? e : first_leaf(e.children.front()); }
+
+void flatten(const EngineSpec& e, std::vector<Phase>& phases) {
+  using K = EngineSpec::Kind;
+  switch (e.kind) {
+    case K::Then:
+      for (const EngineSpec& c : e.children) flatten(c, phases);
+      return;
+    case K::Portfolio: phases.push_back({e.children, e.expansions, e.time_share}); return;
+    case K::Anytime: {
+      flatten(e.children.front(), phases);
+      for (double w : e.weights) {
+        EngineSpec weighted;
+        weighted.kind = K::Wastar;
+        weighted.heuristic = first_leaf(e.children.front()).heuristic;
+        weighted.weight = w;
+        weighted.metric_order = e.metric_order;
+        weighted.deferred = e.deferred;
+        phases.push_back({{weighted}, e.expansions, 1.0, true});
+      }
+      return;
+    }
+    default: phases.push_back({{e}, e.expansions, e.time_share}); return;
+  }
+}
+
+struct PhaseOutcome {
+  SearchStatus status = SearchStatus::InProgress;  // InProgress: a limit or the budget
+  bool budget_spent = false;
+  bool root_dead_end = false;
+  std::optional<Solution> solution;
+  std::string engine;
+  SearchStatistics statistics;
+  std::shared_ptr<void> memory;  // the spaces and engines, when a limit stopped them
+};
+
+// Engines refer to their spaces: declared after them, destroyed before.
+struct StoppedSearch {
+  std::vector<std::unique_ptr<SearchSpace>> spaces;
+  std::vector<std::unique_ptr<SearchEngine>> engines;
+};
+
+void add(SearchStatistics& into, const SearchStatistics& s) {
+  into.expanded += s.expanded;
+  into.evaluated += s.evaluated;
+  into.generated += s.generated;
+  into.duplicates += s.duplicates;
+  into.unschedulable += s.unschedulable;
+  into.dead_ends += s.dead_ends;
+}
+
+std::unique_ptr<SearchEngine> make_engine(const EngineSpec& spec, SearchSpace& space, const PipelineContext& context,
+                                          const NodeBound& bound) {
+  const bool metric_order = spec.kind == EngineSpec::Kind::Wastar && spec.metric_order && context.metric;
+  Heuristic& heuristic = context.heuristic(spec.heuristic, metric_order);
+  if (spec.kind == EngineSpec::Kind::Ehc) {
+    return make_enforced_hill_climbing(space, heuristic, true, context.limits.deadline);
+  }
+  BestFirstOptions options;
+  options.weight = spec.kind == EngineSpec::Kind::Wastar ? spec.weight : 0.0;
+  if (metric_order) options.metric = context.metric;
+  options.preferred_queue = spec.preferred;
+  options.deferred = spec.deferred;
+  // Type-based exploration and novelty order a greedy search's escape from
+  // plateaus (Xie et al. 2014; Lipovetzky & Geffner 2017); weighted A*
+  // keeps its order.
+  options.type_exploration = spec.typed && spec.kind == EngineSpec::Kind::Gbfs;
+  options.novelty = spec.novelty > 0 && spec.kind == EngineSpec::Kind::Gbfs;
+  options.novelty_width = std::max(1, spec.novelty);
+  options.complete = spec.complete;
+  options.prune = bound;
+  options.deadline = context.limits.deadline;
+  return make_best_first_search(space, heuristic, options);
+}
+
+PhaseOutcome run_phase(const Phase& phase, const PipelineContext& context, const NodeBound& bound) {
+  std::vector<std::unique_ptr<SearchSpace>> spaces;
+  std::vector<std::unique_ptr<SearchEngine>> engines;
+  for (const EngineSpec& spec : phase.engines) {
+    SearchSpaceOptions space_options;
+    if (spec.complete) space_options = {true, true, true};
+    spaces.push_back(std::make_unique<SearchSpace>(context.index, context.start, context.limits.epsilon, space_options));
+    if (spec.goal_orders && context.orders && !context.orders->empty()) spaces.back()->prune_by(context.orders);
+    engines.push_back(make_engine(spec, *spaces.back(), context, bound));
+  }
+  const double time_budget = phase.time_share < 1.0 && std::isfinite(context.limits.time_limit)
+                                 ? phase.time_share * context.limits.time_limit
+                                 : std::numeric_limits<double>::infinity();
+  PhaseOutcome outcome;
+  std::vector<bool> exhausted(engines.size(), false);
+  std::size_t left = engines.size();
+  bool stopped = false;
+  const Clock::time_point began = Clock::now();
+  for (std::size_t steps = 0; left > 0; ++steps) {
+    // Every step: a step cut short by the deadline has dropped children.
+    if (passed(context.limits.deadline)) {
+      stopped = true;
+      break;
+    }
+    if ((steps & 15) == 0) {
+      std::size_t nodes = 0;
+      std::uint64_t expanded = 0;
+      for (std::size_t e = 0; e < engines.size(); ++e) {
+        nodes += spaces[e]->size();
+        expanded += engines[e]->statistics().expanded;
+      }
+      // A search stopped by a limit keeps its memory (freed when the
+      // process ends), whichever limit it was.
+      const std::size_t address_limit = context.limits.address_space_limit;
+      if (nodes > context.limits.node_limit ||
+          (address_limit && (steps & 255) == 0 && address_space_bytes() > address_limit)) {
+        stopped = true;
+        break;
+      }
+      if ((phase.expansions && expanded > phase.expansions) || since(began) > time_budget) {
+        outcome.budget_spent = true;
+        break;
+      }
+    }
+    const std::size_t e = steps % engines.size();
+    if (exhausted[e]) continue;
+    const SearchStatus status = engines[e]->step();
+    if (status == SearchStatus::Solved) {
+      outcome.status = SearchStatus::Solved;
+      outcome.solution = engines[e]->solution();
+      outcome.engine = engines[e]->name();
+      break;
+    }
+    if (status == SearchStatus::Exhausted) {
+      exhausted[e] = true;
+      --left;
+    }
+  }
+  if (left == 0) outcome.status = SearchStatus::Exhausted;
+  outcome.root_dead_end = spaces.front()->node(spaces.front()->root()).h == std::numeric_limits<double>::infinity();
+  for (const auto& engine : engines) add(outcome.statistics, engine->statistics());
+  if (stopped) outcome.memory = std::make_shared<StoppedSearch>(StoppedSearch{std::move(spaces), std::move(engines)});
+  return outcome;
+}
+
+// A node that cannot beat the best plan so far: by steps without a metric,
+// else by the metric at the node with the relaxed makespan for total-time.
+NodeBound bound_by(const PipelineContext& context, const double& best_value) {
+  const GroundTask& task = context.index.task();
+  if (task.metric && !context.metric) return {};  // a metric that can fall: no bound
+  return [&task, &best_value](const SearchNode& node) {
+    if (!task.metric) return static_cast<double>(node.depth) >= best_value;
+    EvaluationContext at;
+    at.total_time = std::max(node.makespan, node.makespan_bound);
+    try {
+      return evaluate(task.metric->expression, node.state, at) >= best_value - 1e-9;
+    } catch (const EvaluationError&) {
+      return false;
+    }
+  };
+}
+
+// Whether the root is a dead end under the sound relaxation, and why.
+std::string root_proof(const PipelineContext& context) {
+  const PartialPlan root(context.index, context.limits.epsilon, context.start.release, context.start.state.running(),
+                         context.start.state.values());
+  Heuristic& heuristic = context.heuristic(HeuristicSpec{}, false);
+  if (!heuristic.evaluate(context.start.state, root, Relaxation::Sound).dead_end()) return "";
+  std::string proof = "the goal is unreachable even in the relaxation (temporal relaxed planning graph)";
+  std::string facts;
+  for (FactId f : heuristic.unreached_goals()) facts += (facts.empty() ? "" : " ") + context.index.task().fact_name(f);
+  if (!facts.empty()) proof += ": it never reaches " + facts;
+  return proof;
+}
+
+}  // namespace
+
+std::string proof_limits(const TaskIndex& index) {
+  const GroundTask& task = index.task();
+  for (const GroundAction& a : task.actions) {
+    if (!a.continuous.empty()) return "with continuous change a state holds the values of one schedule among many";
+  }
+  for (ActionId a = 0; a < task.actions.size(); ++a) {
+    if (task.actions[a].durative && index.duration_dependent(a)) {
+      return "only the shortest and longest durations of " + task.action_name(task.actions[a]) +
+             " (whose effects or conditions read ?duration) were tried";
+    }
+  }
+  return "";
+}
+
+PipelineOutcome run_pipeline(const SearchConfiguration& configuration, const PipelineContext& context,
+                             const SolutionHandler& on_solution) {
+  std::vector<Phase> phases;
+  flatten(configuration.engine, phases);
+  PipelineOutcome result;
+  result.not_proven = "no complete search ran to the end";
+  double best_value = std::numeric_limits<double>::infinity();
+  bool found = false;
+  for (const Phase& phase : phases) {
+    if (found && !phase.improving) continue;  // the first plan is in; anytime phases go on
+    const NodeBound bound = found ? bound_by(context, best_value) : NodeBound{};
+    const PhaseOutcome outcome = run_phase(phase, context, bound);
+    add(result.statistics, outcome.statistics);
+    if (outcome.budget_spent) continue;
+    if (outcome.status == SearchStatus::InProgress) {
+      result.memory = outcome.memory;
+      result.stopped_at_limit = true;
+      return result;
+    }
+    if (outcome.status == SearchStatus::Exhausted) {
+      if (found) continue;
+      if (outcome.root_dead_end) {
+        result.proof = root_proof(context);
+        if (!result.proof.empty()) return result;
+      }
+      const bool complete = std::any_of(phase.engines.begin(), phase.engines.end(),
+                                        [](const EngineSpec& e) { return e.complete; });
+      if (complete) {
+        result.not_proven = proof_limits(context.index);
+        if (result.not_proven.empty()) {
+          result.proof = "the search space is exhausted";
+          return result;
+        }
+      }
+      continue;
+    }
+    const std::optional<double> value = on_solution(*outcome.solution, outcome.engine);
+    if (!value) return result;
+    if (!found || *value < best_value) best_value = *value;
+    found = true;
+  }
+  return result;
+}
+
+}  // namespace alplan

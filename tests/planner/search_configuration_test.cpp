@@ -1,0 +1,151 @@
+// The search configuration language (planner/search_configuration.h):
+// expressions parse into components and print back to what parses the same;
+// aliases name the configurations the planner used to build from flags;
+// malformed expressions are refused with their place.
+#include "planner/search_configuration.h"
+
+#include <catch2/catch.hpp>
+
+#include "planner/grounder.h"
+#include "planner/planner.h"
+#include "tests/support/task_loader.h"
+
+using namespace alplan;
+using K = EngineSpec::Kind;
+
+namespace {
+
+std::string error_of(const std::string& expression) {
+  try {
+    parse_search_configuration(expression);
+  } catch (const SearchConfigurationError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("every alias parses and prints back to an expression that parses the same") {
+  for (const std::string& name : alias_names()) {
+    INFO(name);
+    const SearchConfiguration c = alias(name);
+    CHECK(parse_search_configuration(c.to_string()).engine == c.engine);
+  }
+}
+
+TEST_CASE("the default configuration is EHC, then its fallback portfolio, then a complete search") {
+  const EngineSpec e = alias("default").engine;
+  REQUIRE(e.kind == K::Then);
+  REQUIRE(e.children.size() == 3);
+  const EngineSpec& ehc = e.children[0];
+  CHECK(ehc.kind == K::Ehc);
+  CHECK(ehc.expansions == 20000);
+  CHECK(ehc.time_share == Approx(0.25));
+  CHECK(ehc.goal_orders);
+  const EngineSpec& fallback = e.children[1];
+  REQUIRE(fallback.kind == K::Portfolio);
+  REQUIRE(fallback.children.size() == 4);
+  CHECK(fallback.children[0].goal_orders);
+  CHECK_FALSE(fallback.children[0].typed);
+  CHECK(fallback.children[1].typed);
+  CHECK(fallback.children[1].novelty == 2);
+  CHECK(fallback.children[2].deferred);
+  CHECK(fallback.children[3].kind == K::Wastar);
+  CHECK(fallback.children[3].weight == 3.0);
+  CHECK_FALSE(fallback.children[3].complete);
+  CHECK(e.children[2].complete);
+  CHECK(e.children[2].kind == K::Wastar);
+  CHECK_FALSE(e.children[2].goal_orders);
+}
+
+TEST_CASE("the anytime alias runs weighted A* with falling weights after the default") {
+  const EngineSpec e = alias("anytime").engine;
+  REQUIRE(e.kind == K::Anytime);
+  CHECK(e.weights == std::vector<double>{5, 3, 2, 1.5, 1});
+  CHECK(e.children.front() == alias("default").engine);
+  const EngineSpec capped = with_anytime(alias("default"), 3.0, 500).engine;
+  CHECK(capped.weights == std::vector<double>{5, 3});
+  CHECK(capped.expansions == 500);
+}
+
+TEST_CASE("components take their options by name") {
+  const EngineSpec e =
+      parse_search_configuration(
+          "then(ehc(trpg(helpful=false), expansions=100), portfolio(gbfs(blind, queue=typed, novelty=1, deferred=true),"
+          " wastar(trpg, w=2, order=metric)), complete(wastar(trpg(repetitions=false, balance=false), w=1)))")
+          .engine;
+  REQUIRE(e.children.size() == 3);
+  CHECK_FALSE(e.children[0].heuristic.helpful);
+  CHECK(e.children[0].expansions == 100);
+  const EngineSpec& greedy = e.children[1].children[0];
+  CHECK(greedy.heuristic.kind == HeuristicSpec::Kind::Blind);
+  CHECK(greedy.typed);
+  CHECK(greedy.novelty == 1);
+  CHECK(greedy.deferred);
+  CHECK(e.children[1].children[1].metric_order);
+  CHECK(e.children[1].children[1].weight == 2.0);
+  CHECK_FALSE(e.children[2].heuristic.repetitions);
+  CHECK_FALSE(e.children[2].heuristic.balance);
+}
+
+TEST_CASE("a malformed configuration is refused with its place and what was expected") {
+  CHECK(error_of("gbfs(trpg, queue=typed").find("character 23") != std::string::npos);
+  CHECK(error_of("gbfs(trpg, queue=typed").find("expected ')'") != std::string::npos);
+  CHECK(error_of("dfs").find("unknown engine 'dfs'") != std::string::npos);
+  CHECK(error_of("gbfs(ff)").find("unknown heuristic 'ff'") != std::string::npos);
+  CHECK(error_of("wastar(trpg, w=0)").find("w must be positive") != std::string::npos);
+  CHECK(error_of("complete(ehc)").find("complete takes a gbfs or a wastar") != std::string::npos);
+  CHECK(error_of("complete(gbfs(trpg, goal_orders=true))").find("cannot prune by goal orders") != std::string::npos);
+  CHECK(error_of("portfolio(then(ehc))").find("a portfolio takes") != std::string::npos);
+  CHECK(error_of("gbfs(trpg, w=2)").find("gbfs has no option 'w'") != std::string::npos);
+  CHECK(error_of("ehc(trpg, time_share=2)").find("at most 1") != std::string::npos);
+  CHECK(error_of("anytime(gbfs, weights=[0.5])").find("at least 1") != std::string::npos);
+  CHECK(error_of("gbfs(trpg) x").find("after the configuration") != std::string::npos);
+  CHECK_THROWS_AS(alias("lama"), SearchConfigurationError);
+}
+
+TEST_CASE("the old flags shape the named searches as they did") {
+  SearchShorthands s;
+  s.search = "gbfs";
+  s.novelty = true;
+  s.knobs.type_exploration = false;
+  const EngineSpec g = configuration_from(s).engine;
+  CHECK(g.kind == K::Gbfs);
+  CHECK_FALSE(g.typed);
+  CHECK(g.novelty == 2);
+  s.search = "wastar";
+  s.knobs.weight = 2;
+  s.metric_order = true;
+  s.anytime = true;
+  const EngineSpec w = configuration_from(s).engine;
+  REQUIRE(w.kind == K::Anytime);
+  CHECK(w.metric_order);
+  CHECK(w.children.front().kind == K::Wastar);
+  CHECK(w.children.front().weight == 2.0);
+  SearchShorthands d;
+  d.knobs.ehc_time_share = 0.0;
+  d.knobs.fallback_deferred = false;
+  d.knobs.goal_orders = false;
+  const EngineSpec e = configuration_from(d).engine;
+  CHECK(e.children[0].time_share == 0.0);
+  CHECK_FALSE(e.children[0].goal_orders);
+  CHECK(e.children[1].children.size() == 3);
+  CHECK(configuration_named("ehc").engine == alias("default").engine);
+  CHECK(configuration_named("then(ehc, complete(wastar))").engine.children.size() == 2);
+}
+
+TEST_CASE("a blind complete search plans, and proves what the relaxation cannot") {
+  const test::LoadedTask loaded = test::load_task_text(R"(
+(define (domain lock) (:requirements :strips :negative-preconditions) (:predicates (a) (b) (goal))
+  (:action one :parameters () :precondition (not (b)) :effect (a))
+  (:action two :parameters () :precondition (not (a)) :effect (b))
+  (:action three :parameters () :precondition (a) :effect (goal))))",
+                                                        "(define (problem l) (:domain lock) (:init) (:goal (goal)))");
+  PlannerOptions options;
+  options.search = parse_search_configuration("complete(wastar(blind, w=1))");
+  const PlannerResult solved = Planner(ground(loaded.normalized), options).plan();
+  REQUIRE(solved.status == PlannerResult::Status::Solved);
+  CHECK(solved.best()->plan.steps.size() == 2);
+  CHECK(solved.best()->engine.find("complete") != std::string::npos);
+}
