@@ -99,6 +99,7 @@ class TemporalRpg : public Heuristic {
   };
   class Exploration;
   friend class Exploration;
+  friend class RelaxedPlan;
 
   static std::shared_ptr<const Graph> build(const TaskIndex& index);
   static bool fits(const Graph& graph, const GroundTask& task);
