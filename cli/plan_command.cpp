@@ -40,6 +40,7 @@ struct PlanOptions {
   std::string order = "steps";
   std::optional<std::uint64_t> ehc_expansions;
   bool prune_irrelevant = true;
+  bool deorder = true;
   // Shorthand flags given on the command line (they shape only the named
   // searches ehc, gbfs and wastar).
   std::vector<std::string> shorthands_given;
@@ -171,6 +172,7 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
     return kExitInputError;
   }
   planner_options.prune_irrelevant = options.prune_irrelevant;
+  planner_options.deorder = options.deorder;
   planner_options.epsilon = options.epsilon;
   planner_options.reserve_planning_time = options.reserve_planning_time;
   planner_options.time_limit = std::max(0.0, options.time_limit - grounding);
@@ -313,6 +315,8 @@ void add_plan_command(CLI::App& app, int& exit_code) {
   shorthand(cmd->add_flag("--goal-orders,!--no-goal-orders", options->search.knobs.goal_orders,
                           "EHC and the plain GBFS of its fallback prune states holding a goal that another, still "
                           "false, must precede (orders from h^2 mutexes, Koehler & Hoffmann 2000; default on)"));
+  cmd->add_flag("!--no-deorder", options->deorder,
+                "Print plans as the search scheduled them, not lifted to the order their causal links need");
   cmd->add_flag("!--no-relevance", options->prune_irrelevant,
                 "Search every ground action, not only those that can contribute to the goal");
   shorthand(cmd->add_flag("!--no-repetitions", options->search.knobs.heuristic.repetitions,
