@@ -6,27 +6,22 @@
 namespace alplan {
 namespace {
 
-void expression_variables(const GroundExpression& e, std::set<NumericVarId>& out) {
-  if (e.kind == GroundExpression::Kind::Variable) out.insert(e.variable);
-  for (const GroundExpression& o : e.operands) expression_variables(o, out);
-}
-
-void formula_reads(const GroundFormula& f, std::vector<FactId>& facts, std::set<NumericVarId>& variables) {
+void formula_reads(const GroundFormula& f, std::vector<FactId>& facts, std::vector<NumericVarId>& variables) {
   if (f.kind == GroundFormula::Kind::Literal) facts.push_back(f.fact);
   if (f.kind == GroundFormula::Kind::Comparison) {
-    expression_variables(f.comparison.left, variables);
-    expression_variables(f.comparison.right, variables);
+    append_variables(f.comparison.left, variables);
+    append_variables(f.comparison.right, variables);
   }
   for (const GroundFormula& c : f.children) formula_reads(c, facts, variables);
 }
 
-void body_reads(const ConditionSet& c, std::vector<FactId>& facts, std::set<NumericVarId>& variables) {
+void body_reads(const ConditionSet& c, std::vector<FactId>& facts, std::vector<NumericVarId>& variables) {
   facts.insert(facts.end(), c.positive.begin(), c.positive.end());
   facts.insert(facts.end(), c.negative.begin(), c.negative.end());
   facts.insert(facts.end(), c.mentioned.begin(), c.mentioned.end());
   for (const GroundComparison& cmp : c.numeric) {
-    expression_variables(cmp.left, variables);
-    expression_variables(cmp.right, variables);
+    append_variables(cmp.left, variables);
+    append_variables(cmp.right, variables);
   }
   for (const GroundFormula& f : c.complex) formula_reads(f, facts, variables);
 }
@@ -42,7 +37,7 @@ const DerivedSupport::Support& DerivedSupport::of(FactId derived) {
   // A search over the derived facts below this one; a finished one's support
   // is taken whole.
   std::set<FactId> basic;
-  std::set<NumericVarId> variables;
+  std::vector<NumericVarId> variables;
   std::set<FactId> seen{derived};
   std::vector<FactId> open{derived};
   while (!open.empty()) {
@@ -51,7 +46,7 @@ const DerivedSupport::Support& DerivedSupport::of(FactId derived) {
     if (d != derived) {
       if (auto it = done_.find(d); it != done_.end()) {
         basic.insert(it->second.facts.begin(), it->second.facts.end());
-        variables.insert(it->second.variables.begin(), it->second.variables.end());
+        variables.insert(variables.end(), it->second.variables.begin(), it->second.variables.end());
         continue;
       }
     }
@@ -71,7 +66,9 @@ const DerivedSupport::Support& DerivedSupport::of(FactId derived) {
   }
   Support& s = done_[derived];
   s.facts.assign(basic.begin(), basic.end());
-  s.variables.assign(variables.begin(), variables.end());
+  std::sort(variables.begin(), variables.end());
+  variables.erase(std::unique(variables.begin(), variables.end()), variables.end());
+  s.variables = std::move(variables);
   return s;
 }
 

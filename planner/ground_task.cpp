@@ -23,6 +23,11 @@ bool same_ground_actions(const GroundTask& a, const GroundTask& b) {
          a.numeric.size() == b.numeric.size() && a.axioms.size() == b.axioms.size();
 }
 
+void append_variables(const GroundExpression& e, std::vector<NumericVarId>& out) {
+  if (e.kind == GroundExpression::Kind::Variable) out.push_back(e.variable);
+  for (const GroundExpression& o : e.operands) append_variables(o, out);
+}
+
 bool GroundTask::is_derived(FactId fact) const { return lifted->predicates[facts.key(fact).head].derived; }
 
 }  // namespace alplan

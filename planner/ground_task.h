@@ -33,6 +33,9 @@ struct GroundExpression {
   std::vector<GroundExpression> operands;
 };
 
+// Appends the variables an expression reads (repeats kept).
+void append_variables(const GroundExpression& e, std::vector<NumericVarId>& out);
+
 struct GroundComparison {
   pddl::Comparison comparison = pddl::Comparison::Equal;
   GroundExpression left, right;

@@ -247,16 +247,14 @@ bool PartialPlan::append(const StepRecord& step) {
   values_.record(fp.reads_values, fp.writes_values, index);
   steps_.push_back(step);
   node_of_step_.push_back(node);
+  if (step.snap.kind == SnapKind::TimedLiteral) timed_literal_nodes_.push_back(node);
   if (ending < pending_.size()) pending_.erase(pending_.begin() + static_cast<std::ptrdiff_t>(ending));
   if (step.snap.kind == SnapKind::Start) pending_.push_back({step.snap.index, node + 1, node, step.max_duration});
   return true;
 }
 
 bool PartialPlan::is_timed_literal_node(std::uint32_t node) const {
-  for (std::size_t s = 0; s < steps_.size(); ++s) {
-    if (node_of_step_[s] == node) return steps_[s].snap.kind == SnapKind::TimedLiteral;
-  }
-  return false;
+  return std::find(timed_literal_nodes_.begin(), timed_literal_nodes_.end(), node) != timed_literal_nodes_.end();
 }
 
 double PartialPlan::node_time(std::uint32_t node) const {

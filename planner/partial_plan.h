@@ -163,6 +163,7 @@ class PartialPlan {
   double release_;  // no step before this time
   std::vector<StepRecord> steps_;
   std::vector<std::uint32_t> node_of_step_;
+  std::vector<std::uint32_t> timed_literal_nodes_;  // few: the timed literals applied so far
   std::vector<PendingEnd> pending_;
   SimpleTemporalNetwork network_;
   Ledger facts_, values_;

@@ -26,16 +26,11 @@ struct StepFacts {
 
 bool has(const std::vector<FactId>& v, FactId f) { return std::find(v.begin(), v.end(), f) != v.end(); }
 
-void expression_reads(const GroundExpression& e, std::vector<NumericVarId>& out) {
-  if (e.kind == GroundExpression::Kind::Variable) out.push_back(e.variable);
-  for (const GroundExpression& o : e.operands) expression_reads(o, out);
-}
-
 void formula_reads(const GroundFormula& f, StepFacts& s) {
   if (f.kind == GroundFormula::Kind::Literal) s.loose_read.push_back(f.fact);
   if (f.kind == GroundFormula::Kind::Comparison) {
-    expression_reads(f.comparison.left, s.num_read);
-    expression_reads(f.comparison.right, s.num_read);
+    append_variables(f.comparison.left, s.num_read);
+    append_variables(f.comparison.right, s.num_read);
   }
   for (const GroundFormula& c : f.children) formula_reads(c, s);
 }
@@ -58,8 +53,8 @@ class StepAnalysis {
     for (FactId f : c.negative) literal(f, neg);
     s.loose_read.insert(s.loose_read.end(), c.mentioned.begin(), c.mentioned.end());
     for (const GroundComparison& cmp : c.numeric) {
-      expression_reads(cmp.left, s.num_read);
-      expression_reads(cmp.right, s.num_read);
+      append_variables(cmp.left, s.num_read);
+      append_variables(cmp.right, s.num_read);
     }
     for (const GroundFormula& f : c.complex) formula_reads(f, s);
   }
@@ -69,7 +64,7 @@ class StepAnalysis {
     s.del.insert(s.del.end(), e.del.begin(), e.del.end());
     auto numeric = [&](const std::vector<NumericAssignment>& assignments) {
       for (const NumericAssignment& n : assignments) {
-        expression_reads(n.value, s.num_read);
+        append_variables(n.value, s.num_read);
         const bool additive = n.assign == pddl::AssignOperator::Increase || n.assign == pddl::AssignOperator::Decrease;
         s.num_write.emplace_back(n.variable, additive);
       }
@@ -103,7 +98,7 @@ class StepAnalysis {
     conditions(a.at_start, s.pre_pos, s.pre_neg, s);
     if (step.snap.kind == SnapKind::Start) {
       conditions(a.over_all, s.inv_pos, s.inv_neg, s);
-      for (const GroundDurationConstraint& d : a.duration) expression_reads(d.value, s.num_read);
+      for (const GroundDurationConstraint& d : a.duration) append_variables(d.value, s.num_read);
     }
     effects(a.start, s);
     return s;

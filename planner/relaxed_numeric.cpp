@@ -28,7 +28,7 @@ Interval operator/(Interval a, Interval b) {
 }  // namespace
 
 RelaxedNumeric::RelaxedNumeric(std::size_t variables)
-    : bounds_(variables), greatest_now_(variables), supporter_(variables, kNoId) {}
+    : bounds_(variables), greatest_now_(variables), up_(variables, kNoId), down_(variables, kNoId), first_(variables, kNoId) {}
 
 void RelaxedNumeric::reset(const SearchState& state, const PartialPlan& plan, const ContinuousModel* continuous) {
   for (NumericVarId v = 0; v < bounds_.size(); ++v) {
@@ -43,7 +43,7 @@ void RelaxedNumeric::reset(const SearchState& state, const PartialPlan& plan, co
         if (lo <= hi && needed.greatest) greatest_now_[v] = hi;
       }
     }
-    supporter_[v] = kNoId;
+    up_[v] = down_[v] = first_[v] = kNoId;
   }
 }
 
@@ -107,7 +107,10 @@ bool RelaxedNumeric::apply(const NumericAssignment& a, ActionId source) {
     default: b = {}; break;
   }
   if (b.lo == before.lo && b.hi == before.hi) return false;
-  if (supporter_[a.variable] == kNoId) supporter_[a.variable] = source;
+  if (first_[a.variable] == kNoId) first_[a.variable] = source;
+  const bool undefined_before = before.undefined();
+  if (up_[a.variable] == kNoId && (undefined_before || b.hi > before.hi)) up_[a.variable] = source;
+  if (down_[a.variable] == kNoId && (undefined_before || b.lo < before.lo)) down_[a.variable] = source;
   return true;
 }
 

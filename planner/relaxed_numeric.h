@@ -34,10 +34,16 @@ class RelaxedNumeric {
   Interval interval(const GroundExpression& e) const;
   bool satisfiable(const GroundComparison& comparison) const;
   // Widens a variable's interval by an effect; true when it changed. The
-  // first action to widen a variable is its supporter.
+  // first action to raise a variable's upper bound is its supporter upward,
+  // the first to lower its lower bound its supporter downward (Metric-FF's
+  // achievers by direction: a synthesis that uses up some of a catalyst is
+  // no support for a condition that wants more of it, pathways).
   bool apply(const NumericAssignment& effect, ActionId source);
 
-  ActionId supporter(NumericVarId v) const { return supporter_[v]; }
+  ActionId supporter(NumericVarId v, bool upward) const { return upward ? up_[v] : down_[v]; }
+  // The first action to widen the variable either way (where a condition's
+  // direction is not known: an equality, a product).
+  ActionId first_supporter(NumericVarId v) const { return first_[v]; }
   // A changing variable's greatest value now, where the reset asked the
   // schedule for it; NaN elsewhere.
   double greatest_now(NumericVarId v) const { return greatest_now_[v]; }
@@ -45,7 +51,7 @@ class RelaxedNumeric {
  private:
   std::vector<Interval> bounds_;
   std::vector<double> greatest_now_;
-  std::vector<ActionId> supporter_;
+  std::vector<ActionId> up_, down_, first_;  // supporters by direction, and either way
 };
 
 }  // namespace alplan

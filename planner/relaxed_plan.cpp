@@ -71,7 +71,7 @@ void RelaxedPlan::note_repetitions(std::uint32_t comparison, const SearchState& 
   ActionId best = kNoId;
   double best_step = 0.0;
   for (NumericVarId v : demand->variables) {
-    const ActionId a = x_.numeric_.supporter(v);
+    const ActionId a = x_.numeric_.supporter(v, demand->upward);
     if (a == kNoId) continue;
     const TemporalRpg::RelaxedAction& r = x_.rpg_.actions_[a];
     const std::optional<double> step =
@@ -151,8 +151,12 @@ void RelaxedPlan::need_numeric(const std::vector<std::uint32_t>& comparisons) {
       if (holds(*x_.rpg_.comparisons_[c], *state_, EvaluationContext{}, 0.0)) continue;  // true already
     } catch (const EvaluationError&) {
     }
+    // The direction the comparison wants its variables to move, when it is
+    // a sum of variables against a constant; else the first to widen them.
+    const std::optional<NumericDemand> demand = numeric_demand(*x_.rpg_.comparisons_[c], *state_);
     for (NumericVarId v : x_.rpg_.comparison_variables_[c]) {
-      if (x_.numeric_.supporter(v) != kNoId) support_.push_back(x_.numeric_.supporter(v));
+      const ActionId a = demand ? x_.numeric_.supporter(v, demand->upward) : x_.numeric_.first_supporter(v);
+      if (a != kNoId) support_.push_back(a);
     }
     if (x_.rpg_.options_.count_repetitions && !x_.continuous_) note_repetitions(c, *state_);
   }

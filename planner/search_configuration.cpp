@@ -251,6 +251,13 @@ EngineSpec engine_of(const Call& c) {
     for (const Call::Argument& a : c.arguments) {
       if (!a.key.empty()) {
         if (e.kind == K::Portfolio && budget_option(e, a)) continue;
+        if (e.kind == K::Portfolio && a.key == "turns") {
+          if (!a.call || (a.call->name != "expansions" && a.call->name != "evaluations")) {
+            fail_at(a.at, "turns is expansions or evaluations");
+          }
+          e.share_evaluations = a.call->name == "evaluations";
+          continue;
+        }
         fail_at(a.at, c.name + " has no option '" + a.key + "'");
       }
       if (!a.call) fail_at(a.at, c.name + " takes engines");
@@ -340,6 +347,7 @@ std::string engine_text(const EngineSpec& e) {
     case K::Then: {
       std::string children;
       for (const EngineSpec& c : e.children) children += (children.empty() ? "" : ", ") + engine_text(c);
+      if (e.share_evaluations) option("turns=evaluations");
       budget();
       return std::string(e.kind == K::Then ? "then" : "portfolio") + "(" + children + options + ")";
     }

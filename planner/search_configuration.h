@@ -7,7 +7,7 @@
 //                  | gbfs(HEURISTIC, queue=plain|typed, novelty=0|1|2, deferred=B, preferred=B, goal_orders=B)
 //                  | wastar(HEURISTIC, w=W, order=steps|metric, deferred=B, preferred=B)
 //                  | complete(ENGINE)               a gbfs or wastar that misses no plan
-//                  | portfolio(ENGINE, ENGINE, ...) leaf engines taking turns, one expansion each
+//                  | portfolio(ENGINE, ..., turns=expansions|evaluations)  leaf engines taking turns
 //                  | then(ENGINE, ENGINE, ...)      phases: the next runs when one gives up
 //                  | anytime(ENGINE, weights=[W, ...], expansions=N, order=steps|metric)
 //   HEURISTIC     := trpg(helpful=B, repetitions=B, balance=B) | blind
@@ -68,6 +68,9 @@ struct EngineSpec {
   double weight = 3.0;       // wastar
   bool metric_order = false; // wastar, anytime: order by the metric, not steps
   bool complete = false;     // gbfs, wastar: miss no plan
+  // portfolio: turns by evaluations (the engine that has evaluated least
+  // goes next) instead of one expansion each.
+  bool share_evaluations = false;
   std::vector<double> weights;           // anytime
   std::vector<EngineSpec> children;      // portfolio, then; anytime: the first search
   bool operator==(const EngineSpec&) const = default;

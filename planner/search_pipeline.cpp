@@ -16,6 +16,9 @@ double since(Clock::time_point start) { return std::chrono::duration<double>(Clo
 
 struct Phase {
   std::vector<EngineSpec> engines;  // leaves
+  // A portfolio's turns: an expansion each, or to the engine that has
+  // evaluated the fewest states.
+  bool share_evaluations = false;
   std::uint64_t expansions = 0;     // 0: no budget
   double time_share = 1.0;          // of the time limit; 1: no budget
   bool improving = false;           // an anytime phase, after a first plan
@@ -29,7 +32,7 @@ void flatten(const EngineSpec& e, std::vector<Phase>& phases) {
     case K::Then:
       for (const EngineSpec& c : e.children) flatten(c, phases);
       return;
-    case K::Portfolio: phases.push_back({e.children, e.expansions, e.time_share}); return;
+    case K::Portfolio: phases.push_back({e.children, e.share_evaluations, e.expansions, e.time_share}); return;
     case K::Anytime: {
       flatten(e.children.front(), phases);
       for (double w : e.weights) {
@@ -39,11 +42,11 @@ void flatten(const EngineSpec& e, std::vector<Phase>& phases) {
         weighted.weight = w;
         weighted.metric_order = e.metric_order;
         weighted.deferred = e.deferred;
-        phases.push_back({{weighted}, e.expansions, 1.0, true});
+        phases.push_back({{weighted}, false, e.expansions, 1.0, true});
       }
       return;
     }
-    default: phases.push_back({{e}, e.expansions, e.time_share}); return;
+    default: phases.push_back({{e}, false, e.expansions, e.time_share}); return;
   }
 }
 
@@ -96,6 +99,19 @@ std::unique_ptr<SearchEngine> make_engine(const EngineSpec& spec, SearchSpace& s
   return make_best_first_search(space, heuristic, options);
 }
 
+// The engine that has evaluated the fewest states so far (the first of
+// equals): evaluations are most of an engine's time and, unlike seconds,
+// the same on every machine, so sharing them keeps runs reproducible.
+std::size_t least_evaluated(const std::vector<std::unique_ptr<SearchEngine>>& engines,
+                            const std::vector<bool>& exhausted) {
+  std::size_t best = engines.size();
+  for (std::size_t e = 0; e < engines.size(); ++e) {
+    if (exhausted[e]) continue;
+    if (best == engines.size() || engines[e]->statistics().evaluated < engines[best]->statistics().evaluated) best = e;
+  }
+  return best == engines.size() ? 0 : best;
+}
+
 PhaseOutcome run_phase(const Phase& phase, const PipelineContext& context, const NodeBound& bound) {
   std::vector<std::unique_ptr<SearchSpace>> spaces;
   std::vector<std::unique_ptr<SearchEngine>> engines;
@@ -140,7 +156,7 @@ PhaseOutcome run_phase(const Phase& phase, const PipelineContext& context, const
         break;
       }
     }
-    const std::size_t e = steps % engines.size();
+    const std::size_t e = phase.share_evaluations ? least_evaluated(engines, exhausted) : steps % engines.size();
     if (exhausted[e]) continue;
     const SearchStatus status = engines[e]->step();
     if (status == SearchStatus::Solved) {

@@ -8,11 +8,6 @@
 namespace alplan {
 namespace {
 
-void variables(const GroundExpression& e, std::vector<NumericVarId>& out) {
-  if (e.kind == GroundExpression::Kind::Variable) out.push_back(e.variable);
-  for (const GroundExpression& o : e.operands) variables(o, out);
-}
-
 bool mentions_duration(const GroundExpression& e) {
   if (e.kind == GroundExpression::Kind::Duration) return true;
   return std::any_of(e.operands.begin(), e.operands.end(), mentions_duration);
@@ -21,8 +16,8 @@ bool mentions_duration(const GroundExpression& e) {
 void formula_reads(const GroundFormula& f, Footprint& fp) {
   if (f.kind == GroundFormula::Kind::Literal) fp.reads.push_back(f.fact);
   if (f.kind == GroundFormula::Kind::Comparison) {
-    variables(f.comparison.left, fp.reads_values);
-    variables(f.comparison.right, fp.reads_values);
+    append_variables(f.comparison.left, fp.reads_values);
+    append_variables(f.comparison.right, fp.reads_values);
   }
   for (const GroundFormula& c : f.children) formula_reads(c, fp);
 }
@@ -32,8 +27,8 @@ void condition_reads(const ConditionSet& c, Footprint& fp) {
   fp.reads.insert(fp.reads.end(), c.negative.begin(), c.negative.end());
   fp.reads.insert(fp.reads.end(), c.mentioned.begin(), c.mentioned.end());
   for (const GroundComparison& cmp : c.numeric) {
-    variables(cmp.left, fp.reads_values);
-    variables(cmp.right, fp.reads_values);
+    append_variables(cmp.left, fp.reads_values);
+    append_variables(cmp.right, fp.reads_values);
   }
   for (const GroundFormula& f : c.complex) formula_reads(f, fp);
 }
@@ -42,7 +37,7 @@ void effect_footprint(const HappeningEffects& e, Footprint& fp) {
   auto numeric = [&](const std::vector<NumericAssignment>& assignments) {
     for (const NumericAssignment& a : assignments) {
       fp.writes_values.push_back(a.variable);
-      variables(a.value, fp.reads_values);
+      append_variables(a.value, fp.reads_values);
     }
   };
   fp.writes.insert(fp.writes.end(), e.add.begin(), e.add.end());
@@ -113,7 +108,7 @@ std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const Gr
     if (action.durative) {
       condition_reads(action.at_start, x.start[a]);
       condition_reads(action.over_all, x.start[a]);
-      for (const GroundDurationConstraint& d : action.duration) variables(d.value, x.start[a].reads_values);
+      for (const GroundDurationConstraint& d : action.duration) append_variables(d.value, x.start[a].reads_values);
       effect_footprint(action.start, x.start[a]);
       condition_reads(action.at_end, x.end[a]);
       condition_reads(action.over_all, x.end[a]);
@@ -123,7 +118,7 @@ std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const Gr
       for (const ContinuousEffect& c : action.continuous) {
         x.start[a].writes_values.push_back(c.variable);
         x.end[a].writes_values.push_back(c.variable);
-        variables(c.rate, x.start[a].reads_values);
+        append_variables(c.rate, x.start[a].reads_values);
       }
       finish(x.start[a]);
       finish(x.end[a]);

@@ -294,9 +294,10 @@ void add_planning(py::module_& m) {
       });
 
   m.def("plan", &plan, py::arg("domain"), py::arg("problem"), py::arg("time_limit") = 60.0,
-        "Plans a problem (files or parsed objects) in process. Options as keywords: anytime, search (ehc, gbfs, "
-        "wastar), heuristic, weight, order (metric, steps), epsilon, reserve_planning_time, anytime_min_weight, anytime_expansions, "
-        "ehc_expansions. Releases the GIL while it grounds and searches.");
+        "Plans a problem (files or parsed objects) in process. Options as keywords: search (ehc, gbfs, wastar, an "
+        "alias or a configuration expression such as 'then(ehc(trpg), complete(wastar(trpg, w=1)))'; "
+        "planner/README.md), alias, anytime, heuristic, weight, order (metric, steps), epsilon, reserve_planning_time, "
+        "anytime_min_weight, anytime_expansions, ehc_expansions. Releases the GIL while it grounds and searches.");
   m.def("validate", &validate, py::arg("domain"), py::arg("problem"), py::arg("plan"), py::arg("epsilon") = 0.001,
         "Validates a plan (a PlanResult, plan text or a plan file) with VAL's semantics");
   m.def("ground",

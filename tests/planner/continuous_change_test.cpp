@@ -261,9 +261,11 @@ TEST_CASE("continuous domains: the planner solves the smaller problems, validly"
 // Type-based exploration alone does not solve robot-battery p04 in 60 s
 // (3,539 expansions; plain GBFS needs 907): its random expansions put
 // children in the greedy queue that lead it astray. EHC's fallback keeps a
-// plain GBFS beside the typed ones, and that one finds the plan. Limited by
-// nodes, not time, so the run is the same on any machine.
-TEST_CASE("continuous domains: EHC's fallback keeps a plain GBFS, which solves robot-battery p04") {
+// plain GBFS beside the typed ones, which found the plan; since numeric
+// supporters are chosen by direction (relaxed_numeric.h) the novelty-ordered
+// GBFS finds one first. Limited by nodes, not time, so the run is the same
+// on any machine.
+TEST_CASE("continuous domains: EHC's fallback solves robot-battery p04") {
 #if defined(__SANITIZE_ADDRESS__)
   // About 4,000 expansions, each scheduled by a linear program: minutes
   // under the sanitizers. The same fallback runs there in planner_test.cpp.
@@ -277,5 +279,5 @@ TEST_CASE("continuous domains: EHC's fallback keeps a plain GBFS, which solves r
   const PlannerResult r = Planner(ground(task.normalized), options).plan();
   REQUIRE(r.status == Status::Solved);
   CHECK(r.best()->validation.valid);
-  CHECK(r.best()->engine == "gbfs");
+  CHECK(r.best()->engine.rfind("gbfs", 0) == 0);
 }

@@ -381,11 +381,13 @@ TEST_CASE("IPC problems with deadlines and required concurrency are solved with 
 }
 
 TEST_CASE("a search the time limit stops is handed over, not freed, so the limit holds") {
-  // Pathways 2 is not solved in a second: the search is stopped with
-  // thousands of nodes, whose freeing would count against the limit.
+  // Pathways 2 (an infinite space) is not solved in half a second by a
+  // greedy search without a heuristic: the search is stopped with thousands
+  // of nodes, whose freeing would count against the limit.
   const std::string dir = test::benchmarks_dir() + "/ipc/ipc-2006/pathways-metric-time/";
   auto task = ground(test::load_task(dir + "domain.pddl", dir + "instances/instance-2.pddl").normalized);
   PlannerOptions options;
+  options.search = parse_search_configuration("gbfs(blind)");
   options.time_limit = 0.5;
   PlannerResult stopped = Planner(task, options).plan();
   REQUIRE(stopped.status == Status::LimitReached);
@@ -414,17 +416,16 @@ TEST_CASE("a search stops below its address-space limit and hands its memory ove
   PlannerOptions options;
   options.time_limit = 120.0;
   options.address_space_limit = before + (std::size_t{96} << 20);
-  // The guard is under test, not the engines: with the novelty-ordered GBFS
-  // in the fallback this search grows too slowly to reach the limit in 120 s
-  // (measured), without it by tens of MB a second.
-  DefaultSearchKnobs no_novelty;
-  no_novelty.fallback_novelty = false;
-  options.search = parse_search_configuration(default_expression(no_novelty));
+  // The guard is under test, not the engines: a greedy search without a
+  // heuristic on pathways' infinite space grows by tens of MB a second (the
+  // default configuration solves pathways 2 since its numeric supporters
+  // are chosen by direction).
+  options.search = parse_search_configuration("gbfs(blind)");
   const auto began = std::chrono::steady_clock::now();
   const PlannerResult r = Planner(task, options).plan();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
-  // Pathways 2 is not solved in 120 s (its space is infinite) and grows by
-  // tens of MB a second: only the memory limit can stop it well before.
+  // Not solved so in 120 s (its space is infinite), it grows by tens of MB
+  // a second: only the memory limit can stop it well before.
   REQUIRE(r.status == Status::LimitReached);
   CHECK(seconds < 100.0);
   CHECK(r.search_memory != nullptr);

@@ -73,7 +73,8 @@ TEST_CASE("components take their options by name") {
   const EngineSpec e =
       parse_search_configuration(
           "then(ehc(trpg(helpful=false), expansions=100), portfolio(gbfs(blind, queue=typed, novelty=1, deferred=true),"
-          " wastar(trpg, w=2, order=metric)), complete(wastar(trpg(repetitions=false, balance=false), w=1)))")
+          " wastar(trpg, w=2, order=metric), turns=evaluations), complete(wastar(trpg(repetitions=false, balance=false),"
+          " w=1)))")
           .engine;
   REQUIRE(e.children.size() == 3);
   CHECK_FALSE(e.children[0].heuristic.helpful);
@@ -84,6 +85,8 @@ TEST_CASE("components take their options by name") {
   CHECK(greedy.novelty == 1);
   CHECK(greedy.deferred);
   CHECK(e.children[1].children[1].metric_order);
+  CHECK(e.children[1].share_evaluations);
+  CHECK(parse_search_configuration(SearchConfiguration{e}.to_string()).engine == e);
   CHECK(e.children[1].children[1].weight == 2.0);
   CHECK_FALSE(e.children[2].heuristic.repetitions);
   CHECK_FALSE(e.children[2].heuristic.balance);
@@ -102,6 +105,7 @@ TEST_CASE("a malformed configuration is refused with its place and what was expe
   CHECK(error_of("ehc(trpg, time_share=2)").find("at most 1") != std::string::npos);
   CHECK(error_of("anytime(gbfs, weights=[0.5])").find("at least 1") != std::string::npos);
   CHECK(error_of("gbfs(trpg) x").find("after the configuration") != std::string::npos);
+  CHECK(error_of("portfolio(gbfs, turns=seconds)").find("turns is expansions or evaluations") != std::string::npos);
   CHECK_THROWS_AS(alias("lama"), SearchConfigurationError);
 }
 

@@ -82,6 +82,18 @@ def test_plan_from_strings_and_validate():
     assert alplan.validate(domain, problem, result).valid
 
 
+def test_search_configurations_by_expression_and_alias():
+    domain = alplan.parse_domain_string(DOMAIN)
+    problem = alplan.parse_problem_string(PROBLEM, domain)
+    for options in ({"search": "complete(wastar(blind, w=1))"}, {"alias": "complete"},
+                    {"search": "then(ehc(trpg, expansions=10), portfolio(gbfs(trpg), wastar(trpg, w=2)))"}):
+        result = alplan.plan(domain, problem, time_limit=10, **options)
+        assert result.status == "solved", options
+        assert alplan.validate(domain, problem, result).valid
+    with pytest.raises(ValueError, match="unknown heuristic 'ff'"):
+        alplan.plan(domain, problem, time_limit=10, search="gbfs(ff)")
+
+
 def test_plan_a_shared_benchmark_problem_from_files():
     result = alplan.plan(os.path.join(MATCH, "domain.pddl"), os.path.join(MATCH, "instances", "instance-1.pddl"),
                          time_limit=30)
