@@ -1,7 +1,9 @@
 // libFuzzer target for the PDDL parser, checker and writer.
-// Properties checked on any input bytes (also read as a plan file): no crash, leak, hang or undefined
-// behaviour (the sanitizers), and for every input that parses, the writer's
-// output parses back to the same AST.
+// Properties checked on any input bytes (also read as a plan file and as a
+// search configuration, `alplan plan --search`): no crash, leak, hang or
+// undefined behaviour (the sanitizers), and for every input that parses, the
+// writer's output parses back to the same AST (for a configuration: its
+// printed expression parses back to the same configuration).
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -11,6 +13,7 @@
 #include "pddl_parser/parser.h"
 #include "pddl_parser/writer.h"
 #include "planner/plan.h"
+#include "planner/search_configuration.h"
 
 namespace {
 
@@ -44,6 +47,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (plan.ok()) {
     const alplan::PlanReadResult again = alplan::read_plan(alplan::write_plan(plan.plan, 17), "written");
     require(again.ok() && again.plan.steps.size() == plan.plan.steps.size());
+  }
+  // The search configuration language (planner/search_configuration.h).
+  try {
+    const alplan::SearchConfiguration c = alplan::parse_search_configuration(text);
+    require(alplan::parse_search_configuration(c.to_string()).engine == c.engine);
+  } catch (const alplan::SearchConfigurationError&) {
   }
   return 0;
 }

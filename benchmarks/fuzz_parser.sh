@@ -10,9 +10,10 @@ shared=${ALPLAN_SHARED_DIR:-$root/../shared}
 out=${ALPLAN_FUZZ_DIR:-$root/build-fuzz}
 mkdir -p "$out/corpus"
 
-sources=("$root"/pddl_parser/*.cpp "$root/planner/plan.cpp" "$root/benchmarks/fuzz_parser.cpp")
+sources=("$root"/pddl_parser/*.cpp "$root/planner/plan.cpp" "$root/planner/search_configuration.cpp"
+         "$root/benchmarks/fuzz_parser.cpp")
 binary="$out/fuzz_parser"
-newest=$(ls -t "${sources[@]}" "$root"/pddl_parser/*.h "$root"/planner/plan.h | head -1)
+newest=$(ls -t "${sources[@]}" "$root"/pddl_parser/*.h "$root"/planner/plan.h "$root"/planner/search_configuration.h | head -1)
 if [ ! -x "$binary" ] || [ "$newest" -nt "$binary" ]; then
   echo "fuzz: building $binary"
   clang++ -std=c++20 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
@@ -26,6 +27,14 @@ if [ ! -d "$seeds" ]; then
   find "$shared/benchmarks/ipc" -name '*.pddl' -size -24k -print0 |
     while IFS= read -r -d '' f; do cp "$f" "$seeds/$(echo "$f" | md5sum | cut -c1-16).pddl"; done
   find "$root/tests/data" -name '*.pddl' -exec cp {} "$seeds/" \;
+  # Search configurations (alplan plan --search).
+  i=0
+  for c in 'then(ehc(trpg, expansions=20000, time_share=0.25, goal_orders=true), portfolio(gbfs(trpg), wastar(trpg, w=3)), complete(wastar(trpg, w=3)))' \
+           'anytime(gbfs(trpg(helpful=false), queue=typed, novelty=2), weights=[5, 3, 1.5], expansions=10)' \
+           'complete(wastar(blind, w=1))' 'portfolio(gbfs(trpg, deferred=true), ehc, turns=evaluations)' default; do
+    i=$((i + 1))
+    printf '%s' "$c" > "$seeds/configuration-$i.txt"
+  done
 fi
 
 echo "fuzz: running for ${seconds}s"

@@ -278,6 +278,57 @@ SearchStart search_start_of(const GroundTask& task, const PlanningStart& start, 
 
 }  // namespace
 
+namespace {
+
+// Turns a solution into the plan to print: validated as printed (from the
+// task's start by the plan validator, from an observed state by
+// validate_from), and lifted to the order its causal links need and
+// scheduled again (plan_deordering.h), which is kept when it is valid and
+// better. A plan we print is always one the validator accepted.
+class PlanChecker {
+ public:
+  PlanChecker(std::shared_ptr<const GroundTask> task, const PlanningStart& start, const TaskIndex& index,
+              const SearchStart& search_start, const PlannerOptions& options)
+      : task_(std::move(task)), start_(start), index_(index), search_start_(search_start), options_(options),
+        from_initial_(is_initial(*task_, start)) {
+    // The plan validator grounds the task again for itself: only from the start.
+    if (from_initial_) validator_.emplace(task_->lifted, ValidatorOptions{options.epsilon, false});
+  }
+
+  FoundPlan check(const Solution& solution, const std::string& engine) {
+    FoundPlan found = validated(solution, engine);
+    if (!found.validation.valid || !options_.deorder) return found;
+    const DeorderingInput input{index_, search_start_.state, search_start_.release, options_.epsilon};
+    if (const std::optional<Solution> lifted = deorder(input, solution)) {
+      FoundPlan candidate = validated(*lifted, engine + ", deordered");
+      if (candidate.validation.valid && candidate.validation.value < found.validation.value - 1e-9) return candidate;
+    }
+    return found;
+  }
+
+ private:
+  FoundPlan validated(const Solution& solution, const std::string& engine) {
+    FoundPlan found;
+    std::vector<ActionId> actions;
+    found.plan = to_plan(*task_, solution, &actions);
+    found.text = plan_text(found.plan);
+    found.engine = engine;
+    found.validation = from_initial_ ? validator_->validate(read_plan(found.text, "planner output").plan)
+                                     : validate_from(*task_, start_, solution, actions, found.text, options_.epsilon);
+    return found;
+  }
+
+  std::shared_ptr<const GroundTask> task_;
+  const PlanningStart& start_;
+  const TaskIndex& index_;
+  const SearchStart& search_start_;
+  const PlannerOptions& options_;
+  bool from_initial_;
+  std::optional<PlanValidator> validator_;
+};
+
+}  // namespace
+
 // What the task refuses before any search: an unsupported construct, a goal
 // grounded away, timed literals that clash.
 std::optional<PlannerResult> Planner::refused(const TaskIndex& index, const PlanningStart& start) const {
@@ -329,40 +380,15 @@ PlannerResult Planner::search_from(const PlanningStart& start, const std::functi
     order_options.mutexes.deadline = limits.deadline;
     orders = std::make_shared<const GoalOrders>(*task_, start.facts, order_options);
   }
-  const bool from_initial = is_initial(*task_, start);
-  // Plans from an observed state are checked by validate_from; the plan
-  // validator (which grounds the task again for itself) only from the start.
-  std::optional<PlanValidator> validator;
-  if (from_initial) validator.emplace(task_->lifted, ValidatorOptions{options_.epsilon, false});
+  PlanChecker checker(task_, start, index, search_start, options_);
   PlannerResult result;
   result.times.setup = since(began);
 
   const Clock::time_point search_began = Clock::now();
-  auto validated = [&](const Solution& solution, const std::string& engine) {
-    FoundPlan found;
-    std::vector<ActionId> actions;
-    found.plan = to_plan(*task_, solution, &actions);
-    found.text = plan_text(found.plan);
-    found.engine = engine;
-    found.seconds = since(search_began);
-    found.validation = from_initial ? validator->validate(read_plan(found.text, "planner output").plan)
-                                    : validate_from(*task_, start, solution, actions, found.text, options_.epsilon);
-    return found;
-  };
   auto on_solution = [&](const Solution& solution, const std::string& engine) -> std::optional<double> {
     const Clock::time_point validation_began = Clock::now();
-    FoundPlan found = validated(solution, engine);
-    // The plan lifted to the order its causal links need, scheduled again:
-    // kept when valid and no worse (a plan we print is always validated).
-    if (found.validation.valid && options_.deorder) {
-      const DeorderingInput input{index, search_start.state, search_start.release, options_.epsilon};
-      if (const std::optional<Solution> lifted = deorder(input, solution)) {
-        FoundPlan candidate = validated(*lifted, engine + ", deordered");
-        if (candidate.validation.valid && candidate.validation.value < found.validation.value - 1e-9) {
-          found = std::move(candidate);
-        }
-      }
-    }
+    FoundPlan found = checker.check(solution, engine);
+    found.seconds = std::chrono::duration<double>(validation_began - search_began).count();
     result.times.validation += since(validation_began);
     if (!found.validation.valid) {
       result.status = PlannerResult::Status::InternalError;

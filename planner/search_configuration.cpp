@@ -225,6 +225,67 @@ EngineSpec leaf_of(const Call& c, EngineSpec::Kind kind) {
   return e;
 }
 
+// portfolio(E, ...) and then(E, ...).
+EngineSpec combination_of(const Call& c) {
+  using K = EngineSpec::Kind;
+  EngineSpec e;
+  e.kind = c.name == "then" ? K::Then : K::Portfolio;
+  for (const Call::Argument& a : c.arguments) {
+    if (!a.key.empty()) {
+      if (e.kind == K::Portfolio && budget_option(e, a)) continue;
+      if (e.kind == K::Portfolio && a.key == "turns") {
+        if (!a.call || (a.call->name != "expansions" && a.call->name != "evaluations")) {
+          fail_at(a.at, "turns is expansions or evaluations");
+        }
+        e.share_evaluations = a.call->name == "evaluations";
+        continue;
+      }
+      fail_at(a.at, c.name + " has no option '" + a.key + "'");
+    }
+    if (!a.call) fail_at(a.at, c.name + " takes engines");
+    EngineSpec child = engine_of(*a.call);
+    if (e.kind == K::Portfolio && (child.kind == K::Portfolio || child.kind == K::Then || child.kind == K::Anytime)) {
+      fail_at(a.at, "a portfolio takes ehc, gbfs and wastar engines");
+    }
+    if (e.kind == K::Then && child.kind == K::Anytime) fail_at(a.at, "anytime goes around a then, not inside");
+    e.children.push_back(std::move(child));
+  }
+  if (e.children.empty()) fail_at(c.at, c.name + " takes at least one engine");
+  return e;
+  }
+
+// anytime(E, weights=[...], expansions=N, order=..., deferred=...).
+EngineSpec anytime_of(const Call& c) {
+  using K = EngineSpec::Kind;
+  EngineSpec e;
+  e.kind = K::Anytime;
+  e.weights = {5.0, 3.0, 2.0, 1.5, 1.0};
+  for (const Call::Argument& a : c.arguments) {
+    if (a.key.empty()) {
+      if (!e.children.empty() || !a.call) fail_at(a.at, "anytime takes one engine, then options by name");
+      e.children.push_back(engine_of(*a.call));
+      if (e.children.back().kind == K::Anytime) fail_at(a.at, "anytime inside anytime");
+    } else if (a.key == "weights") {
+      if (!a.is_list || a.list.empty()) fail_at(a.at, "weights is a list of numbers, [5, 3, 1]");
+      for (double w : a.list) {
+        if (w < 1) fail_at(a.at, "weights are at least 1");
+      }
+      e.weights = a.list;
+    } else if (a.key == "expansions") {
+      e.expansions = static_cast<std::uint64_t>(number(a, 0));
+    } else if (a.key == "order") {
+      if (!a.call || (a.call->name != "steps" && a.call->name != "metric")) fail_at(a.at, "order is steps or metric");
+      e.metric_order = a.call->name == "metric";
+    } else if (a.key == "deferred") {
+      e.deferred = boolean(a);
+    } else {
+      fail_at(a.at, "anytime has no option '" + a.key + "'");
+    }
+  }
+  if (e.children.empty()) fail_at(c.at, "anytime takes the engine that finds the first plan");
+  return e;
+  }
+
 EngineSpec engine_of(const Call& c) {
   using K = EngineSpec::Kind;
   // A bare alias that is not an engine's name stands for its expression
@@ -245,61 +306,8 @@ EngineSpec engine_of(const Call& c) {
     e.complete = true;
     return e;
   }
-  if (c.name == "portfolio" || c.name == "then") {
-    EngineSpec e;
-    e.kind = c.name == "then" ? K::Then : K::Portfolio;
-    for (const Call::Argument& a : c.arguments) {
-      if (!a.key.empty()) {
-        if (e.kind == K::Portfolio && budget_option(e, a)) continue;
-        if (e.kind == K::Portfolio && a.key == "turns") {
-          if (!a.call || (a.call->name != "expansions" && a.call->name != "evaluations")) {
-            fail_at(a.at, "turns is expansions or evaluations");
-          }
-          e.share_evaluations = a.call->name == "evaluations";
-          continue;
-        }
-        fail_at(a.at, c.name + " has no option '" + a.key + "'");
-      }
-      if (!a.call) fail_at(a.at, c.name + " takes engines");
-      EngineSpec child = engine_of(*a.call);
-      if (e.kind == K::Portfolio && (child.kind == K::Portfolio || child.kind == K::Then || child.kind == K::Anytime)) {
-        fail_at(a.at, "a portfolio takes ehc, gbfs and wastar engines");
-      }
-      if (e.kind == K::Then && child.kind == K::Anytime) fail_at(a.at, "anytime goes around a then, not inside");
-      e.children.push_back(std::move(child));
-    }
-    if (e.children.empty()) fail_at(c.at, c.name + " takes at least one engine");
-    return e;
-  }
-  if (c.name == "anytime") {
-    EngineSpec e;
-    e.kind = K::Anytime;
-    e.weights = {5.0, 3.0, 2.0, 1.5, 1.0};
-    for (const Call::Argument& a : c.arguments) {
-      if (a.key.empty()) {
-        if (!e.children.empty() || !a.call) fail_at(a.at, "anytime takes one engine, then options by name");
-        e.children.push_back(engine_of(*a.call));
-        if (e.children.back().kind == K::Anytime) fail_at(a.at, "anytime inside anytime");
-      } else if (a.key == "weights") {
-        if (!a.is_list || a.list.empty()) fail_at(a.at, "weights is a list of numbers, [5, 3, 1]");
-        for (double w : a.list) {
-          if (w < 1) fail_at(a.at, "weights are at least 1");
-        }
-        e.weights = a.list;
-      } else if (a.key == "expansions") {
-        e.expansions = static_cast<std::uint64_t>(number(a, 0));
-      } else if (a.key == "order") {
-        if (!a.call || (a.call->name != "steps" && a.call->name != "metric")) fail_at(a.at, "order is steps or metric");
-        e.metric_order = a.call->name == "metric";
-      } else if (a.key == "deferred") {
-        e.deferred = boolean(a);
-      } else {
-        fail_at(a.at, "anytime has no option '" + a.key + "'");
-      }
-    }
-    if (e.children.empty()) fail_at(c.at, "anytime takes the engine that finds the first plan");
-    return e;
-  }
+  if (c.name == "portfolio" || c.name == "then") return combination_of(c);
+  if (c.name == "anytime") return anytime_of(c);
   fail_at(c.at, "unknown engine '" + c.name + "' (ehc, gbfs, wastar, complete, portfolio, then, anytime, or an alias)");
 }
 
