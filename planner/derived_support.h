@@ -37,4 +37,28 @@ class DerivedSupport {
   std::map<FactId, Support> done_;
 };
 
+// What a derived predicate reads, by predicate and function: every basic
+// predicate and function its lifted rules mention, through the derived
+// predicates they mention, transitively. The planner orders snaps by this
+// (task_index.cpp), not by DerivedSupport over its own axioms: the validator
+// grounds axioms under a looser reachability than the planner's grounder, so
+// a support taken from the planner's axioms can miss a fact the validator
+// counts (PSR instance 10: (unsafe cb3 side2) has no axiom in the planner's
+// task and several in the validator's, through which (affected cb3) reads
+// (closed sd18); the planner put (open sd18) and (open sd17) at one time).
+// Every ground support either side computes is made of instances of these
+// predicates and functions, so ordering by them is safe for both.
+class LiftedDerivedReads {
+ public:
+  explicit LiftedDerivedReads(const NormalizedTask& lifted);
+
+  // Sorted; empty for a predicate no rule derives.
+  const std::vector<PredicateId>& predicates(PredicateId derived) const { return predicates_[derived]; }
+  const std::vector<FunctionId>& functions(PredicateId derived) const { return functions_[derived]; }
+
+ private:
+  std::vector<std::vector<PredicateId>> predicates_;
+  std::vector<std::vector<FunctionId>> functions_;
+};
+
 }  // namespace alplan

@@ -79,18 +79,44 @@ bool conditions_mention_duration(const ConditionSet& c) {
   });
 }
 
-// A snap reading a derived fact reads every fact and variable it depends on
-// (derived_support.h): without this, a writer of one of them could be
-// scheduled at the same time as the reader, which VAL rejects.
-void expand_derived_reads(const GroundTask& task, DerivedSupport& support, Footprint& fp) {
-  const std::vector<FactId> reads = fp.reads;
-  for (FactId f : reads) {
-    if (!task.is_derived(f)) continue;
-    const DerivedSupport::Support& s = support.of(f);
-    fp.reads.insert(fp.reads.end(), s.facts.begin(), s.facts.end());
-    fp.reads_values.insert(fp.reads_values.end(), s.variables.begin(), s.variables.end());
+// A snap reading a derived fact reads every fact and variable of the
+// predicates and functions its rules read (derived_support.h says why not
+// only those of the planner's own axioms): without this, a writer of one of
+// them could be scheduled at the same time as the reader, which VAL rejects.
+class DerivedReads {
+ public:
+  explicit DerivedReads(const GroundTask& task) : task_(task), lifted_(*task.lifted) {
+    facts_of_.resize(task.lifted->predicates.size());
+    variables_of_.resize(task.lifted->functions.size());
+    for (FactId f = 0; f < task.facts.size(); ++f) {
+      if (!task.is_derived(f)) facts_of_[task.facts.key(f).head].push_back(f);
+    }
+    for (NumericVarId v = 0; v < task.numeric.size(); ++v) variables_of_[task.numeric.key(v).head].push_back(v);
   }
-}
+
+  void expand(Footprint& fp) const {
+    std::vector<PredicateId> predicates;
+    std::vector<FunctionId> functions;
+    for (FactId f : fp.reads) {
+      if (!task_.is_derived(f)) continue;
+      const PredicateId p = task_.facts.key(f).head;
+      predicates.insert(predicates.end(), lifted_.predicates(p).begin(), lifted_.predicates(p).end());
+      functions.insert(functions.end(), lifted_.functions(p).begin(), lifted_.functions(p).end());
+    }
+    unique(predicates);
+    unique(functions);
+    for (PredicateId p : predicates) fp.reads.insert(fp.reads.end(), facts_of_[p].begin(), facts_of_[p].end());
+    for (FunctionId f : functions) {
+      fp.reads_values.insert(fp.reads_values.end(), variables_of_[f].begin(), variables_of_[f].end());
+    }
+  }
+
+ private:
+  const GroundTask& task_;
+  LiftedDerivedReads lifted_;
+  std::vector<std::vector<FactId>> facts_of_;
+  std::vector<std::vector<NumericVarId>> variables_of_;
+};
 
 }  // namespace
 
@@ -151,10 +177,10 @@ std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const Gr
   x.continuous = ContinuousModel::build(t);
   if (x.continuous && x.continuous->unsupported() && !x.unsupported) x.unsupported = x.continuous->unsupported();
   if (!t.axioms.empty()) {
-    DerivedSupport derived(t);
+    const DerivedReads derived(t);
     for (std::vector<Footprint>* list : {&x.instant, &x.start, &x.end}) {
       for (Footprint& fp : *list) {
-        expand_derived_reads(t, derived, fp);
+        derived.expand(fp);
         finish(fp);
       }
     }

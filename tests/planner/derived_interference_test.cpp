@@ -4,12 +4,16 @@
 // (VAL: "Mutex violation: (a) (deletes (f))"); the planner separates them.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include "planner/derived_support.h"
 #include "planner/grounder.h"
 #include "planner/planner.h"
+#include "planner/task_index.h"
 #include "planner/validator.h"
 #include "tests/support/ground_names.h"
 #include "tests/support/task_loader.h"
+#include "tests/support/test_paths.h"
 
 using namespace alplan;
 
@@ -73,4 +77,41 @@ TEST_CASE("the support of a derived fact on a cycle of rules is the whole cycle'
   const std::vector<std::string> all{"(closed1)", "(closed2)", "(source)"};
   CHECK(names(test::fact_named(*task, "(fed2)")) == all);
   CHECK(names(test::fact_named(*task, "(fed1)")) == all);
+}
+
+TEST_CASE("what a derived predicate reads, by predicate, goes through every rule it mentions") {
+  const test::LoadedTask loaded =
+      test::load_task_text(kCycle, "(define (problem p) (:domain fed) (:init (closed1) (closed2) (source)) (:goal (fed2)))");
+  const NormalizedTask& lifted = *loaded.normalized;
+  const LiftedDerivedReads reads(lifted);
+  auto names = [&](const std::string& derived) {
+    std::vector<std::string> out;
+    for (std::size_t p = 0; p < lifted.predicates.size(); ++p) {
+      if (lifted.predicates[p].name != derived) continue;
+      for (PredicateId q : reads.predicates(static_cast<PredicateId>(p))) out.push_back(lifted.predicates[q].name);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  const std::vector<std::string> all{"closed1", "closed2", "source"};
+  CHECK(names("fed1") == all);
+  CHECK(names("fed2") == all);
+  CHECK(names("closed1").empty());
+}
+
+// PSR instance 10 (shared suite, instances 6-10 run as a test set): the
+// planner's grounder has no axiom for (unsafe cb3 side2), the validator's
+// has several, through which (affected cb3) reads (closed sd18); the
+// planner put (open sd18) and (open sd17) at one time, a plan its validator
+// rejected. The index orders by what the lifted rules read.
+TEST_CASE("on PSR the planner orders a switch's opening after every reader of the breakers' derived state") {
+  const std::string dir = test::benchmarks_dir() + "/ipc/ipc-2004/psr-middle-derived-predicates-adl/";
+  const test::LoadedTask loaded = test::load_task(dir + "domain.pddl", dir + "instances/instance-10.pddl");
+  const std::shared_ptr<const GroundTask> task = ground(loaded.normalized);
+  const TaskIndex index(task);
+  const Footprint& reader = index.footprint({SnapKind::Instant, test::action_named(*task, "(open sd17)")});
+  const Footprint& writer = index.footprint({SnapKind::Instant, test::action_named(*task, "(open sd18)")});
+  const FactId closed18 = test::fact_named(*task, "(closed sd18)");
+  CHECK(std::binary_search(reader.reads.begin(), reader.reads.end(), closed18));
+  CHECK(std::binary_search(writer.writes.begin(), writer.writes.end(), closed18));
 }
