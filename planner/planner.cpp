@@ -276,10 +276,6 @@ SearchStart search_start_of(const GroundTask& task, const PlanningStart& start, 
   return search_start;
 }
 
-}  // namespace
-
-namespace {
-
 // Turns a solution into the plan to print: validated as printed (from the
 // task's start by the plan validator, from an observed state by
 // validate_from), and lifted to the order its causal links need and

@@ -252,7 +252,7 @@ EngineSpec combination_of(const Call& c) {
   }
   if (e.children.empty()) fail_at(c.at, c.name + " takes at least one engine");
   return e;
-  }
+}
 
 // anytime(E, weights=[...], expansions=N, order=..., deferred=...).
 EngineSpec anytime_of(const Call& c) {
@@ -284,7 +284,7 @@ EngineSpec anytime_of(const Call& c) {
   }
   if (e.children.empty()) fail_at(c.at, "anytime takes the engine that finds the first plan");
   return e;
-  }
+}
 
 EngineSpec engine_of(const Call& c) {
   using K = EngineSpec::Kind;
