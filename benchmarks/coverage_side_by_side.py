@@ -5,7 +5,7 @@
 
 Each DIR is a run's output folder (its runs.csv). Prints a markdown table with a column per run: solved/tried per
 domain, then the totals, the invalid plans (status `invalid`) and the problems that changed status between the
-first two runs.
+runs next to each other that share problems, with how many first plans got better or worse.
 """
 import csv
 import os
@@ -16,6 +16,24 @@ from collections import OrderedDict
 def runs(folder):
     with open(os.path.join(folder, 'runs.csv')) as f:
         return list(csv.DictReader(f))
+
+
+def compare(label_a, rows_a, label_b, rows_b):
+    """Two runs of the same problems: what changed status, and whether the first plans of the problems both
+    solved got better or worse (lower value is better; within 0.0005, half the printed precision, equal)."""
+    first = {(r['domain'], r['problem']): r for r in rows_a}
+    common = [(first[k], r) for r in rows_b for k in [(r['domain'], r['problem'])] if k in first]
+    if not common:
+        return
+    changed = [(a, b) for a, b in common if a['status'] != b['status']]
+    both = [(float(a['value']), float(b['value'])) for a, b in common
+            if a['status'] == 'solved' and b['status'] == 'solved']
+    better = sum(y < x - 5e-4 for x, y in both)
+    worse = sum(y > x + 5e-4 for x, y in both)
+    print(f'\n{label_a} -> {label_b}: {len(changed)} changed status; of the {len(both)} both solve, '
+          f'{better} first plans better, {worse} worse')
+    for a, b in changed:
+        print(f"- {b['domain']} {b['problem']}: {a['status']} -> {b['status']}")
 
 
 def main(args):
@@ -45,13 +63,8 @@ def main(args):
         print(f'| {d} | ' + ' | '.join(cells) + ' |')
     print('| **total** | ' + ' | '.join(f'**{s}/{n}**' for s, n, _ in totals) + ' |')
     print('| invalid plans | ' + ' | '.join(str(i) for _, _, i in totals) + ' |')
-    if len(columns) >= 2:
-        first = {(r['domain'], r['problem']): r['status'] for r in columns[0][1]}
-        changed = [(k, first[k], r['status']) for r in columns[1][1]
-                   for k in [(r['domain'], r['problem'])] if k in first and first[k] != r['status']]
-        print(f'\n{columns[0][0]} -> {columns[1][0]}: {len(changed)} changed status')
-        for (d, p), a, b in changed:
-            print(f'- {d} {p}: {a} -> {b}')
+    for (label_a, a), (label_b, b) in zip(columns, columns[1:]):
+        compare(label_a, a, label_b, b)
     return 0
 
 

@@ -17,22 +17,7 @@ import os
 import sys
 from collections import defaultdict
 
-
-def number(text):
-    try:
-        return float(text)
-    except (TypeError, ValueError):
-        return None
-
-
-def key(domain_file, problem_file):
-    # ipc/ipc-2004/<domain>/domain.pddl and .../instances/instance-1.pddl -> (ipc-2004/<domain>, instance-1.pddl)
-    parts = domain_file.split('/')
-    return '/'.join(parts[1:3]), os.path.basename(problem_file)
-
-
-def domain_of(run_domain):
-    return '/'.join(run_domain.rstrip('/').split('/')[-2:])
+from anytime_against_optic import domain_of, key, number  # the same files, read the same way
 
 
 def compare(ours, optic):
