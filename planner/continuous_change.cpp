@@ -58,6 +58,7 @@ std::optional<LinearForm> linearize(const GroundExpression& e, const ContinuousM
       }
       return f;
     case K::TotalTime:
+    case K::IsViolated:
     case K::Undefined: {
       EvaluationContext context;
       context.duration = duration;

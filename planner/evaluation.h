@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "planner/ground_task.h"
 
@@ -21,6 +22,8 @@ constexpr double kNumericSlack = 0.0001;
 struct EvaluationContext {
   double duration = std::nan("");    // ?duration of the action being evaluated
   double total_time = std::nan("");  // (total-time), in metrics
+  // Violations per PDDL 3 preference, for (is-violated name) in metrics.
+  const std::vector<double>* violations = nullptr;
 };
 
 // Reading a numeric value the problem never defined, or dividing by zero.
@@ -52,6 +55,9 @@ double evaluate(const GroundExpression& e, const S& state, const EvaluationConte
       return context.duration;
     case K::TotalTime: return context.total_time;
     case K::Undefined: throw EvaluationError("undefined value of " + e.undefined_term);
+    case K::IsViolated:
+      if (!context.violations) throw EvaluationError("(is-violated ...) outside a metric");
+      return e.variable < context.violations->size() ? (*context.violations)[e.variable] : 0.0;
     case K::Negate: return -evaluate(e.operands[0], state, context);
     case K::Subtract: return evaluate(e.operands[0], state, context) - evaluate(e.operands[1], state, context);
     case K::Divide: {

@@ -48,6 +48,10 @@ std::string write_expression(const GroundTask& task, const GroundExpression& e) 
     case K::Duration: return "?duration";
     case K::TotalTime: return "(total-time)";
     case K::Undefined: return e.undefined_term;
+    case K::IsViolated:
+      return "(is-violated " + (task.lifted && e.variable < task.lifted->pddl3.preferences.size()
+                                    ? task.lifted->pddl3.preferences[e.variable]
+                                    : std::string("?")) + ")";
   }
   return "?";
 }

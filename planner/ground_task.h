@@ -25,6 +25,7 @@ struct GroundExpression {
   enum class Kind : unsigned char {
     Constant, Variable, Add, Subtract, Multiply, Divide, Negate, Duration, TotalTime,
     Undefined,  // a static function term the problem gives no value
+    IsViolated,  // (is-violated name): `variable` is the preference's index
   };
   Kind kind = Kind::Constant;
   double value = 0.0;
@@ -108,6 +109,30 @@ struct ContinuousEffect {
   GroundExpression rate;
 };
 
+// One instance of a PDDL 3 preference in the goal or an action's condition.
+struct GroundPreference {
+  std::uint32_t preference = 0;  // index into TrajectoryConstraints::preferences
+  ConditionSet condition;
+  pddl::TimeSpecifier time = pddl::TimeSpecifier::AtStart;
+};
+
+// One instance of a PDDL 3 trajectory constraint (trajectory_constraints.h).
+struct GroundConstraint {
+  ModalOperator op = ModalOperator::Always;
+  ConditionSet requirement, trigger;
+  double deadline = 0.0, from = 0.0;
+  std::optional<std::uint32_t> preference;  // soft when set
+  // Instances with one monitor count one violation between them (VAL).
+  std::uint32_t monitor = 0;
+  std::string text;  // as written, with the forall binding
+};
+
+struct GroundTrajectory {
+  std::vector<GroundConstraint> constraints;
+  std::vector<GroundPreference> goal_preferences;
+  std::uint32_t monitors = 0;
+};
+
 struct GroundAction {
   std::uint32_t schema = 0;  // index into NormalizedTask::actions
   std::vector<ObjectId> args;
@@ -116,6 +141,7 @@ struct GroundAction {
   HappeningEffects start, end;               // instantaneous: start
   std::vector<GroundDurationConstraint> duration;
   std::vector<ContinuousEffect> continuous;
+  std::vector<GroundPreference> preferences;  // PDDL 3, beside the hard conditions
 };
 
 struct GroundAxiom {
@@ -152,6 +178,7 @@ struct GroundTask {
   std::vector<GroundTimedLiteral> timed_literals;  // sorted by time
   ConditionSet goal;
   std::optional<GroundMetric> metric;
+  GroundTrajectory pddl3;
   GroundingTimes times;
 
   std::string fact_name(FactId fact) const;

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "planner/ground_trajectory.h"
 #include "planner/instantiate.h"
 #include "planner/reachability.h"
 
@@ -74,6 +75,8 @@ void instantiate_state(const NormalizedTask& lifted, Instantiator& instantiate, 
   if (lifted.metric) {
     task.metric = GroundMetric{lifted.metric->minimize, instantiate.expression(lifted.metric->expression, {})};
   }
+  // PDDL 3 as data; the planner refuses such tasks before searching.
+  if (!lifted.pddl3.empty()) task.pddl3 = ground_trajectory(lifted, instantiate);
 }
 
 // Fluent initial values, for every numeric variable instantiation interned.

@@ -1,4 +1,5 @@
 #include "planner/instantiate.h"
+#include "planner/ground_trajectory.h"
 
 #include <algorithm>
 #include <iterator>
@@ -165,6 +166,7 @@ GroundExpression Instantiator::expression(const LiftedExpression& e, const std::
     case LE::Constant: g.kind = K::Constant; g.value = e.value; return g;
     case LE::Duration: g.kind = K::Duration; return g;
     case LE::TotalTime: g.kind = K::TotalTime; return g;
+    case LE::IsViolated: g.kind = K::IsViolated; g.variable = e.preference; return g;
     case LE::Function: {
       const GroundKey& k = scratch(e.term.function, e.term.args, binding);
       if (!task_.functions[e.term.function].fluent) {
@@ -421,6 +423,7 @@ GroundAction Instantiator::action(std::uint32_t schema_index, const std::vector<
     action.duration.push_back({d.comparison, expression(d.value, binding), d.moment});
   }
   effects(schema, binding, action);
+  action.preferences = ground_preferences(schema.preferences, binding, *this);
   return action;
 }
 

@@ -41,6 +41,7 @@ class Instantiator {
   Instantiator(const NormalizedTask& task, const StaticFacts& statics, GroundKeyTable& facts,
                GroundKeyTable& numeric, InstantiationOptions options);
 
+  const NormalizedTask& task() const { return task_; }
   GroundAction action(std::uint32_t schema, const std::vector<ObjectId>& args);
   // The goal is instantiated once, so it always says why it cannot hold.
   void set_explain(bool on) { options_.explain = on; }

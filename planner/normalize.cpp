@@ -215,10 +215,12 @@ NormalizedTask normalize(const pddl::Domain& domain, const pddl::Problem& proble
   add_signatures(domain, task, names, in_domain);
   for (const pddl::Action& a : domain.actions) {
     task.actions.push_back(convert_action(a, in_domain));
+    task.actions.back().preferences = in_domain.take_preferences();
     for (std::string& m : in_domain.take_unsupported()) task.actions.back().unsupported = std::move(m);
   }
   for (const pddl::DurativeAction& a : domain.durative_actions) {
     task.actions.push_back(convert_durative(a, in_domain));
+    task.actions.back().preferences = in_domain.take_preferences();
     for (std::string& m : in_domain.take_unsupported()) task.actions.back().unsupported = std::move(m);
   }
   for (const pddl::DerivedPredicate& d : domain.derived_predicates) {
@@ -237,18 +239,14 @@ NormalizedTask normalize(const pddl::Domain& domain, const pddl::Problem& proble
     VariableScope scope;
     task.goal = in_problem.condition(*problem.goal, scope);
     task.goal_variable_slots = scope.slots_used();
+    task.pddl3.goal_preferences = in_problem.take_preferences();
   }
   if (problem.metric) {
     task.metric = NormalizedMetric{problem.metric->minimize, in_problem.expression(problem.metric->expression, {})};
   }
-  if (domain.constraints) {
-    task.unsupported.push_back(in_domain.where(domain.constraints->location) +
-                               ": PDDL 3 :constraints are not supported");
-  }
-  if (problem.constraints) {
-    task.unsupported.push_back(in_problem.where(problem.constraints->location) +
-                               ": PDDL 3 :constraints are not supported");
-  }
+  // PDDL 3 is data here; the planner refuses it where it starts (planner.cpp).
+  if (domain.constraints) in_domain.constraints(*domain.constraints);
+  if (problem.constraints) in_problem.constraints(*problem.constraints);
   for (std::string& m : in_domain.take_unsupported()) task.unsupported.push_back(std::move(m));
   for (std::string& m : in_problem.take_unsupported()) task.unsupported.push_back(std::move(m));
   task.declares_time = declares(domain.requirements, ":durative-actions") || declares(domain.requirements, ":time");

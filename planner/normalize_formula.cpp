@@ -102,6 +102,43 @@ void FormulaConverter::unsupported(pddl::SourceLocation location, const std::str
   unsupported_.push_back(where(location) + ": " + what);
 }
 
+void FormulaConverter::pddl3_use(pddl::SourceLocation location, const std::string& what) {
+  task_.pddl3.uses.push_back(where(location) + ": " + what);
+}
+
+std::uint32_t FormulaConverter::preference_id(const std::string& name) {
+  auto [it, inserted] = names_.preferences.emplace(name, static_cast<std::uint32_t>(task_.pddl3.preferences.size()));
+  if (inserted) task_.pddl3.preferences.push_back(name);
+  return it->second;
+}
+
+// A preference in a goal or condition: VAL evaluates it where the condition
+// is evaluated and counts each failing instance.
+void FormulaConverter::preference(const pddl::Condition& c, VariableScope& scope, bool negated) {
+  const std::string name = c.preference_name.empty() ? "anonymous" : c.preference_name;
+  pddl3_use(c.location, "PDDL 3 preference " + name);
+  if (negated || disjunctive_depth_ > 0) {
+    unsupported(c.location, "a PDDL 3 preference under a negation, disjunction or existential quantifier");
+    return;
+  }
+  const pddl::Condition* body = &c.children.front();
+  PreferenceCondition p;
+  p.time = current_time_;
+  if (body->kind == CKind::Timed) {
+    p.time = body->time;
+    body = &body->children.front();
+  }
+  p.preference = preference_id(name);
+  p.forall = enclosing_;
+  p.where = where(c.location);
+  std::vector<PreferenceCondition> outer = std::move(preferences_);
+  preferences_.clear();
+  p.condition = condition(*body, scope);
+  if (!preferences_.empty()) unsupported(c.location, "a PDDL 3 preference inside a preference");
+  preferences_ = std::move(outer);
+  preferences_.push_back(std::move(p));
+}
+
 TypeId FormulaConverter::type_of(const pddl::TypeNames& types) {
   if (types.empty()) return 0;
   std::string key = pddl::write_type(types);
@@ -166,7 +203,9 @@ LiftedExpression FormulaConverter::expression(const pddl::NumericExpression& e, 
       unsupported(e.location, "#t outside the form (* #t rate) of a continuous effect (non-linear change) is not supported");
       return result;
     case K::IsViolated:
-      unsupported(e.location, "PDDL 3 preferences (is-violated) are not supported");
+      pddl3_use(e.location, "PDDL 3 (is-violated " + e.function.name + ")");
+      result.kind = LiftedExpression::Kind::IsViolated;
+      result.preference = preference_id(e.function.name);
       return result;
   }
   for (const pddl::NumericExpression& operand : e.operands) result.operands.push_back(expression(operand, scope));
@@ -178,23 +217,33 @@ LiftedCondition FormulaConverter::condition(const pddl::Condition& c, VariableSc
   switch (c.kind) {
     case CKind::And:
     case CKind::Or: {
+      const bool conjunction = (c.kind == CKind::And) != negated;
       std::vector<LiftedCondition> children;
+      disjunctive_depth_ += conjunction ? 0 : 1;
       for (const pddl::Condition& child : c.children) children.push_back(condition(child, scope, negated));
-      return (c.kind == CKind::And) != negated ? make_and(std::move(children)) : make_or(std::move(children));
+      disjunctive_depth_ -= conjunction ? 0 : 1;
+      return conjunction ? make_and(std::move(children)) : make_or(std::move(children));
     }
     case CKind::Not: return condition(c.children.front(), scope, !negated);
     case CKind::Imply: {
       std::vector<LiftedCondition> children;
+      ++disjunctive_depth_;
       children.push_back(condition(c.children[0], scope, !negated));
       children.push_back(condition(c.children[1], scope, negated));
+      --disjunctive_depth_;
       return negated ? make_and(std::move(children)) : make_or(std::move(children));
     }
     case CKind::Exists:
     case CKind::Forall: {
-      std::vector<QuantifiedVariable> variables = bind_all(c.variables, scope);
-      LiftedCondition body = condition(c.children.front(), scope, negated);
-      scope.unbind(c.variables.size());
       const bool universal = (c.kind == CKind::Forall) != negated;
+      std::vector<QuantifiedVariable> variables = bind_all(c.variables, scope);
+      // A preference under a universal quantifier counts per instance.
+      if (universal) enclosing_.insert(enclosing_.end(), variables.begin(), variables.end());
+      disjunctive_depth_ += universal ? 0 : 1;
+      LiftedCondition body = condition(c.children.front(), scope, negated);
+      disjunctive_depth_ -= universal ? 0 : 1;
+      if (universal) enclosing_.resize(enclosing_.size() - variables.size());
+      scope.unbind(c.variables.size());
       return quantified(universal ? LiftedCondition::Kind::Forall : LiftedCondition::Kind::Exists,
                         std::move(variables), std::move(body));
     }
@@ -225,8 +274,9 @@ LiftedCondition FormulaConverter::condition(const pddl::Condition& c, VariableSc
       unsupported(c.location, "a timed condition nested where it cannot be split by time");
       return result;
     case CKind::Preference:
-      unsupported(c.location, "PDDL 3 preferences are not supported");
-      return result;
+      // Held true in the hard condition; evaluated apart (PreferenceCondition).
+      preference(c, scope, negated);
+      return LiftedCondition{};
     default:
       unsupported(c.location, "PDDL 3 trajectory constraints are not supported");
       return result;
@@ -236,8 +286,24 @@ LiftedCondition FormulaConverter::condition(const pddl::Condition& c, VariableSc
 LiftedCondition FormulaConverter::timed_part(const pddl::Condition& c, pddl::TimeSpecifier time,
                                              VariableScope& scope) {
   switch (c.kind) {
-    case CKind::Timed:
-      return c.time == time ? condition(c.children.front(), scope) : LiftedCondition{};
+    case CKind::Timed: {
+      if (c.time != time) return LiftedCondition{};
+      current_time_ = time;
+      LiftedCondition part = condition(c.children.front(), scope);
+      current_time_ = pddl::TimeSpecifier::AtStart;
+      return part;
+    }
+    case CKind::Preference: {
+      // (preference p (at start C)); an untimed one is read as over all.
+      const pddl::Condition& inner = c.children.front();
+      const pddl::TimeSpecifier at = inner.kind == CKind::Timed ? inner.time : pddl::TimeSpecifier::OverAll;
+      if (at == time) {
+        current_time_ = time;
+        preference(c, scope, false);
+        current_time_ = pddl::TimeSpecifier::AtStart;
+      }
+      return LiftedCondition{};
+    }
     case CKind::And: {
       std::vector<LiftedCondition> children;
       for (const pddl::Condition& child : c.children) children.push_back(timed_part(child, time, scope));
@@ -245,7 +311,9 @@ LiftedCondition FormulaConverter::timed_part(const pddl::Condition& c, pddl::Tim
     }
     case CKind::Forall: {
       std::vector<QuantifiedVariable> variables = bind_all(c.variables, scope);
+      enclosing_.insert(enclosing_.end(), variables.begin(), variables.end());
       LiftedCondition body = timed_part(c.children.front(), time, scope);
+      enclosing_.resize(enclosing_.size() - variables.size());
       scope.unbind(c.variables.size());
       return quantified(LiftedCondition::Kind::Forall, std::move(variables), std::move(body));
     }

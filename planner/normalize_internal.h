@@ -16,6 +16,7 @@ struct NameTables {
   std::unordered_map<std::string, PredicateId> predicates;
   std::unordered_map<std::string, FunctionId> functions;
   std::unordered_map<std::string, TypeId> types;  // also "(either a b)" unions
+  std::unordered_map<std::string, std::uint32_t> preferences;
 };
 
 // Variables visible at a point of a formula: name -> slot.
@@ -46,6 +47,10 @@ class FormulaConverter {
   std::string where(pddl::SourceLocation location) const;
   // Constructs met since the last call that the planner cannot handle.
   std::vector<std::string> take_unsupported() { return std::move(unsupported_); }
+  // Preferences met in conditions since the last call (the goal's, an action's).
+  std::vector<PreferenceCondition> take_preferences() { return std::move(preferences_); }
+  // A :constraints section into task.pddl3.constraints (normalize_constraints.cpp).
+  void constraints(const pddl::Condition& c);
 
  private:
   struct EffectContext;
@@ -56,11 +61,25 @@ class FormulaConverter {
   std::vector<QuantifiedVariable> bind_all(const std::vector<pddl::TypedName>& variables, VariableScope& scope);
   LiftedTerm term(const pddl::Term& t, const VariableScope& scope);
   void unsupported(pddl::SourceLocation location, const std::string& what);
+  // The index of a preference name, added on first mention.
+  std::uint32_t preference_id(const std::string& name);
+  // Records a PDDL 3 construct for the planner's refusal.
+  void pddl3_use(pddl::SourceLocation location, const std::string& what);
+  void preference(const pddl::Condition& c, VariableScope& scope, bool negated);
+  struct ConstraintContext;
+  void constraint(const pddl::Condition& c, VariableScope& scope, ConstraintContext& context);
+  void add_constraint(const pddl::Condition& c, VariableScope& scope, const ConstraintContext& context);
 
   NormalizedTask& task_;
   NameTables& names_;
   std::string file_;
   std::vector<std::string> unsupported_;
+  // Universal quantifiers enclosing the condition being converted, where a
+  // preference may stand (a conjunctive context); and whether it is one.
+  std::vector<QuantifiedVariable> enclosing_;
+  int disjunctive_depth_ = 0;
+  pddl::TimeSpecifier current_time_ = pddl::TimeSpecifier::AtStart;
+  std::vector<PreferenceCondition> preferences_;
 };
 
 LiftedCondition make_and(std::vector<LiftedCondition> children);

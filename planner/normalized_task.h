@@ -13,55 +13,10 @@
 
 #include "pddl_parser/ast.h"
 #include "planner/ids.h"
+#include "planner/lifted_formula.h"
+#include "planner/trajectory_constraints.h"
 
 namespace alplan {
-
-// A term of a lifted formula: a variable slot of the enclosing schema (its
-// parameters first, then quantified variables) or an object.
-struct LiftedTerm {
-  bool is_variable = false;
-  std::uint32_t index = 0;  // variable slot, or ObjectId
-  bool operator==(const LiftedTerm&) const = default;
-};
-
-struct LiftedAtom {
-  PredicateId predicate = kNoId;
-  std::vector<LiftedTerm> args;
-};
-
-struct LiftedFunctionTerm {
-  FunctionId function = kNoId;
-  std::vector<LiftedTerm> args;
-};
-
-struct LiftedExpression {
-  enum class Kind : unsigned char { Constant, Function, Add, Subtract, Multiply, Divide, Negate, Duration, TotalTime };
-  Kind kind = Kind::Constant;
-  double value = 0.0;
-  LiftedFunctionTerm term;  // Function
-  std::vector<LiftedExpression> operands;
-};
-
-// A quantified variable: its slot and the objects it ranges over.
-struct QuantifiedVariable {
-  std::uint32_t slot = 0;
-  TypeId type = kNoId;
-  std::string name;
-};
-
-// Negation normal form: negation only on atoms, equalities and comparisons
-// (a negated comparison is stored with the opposite comparison).
-struct LiftedCondition {
-  enum class Kind : unsigned char { True, False, And, Or, Atom, Equality, Comparison, Forall, Exists };
-  Kind kind = Kind::True;
-  bool positive = true;  // Atom, Equality
-  LiftedAtom atom;
-  LiftedTerm left, right;  // Equality
-  pddl::Comparison comparison = pddl::Comparison::Equal;
-  std::vector<LiftedExpression> sides;  // Comparison: left, right
-  std::vector<QuantifiedVariable> variables;
-  std::vector<LiftedCondition> children;
-};
 
 enum class Moment : unsigned char { Start, End };
 
@@ -102,6 +57,9 @@ struct ActionSchema {
   LiftedCondition at_start, over_all, at_end;
   std::vector<PrimitiveEffect> effects;
   std::vector<LiftedDurationConstraint> duration;
+  // PDDL 3 preferences in the precondition or durative condition; they are
+  // not part of at_start / over_all / at_end, which hold them true.
+  std::vector<PreferenceCondition> preferences;
   // Set when the schema has a construct the planner cannot handle (non-linear
   // continuous change, ...): the planner and validator refuse it with this
   // message naming the construct and its position.
@@ -176,8 +134,10 @@ struct NormalizedTask {
   // The domain declares :durative-actions or :time. VAL looks only at this
   // flag: without it, (total-time) is the number of steps (see validator.h).
   bool declares_time = false;
-  // Constructs the planner and validator refuse (PDDL 3 constraints and
-  // preferences), each with its position: "file:line:col: what".
+  // PDDL 3 trajectory constraints, goal preferences and preference names.
+  TrajectoryConstraints pddl3;
+  // Constructs the planner and validator refuse, each with its position:
+  // "file:line:col: what".
   std::vector<std::string> unsupported;
 
   std::optional<PredicateId> find_predicate(const std::string& name) const;

@@ -329,6 +329,14 @@ class PlanChecker {
 // grounded away, timed literals that clash.
 std::optional<PlannerResult> Planner::refused(const TaskIndex& index, const PlanningStart& start) const {
   PlannerResult result;
+  // PDDL 3 is normalised and ground as data for the validator; search cannot
+  // plan with constraints or preferences yet, so it names the first one.
+  if (!task_->lifted->pddl3.empty()) {
+    result.status = PlannerResult::Status::Unsupported;
+    result.message = task_->lifted->pddl3.uses.front() + ": the planner does not support PDDL 3 constraints and "
+                     "preferences yet (alplan validate checks plans for them)";
+    return result;
+  }
   if (index.unsupported()) {
     result.status = PlannerResult::Status::Unsupported;
     result.message = *index.unsupported();
