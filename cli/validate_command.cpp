@@ -58,6 +58,7 @@ int run(const ValidateOptions& options) {
       j["makespan"] = result.makespan;
       j["metric"] = result.metric ? nlohmann::json(*result.metric) : nlohmann::json();
       j["value"] = result.value;
+      if (!result.preference_violations.empty()) j["preference_violations"] = result.preference_violations;
     } else {
       j["violation"] = to_json(*result.violation);
     }
@@ -65,6 +66,9 @@ int run(const ValidateOptions& options) {
   } else if (result.valid) {
     std::cout << "Plan valid. Makespan: " << pddl::format_number(result.makespan)
               << ". Metric: " << (result.metric ? pddl::format_number(*result.metric) : std::string("none")) << ".\n";
+    for (const auto& [name, count] : result.preference_violations) {
+      std::cout << "Preference " << name << " violated " << pddl::format_number(count) << " times.\n";
+    }
   } else {
     std::cout << "Plan invalid. " << result.violation->message() << "\n";
   }

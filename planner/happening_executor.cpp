@@ -166,6 +166,8 @@ void HappeningExecutor::load(const std::vector<ScheduledStep>& steps, const Exec
   }
   next_ = 0;
   time_ = start.now;
+  trajectory_.emplace(task_, numeric_slack_);
+  invariant_preferences_counted_.clear();
   last_action_state_.reset();
   last_action_time_ = 0.0;
 }
@@ -198,7 +200,23 @@ std::optional<Violation> HappeningExecutor::check_conditions(const Event& e) {
     v.condition = describe(task_, condition, *failed);
     return v;
   }
+  count_preferences(e, e.point == Point::End ? pddl::TimeSpecifier::AtEnd : pddl::TimeSpecifier::AtStart, state_);
   return std::nullopt;
+}
+
+void HappeningExecutor::count_preferences(const Event& e, pddl::TimeSpecifier time, const ExplicitState& state) {
+  const GroundAction* action = action_of(e);
+  if (!action || action->preferences.empty()) return;
+  const bool invariant = time == pddl::TimeSpecifier::OverAll;
+  if (invariant && invariant_preferences_counted_.count(e.scheduled)) return;
+  for (const GroundPreference& p : action->preferences) {
+    if (p.time != time || holds(p.condition, state, context_of(e), numeric_slack_)) continue;
+    trajectory_->count(p.preference);
+    if (invariant) {
+      invariant_preferences_counted_.insert(e.scheduled);
+      return;
+    }
+  }
 }
 
 HappeningExecutor::Footprint HappeningExecutor::footprint(const Event& e) const {
@@ -210,6 +228,11 @@ HappeningExecutor::Footprint HappeningExecutor::footprint(const Event& e) const 
   }
   const GroundAction& action = *action_of(e);
   collect_reads(e.point == Point::End ? action.at_end : action.at_start, f.reads, f.reads_values);
+  // VAL's mutex rule reads the propositions of preferences too.
+  const pddl::TimeSpecifier at = e.point == Point::End ? pddl::TimeSpecifier::AtEnd : pddl::TimeSpecifier::AtStart;
+  for (const GroundPreference& p : action.preferences) {
+    if (p.time == at) collect_reads(p.condition, f.reads, f.reads_values);
+  }
   // A condition on a derived fact reads what it is derived from (VAL).
   if (!task_.axioms.empty()) {
     if (!derived_) derived_ = std::make_unique<DerivedSupport>(task_);
@@ -334,6 +357,7 @@ void HappeningExecutor::advance(ExplicitState& state, double elapsed) const {
 std::optional<Violation> HappeningExecutor::check_invariants(const ExplicitState& state, double at, double until) {
   for (const auto& [scheduled, action] : running_) {
     const ConditionSet& invariant = task_.actions[action].over_all;
+    count_preferences({Point::Start, at, scheduled}, pddl::TimeSpecifier::OverAll, state);
     if (invariant.empty()) continue;
     EvaluationContext context;
     context.duration = steps_[scheduled].duration;
@@ -353,6 +377,29 @@ std::optional<Violation> HappeningExecutor::check_invariants(const ExplicitState
 }
 
 std::optional<Violation> HappeningExecutor::step() {
+  // VAL checks trajectory constraints in the state before each happening:
+  // the initial state, then each happening's result but the last (finish_run).
+  auto observe = [&]() -> std::optional<Violation> {
+    try {
+      return trajectory_->observe(state_, time_);
+    } catch (const EvaluationError& error) {
+      Violation v;
+      v.kind = Violation::Kind::UndefinedValue;
+      v.time = time_;
+      v.action = "the PDDL 3 constraints";
+      v.condition = explain(error);
+      return v;
+    }
+  };
+  if (next_ == 0 && trajectory_->active()) {
+    if (auto v = observe()) return v;
+  }
+  if (auto v = execute_happening()) return v;
+  if (!done() && trajectory_->active()) return observe();
+  return std::nullopt;
+}
+
+std::optional<Violation> HappeningExecutor::execute_happening() {
   const std::vector<Event>& events = happenings_[next_];
   advance(state_, happening_times_[next_] - time_);
   time_ = happening_times_[next_];
@@ -423,6 +470,26 @@ ValidationResult HappeningExecutor::run(const std::vector<ScheduledStep>& steps,
   return finish_run(plan_steps);
 }
 
+std::optional<Violation> HappeningExecutor::finish_trajectory(ValidationResult& result) {
+  try {
+    for (const GroundPreference& p : task_.pddl3.goal_preferences) {
+      if (!holds(p.condition, state_, EvaluationContext{}, numeric_slack_)) trajectory_->count(p.preference);
+    }
+    // An empty plan has no happening: its initial state is its final state.
+    if (auto v = trajectory_->finish(state_, time_)) return v;
+  } catch (const EvaluationError& error) {
+    Violation v;
+    v.kind = Violation::Kind::UndefinedValue;
+    v.time = time_;
+    v.action = "the PDDL 3 constraints or preferences";
+    v.condition = explain(error);
+    return v;
+  }
+  const std::vector<std::string>& names = task_.lifted->pddl3.preferences;
+  for (std::size_t p = 0; p < names.size(); ++p) result.preference_violations[names[p]] = trajectory_->violations()[p];
+  return std::nullopt;
+}
+
 ValidationResult HappeningExecutor::finish_run(std::size_t plan_steps) {
   ValidationResult result;
   result.happenings = happenings_.size();
@@ -440,11 +507,16 @@ ValidationResult HappeningExecutor::finish_run(std::size_t plan_steps) {
     result.violation = v;
     return result;
   }
+  if (auto v = finish_trajectory(result)) {
+    result.violation = std::move(v);
+    return result;
+  }
   // VAL's value: the metric after the last action happening; (total-time)
   // is its time, or the step count when the domain is not temporal.
   const double steps_and_literals = static_cast<double>(plan_steps + task_.timed_literals.size());
   result.makespan = last_action_time_;
   EvaluationContext context;
+  context.violations = &trajectory_->violations();
   const bool timed = val_total_time_ ? task_.lifted->declares_time : task_.lifted->temporal;
   context.total_time = timed ? last_action_time_ : steps_and_literals;
   const ExplicitState& final_state = last_action_state_ ? *last_action_state_ : state_;

@@ -15,6 +15,7 @@
 #include "planner/evaluation.h"
 #include "planner/explicit_state.h"
 #include "planner/ground_task.h"
+#include "planner/trajectory_monitor.h"
 #include "planner/validator.h"
 #include "planner/violation.h"
 
@@ -79,6 +80,12 @@ class HappeningExecutor {
   };
 
   ValidationResult finish_run(std::size_t plan_steps);
+  std::optional<Violation> execute_happening();
+  // PDDL 3 preferences of an action's condition at `time`: each failing
+  // instance counts one violation (over all: once per occurrence).
+  void count_preferences(const Event& e, pddl::TimeSpecifier time, const ExplicitState& state);
+  // The goal's preferences, the final state's constraints, the counts.
+  std::optional<Violation> finish_trajectory(ValidationResult& result);
   std::optional<Violation> check_conditions(const Event& e);
   std::optional<Violation> check_mutex(const std::vector<Event>& events);
   std::optional<Violation> apply(const std::vector<Event>& events);
@@ -113,6 +120,9 @@ class HappeningExecutor {
   std::size_t last_action_happening_ = 0;
   std::optional<ExplicitState> last_action_state_;
   double last_action_time_ = 0.0;
+  // PDDL 3 trajectory constraints and preference counts over this run.
+  std::optional<TrajectoryMonitor> trajectory_;
+  std::set<std::size_t> invariant_preferences_counted_;  // scheduled steps
 };
 
 }  // namespace alplan

@@ -8,6 +8,7 @@
 #include "planner/evaluation.h"
 #include "planner/explicit_state.h"
 #include "planner/ground_printer.h"
+#include "planner/ground_trajectory.h"
 #include "planner/grounder.h"
 #include "planner/happening_executor.h"
 #include "planner/reachability.h"
@@ -29,6 +30,7 @@ void ground_world(const NormalizedTask& lifted, const StaticFacts& statics, Grou
   if (lifted.metric) {
     world.metric = GroundMetric{lifted.metric->minimize, instantiate.expression(lifted.metric->expression, {})};
   }
+  world.pddl3 = ground_trajectory(lifted, instantiate);
   if (!lifted.derived_rules.empty()) {
     const std::vector<std::uint32_t> strata = derived_strata(lifted);
     // Only at-start atoms are required, so that any state a plan reaches

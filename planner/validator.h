@@ -53,6 +53,9 @@ struct ValidationResult {
   std::optional<double> total_cost;
   std::optional<Violation> violation;
   std::size_t happenings = 0;
+  // PDDL 3: violated instances per preference name, as (is-violated name)
+  // reads them in the metric.
+  std::map<std::string, double> preference_violations;
 };
 
 class PlanValidator {

@@ -17,6 +17,7 @@ const char* to_string(Violation::Kind kind) {
     case K::BadStep: return "bad_step";
     case K::UndefinedValue: return "undefined_value";
     case K::Unsupported: return "unsupported";
+    case K::ConstraintViolated: return "constraint_violated";
   }
   return "?";
 }
@@ -42,6 +43,7 @@ std::string Violation::message() const {
     case K::UndefinedValue:
       return "Attempt to access undefined expression in " + action + " at time " + at + ": " + condition + in_line;
     case K::Unsupported: return "Cannot validate: " + condition;
+    case K::ConstraintViolated: return "Trajectory constraint violated at time " + at + ": " + condition;
   }
   return "?";
 }

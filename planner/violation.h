@@ -20,6 +20,7 @@ struct Violation {
     BadStep,                  // wrong number or type of arguments, missing duration
     UndefinedValue,           // a numeric value the problem never defined
     Unsupported,              // a construct the validator cannot execute
+    ConstraintViolated,       // a hard PDDL 3 trajectory constraint
   };
   Kind kind = Kind::GoalNotReached;
   double time = 0.0;
