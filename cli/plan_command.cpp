@@ -68,6 +68,7 @@ nlohmann::json plan_json(const FoundPlan& p, std::size_t index) {
           {"value", v.value},
           {"cost", v.total_cost.value_or(v.value)},
           {"total_cost", v.total_cost ? nlohmann::json(*v.total_cost) : nlohmann::json()},
+          {"preference_violations", v.preference_violations},
           {"found_after_seconds", p.seconds},
           {"search", p.engine},
           {"text", p.text}};
@@ -102,6 +103,11 @@ void print_best(const PlannerResult& result, std::ostream& out) {
       << "; best plan makespan: " << format_plan_time(v.makespan) << "\n"
       << "; best plan metric: " << (v.metric ? readable(*v.metric) : std::string("none")) << "\n";
   if (v.total_cost) out << "; best plan cost: " << readable(*v.total_cost) << "\n";
+  if (!v.preference_violations.empty()) {
+    out << "; best plan preferences violated:";
+    for (const auto& [name, count] : v.preference_violations) out << " " << name << "=" << readable(count);
+    out << "\n";
+  }
   out << "; best plan found after: " << readable(best.seconds) << " s by " << best.engine << "\n";
 }
 

@@ -131,6 +131,9 @@ struct GroundTrajectory {
   std::vector<GroundConstraint> constraints;
   std::vector<GroundPreference> goal_preferences;
   std::uint32_t monitors = 0;
+  // Set on a task compiled from PDDL 3 (pddl3_compilation.h): why a search
+  // of it exhausted proves nothing about the task it came from.
+  std::vector<std::string> approximations;
 };
 
 struct GroundAction {

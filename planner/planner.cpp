@@ -9,7 +9,9 @@
 #include "planner/evaluation.h"
 #include "planner/happening_executor.h"
 #include "planner/linear_metric.h"
+#include "planner/pddl3_compilation.h"
 #include "planner/plan_deordering.h"
+#include "planner/preference_search.h"
 #include "planner/search_engine.h"
 #include "planner/search_pipeline.h"
 #include "planner/task_index.h"
@@ -52,6 +54,22 @@ std::optional<std::string> clashing_timed_literals(const GroundTask& task, std::
       }
     }
     g = end;
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> broken_always(const GroundTask& task, const PlanningStart& start) {
+  if (task.pddl3.constraints.empty()) return std::nullopt;
+  ExplicitState state;
+  for (FactId f : start.facts) state.set_fact(f, true);
+  for (NumericVarId v = 0; v < start.values.size(); ++v) state.set_value(v, start.values[v]);
+  for (const GroundConstraint& g : task.pddl3.constraints) {
+    if (g.op != ModalOperator::Always || g.preference) continue;
+    try {
+      if (!holds(g.requirement, state, EvaluationContext{}, 0.0)) return g.text;
+    } catch (const EvaluationError&) {
+      return g.text;
+    }
   }
   return std::nullopt;
 }
@@ -188,6 +206,13 @@ PlannerResult Planner::plan(const std::function<void(const FoundPlan&)>& on_plan
 }
 
 PlannerResult Planner::plan_from(const PlanningStart& start, const std::function<void(const FoundPlan&)>& on_plan) {
+  if (needs_compilation(*task_)) {
+    if (is_initial(*task_, start)) return PreferenceSearch(task_, options_).plan(on_plan);
+    PlannerResult result;
+    result.status = PlannerResult::Status::Unsupported;
+    result.message = "planning from an observed state is not supported for PDDL 3 preferences and constraints yet";
+    return result;
+  }
   return options_.prune_irrelevant ? plan_relevant(start, on_plan) : search_from(start, on_plan);
 }
 
@@ -286,7 +311,7 @@ class PlanChecker {
   PlanChecker(std::shared_ptr<const GroundTask> task, const PlanningStart& start, const TaskIndex& index,
               const SearchStart& search_start, const PlannerOptions& options)
       : task_(std::move(task)), start_(start), index_(index), search_start_(search_start), options_(options),
-        from_initial_(is_initial(*task_, start)) {
+        from_initial_(is_initial(*task_, start) && !options.validate_ground) {
     // The plan validator grounds the task again for itself: only from the start.
     if (from_initial_) validator_.emplace(task_->lifted, ValidatorOptions{options.epsilon, false});
   }
@@ -329,14 +354,6 @@ class PlanChecker {
 // grounded away, timed literals that clash.
 std::optional<PlannerResult> Planner::refused(const TaskIndex& index, const PlanningStart& start) const {
   PlannerResult result;
-  // PDDL 3 is normalised and ground as data for the validator; search cannot
-  // plan with constraints or preferences yet, so it names the first one.
-  if (!task_->lifted->pddl3.empty()) {
-    result.status = PlannerResult::Status::Unsupported;
-    result.message = task_->lifted->pddl3.uses.front() + ": the planner does not support PDDL 3 constraints and "
-                     "preferences yet (alplan validate checks plans for them)";
-    return result;
-  }
   if (index.unsupported()) {
     result.status = PlannerResult::Status::Unsupported;
     result.message = *index.unsupported();
@@ -350,6 +367,12 @@ std::optional<PlannerResult> Planner::refused(const TaskIndex& index, const Plan
   if (const auto clash = clashing_timed_literals(*task_, start.next_timed_literal, options_.epsilon)) {
     result.status = PlannerResult::Status::Unsolvable;
     result.message = "no plan exists: " + *clash;
+    return result;
+  }
+  // The search checks `always` in the states it makes; VAL observes the first too.
+  if (const auto broken = broken_always(*task_, start)) {
+    result.status = PlannerResult::Status::Unsolvable;
+    result.message = "no plan exists: " + *broken + " is false where the plan would start";
     return result;
   }
   return std::nullopt;

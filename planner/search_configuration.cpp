@@ -244,6 +244,7 @@ EngineSpec combination_of(const Call& c) {
     }
     if (!a.call) fail_at(a.at, c.name + " takes engines");
     EngineSpec child = engine_of(*a.call);
+    if (child.kind == K::Preferences) fail_at(a.at, "preferences goes outermost");
     if (e.kind == K::Portfolio && (child.kind == K::Portfolio || child.kind == K::Then || child.kind == K::Anytime)) {
       fail_at(a.at, "a portfolio takes ehc, gbfs and wastar engines");
     }
@@ -265,6 +266,7 @@ EngineSpec anytime_of(const Call& c) {
       if (!e.children.empty() || !a.call) fail_at(a.at, "anytime takes one engine, then options by name");
       e.children.push_back(engine_of(*a.call));
       if (e.children.back().kind == K::Anytime) fail_at(a.at, "anytime inside anytime");
+      if (e.children.back().kind == K::Preferences) fail_at(a.at, "preferences goes outermost");
     } else if (a.key == "weights") {
       if (!a.is_list || a.list.empty()) fail_at(a.at, "weights is a list of numbers, [5, 3, 1]");
       for (double w : a.list) {
@@ -283,6 +285,25 @@ EngineSpec anytime_of(const Call& c) {
     }
   }
   if (e.children.empty()) fail_at(c.at, "anytime takes the engine that finds the first plan");
+  return e;
+}
+
+// preferences(E, rounds=B).
+EngineSpec preferences_of(const Call& c) {
+  EngineSpec e;
+  e.kind = EngineSpec::Kind::Preferences;
+  for (const Call::Argument& a : c.arguments) {
+    if (a.key.empty()) {
+      if (!e.children.empty() || !a.call) fail_at(a.at, "preferences takes one engine, then options by name");
+      e.children.push_back(engine_of(*a.call));
+      if (e.children.back().kind == EngineSpec::Kind::Preferences) fail_at(a.at, "preferences inside preferences");
+    } else if (a.key == "rounds") {
+      e.rounds = boolean(a);
+    } else {
+      fail_at(a.at, "preferences has no option '" + a.key + "'");
+    }
+  }
+  if (e.children.empty()) fail_at(c.at, "preferences takes the engine that plans each round");
   return e;
 }
 
@@ -308,7 +329,9 @@ EngineSpec engine_of(const Call& c) {
   }
   if (c.name == "portfolio" || c.name == "then") return combination_of(c);
   if (c.name == "anytime") return anytime_of(c);
-  fail_at(c.at, "unknown engine '" + c.name + "' (ehc, gbfs, wastar, complete, portfolio, then, anytime, or an alias)");
+  if (c.name == "preferences") return preferences_of(c);
+  fail_at(c.at, "unknown engine '" + c.name +
+                    "' (ehc, gbfs, wastar, complete, portfolio, then, anytime, preferences, or an alias)");
 }
 
 std::string format_number(double x) {
@@ -368,6 +391,9 @@ std::string engine_text(const EngineSpec& e) {
       if (e.deferred) option("deferred=true");
       return "anytime(" + engine_text(e.children.front()) + options + ")";
     }
+    case K::Preferences:
+      if (!e.rounds) option("rounds=false");
+      return "preferences(" + engine_text(e.children.front()) + options + ")";
   }
   return "";
 }
@@ -382,7 +408,9 @@ SearchConfiguration parse_search_configuration(std::string_view expression) {
   return configuration;
 }
 
-std::vector<std::string> alias_names() { return {"default", "anytime", "ehc", "gbfs", "wastar", "complete"}; }
+std::vector<std::string> alias_names() {
+  return {"default", "anytime", "ehc", "gbfs", "wastar", "complete", "pddl3"};
+}
 
 std::string default_expression(const DefaultSearchKnobs& k) {
   const std::string h = heuristic_text(k.heuristic);
@@ -425,6 +453,7 @@ std::string alias_expression(std::string_view name) {
   if (name == "gbfs") return "gbfs(trpg, queue=typed)";
   if (name == "wastar") return "wastar(trpg, w=3)";
   if (name == "complete") return "complete(wastar(trpg, w=3))";
+  if (name == "pddl3") return "preferences(" + default_expression() + ")";
   std::string names;
   for (const std::string& n : alias_names()) names += (names.empty() ? "" : ", ") + n;
   throw SearchConfigurationError("unknown configuration '" + std::string(name) + "' (aliases: " + names + ")");
@@ -433,6 +462,12 @@ std::string alias_expression(std::string_view name) {
 SearchConfiguration alias(std::string_view name) { return parse_search_configuration(alias_expression(name)); }
 
 SearchConfiguration with_anytime(const SearchConfiguration& configuration, double min_weight, std::uint64_t expansions) {
+  if (configuration.engine.kind == EngineSpec::Kind::Preferences) {
+    SearchConfiguration result = configuration;
+    result.engine.children.front() =
+        with_anytime(SearchConfiguration{configuration.engine.children.front()}, min_weight, expansions).engine;
+    return result;
+  }
   const EngineSpec& e = configuration.engine;
   const bool anytime = e.kind == EngineSpec::Kind::Anytime;
   const SearchConfiguration first{anytime ? e.children.front() : e};
@@ -440,6 +475,20 @@ SearchConfiguration with_anytime(const SearchConfiguration& configuration, doubl
       parse_search_configuration(anytime_expression(first.to_string(), min_weight, expansions, anytime && e.metric_order));
   if (anytime) result.engine.deferred = e.deferred;
   return result;
+}
+
+PreferencePlan preference_plan(const SearchConfiguration& configuration) {
+  const bool preferences = configuration.engine.kind == EngineSpec::Kind::Preferences;
+  const EngineSpec& e = preferences ? configuration.engine.children.front() : configuration.engine;
+  PreferencePlan plan;
+  if (e.kind != EngineSpec::Kind::Anytime) {
+    plan.first.engine = e;
+    return plan;
+  }
+  plan.first.engine = e.children.front();
+  plan.rounds = !preferences || configuration.engine.rounds;
+  plan.improve = SearchConfiguration{e};
+  return plan;
 }
 
 SearchConfiguration configuration_named(std::string_view search) {
@@ -468,10 +517,14 @@ SearchConfiguration configuration_from(const SearchShorthands& s) {
     expression = s.search;
   }
   SearchConfiguration configuration = parse_search_configuration(expression);
-  if ((s.anytime || s.search == "anytime") && configuration.engine.kind != EngineSpec::Kind::Anytime) {
-    configuration = parse_search_configuration(
-        anytime_expression(configuration.to_string(), s.anytime_min_weight, s.anytime_expansions, s.metric_order));
-    configuration.engine.deferred = k.deferred;
+  EngineSpec& engine = configuration.engine.kind == EngineSpec::Kind::Preferences
+                           ? configuration.engine.children.front()
+                           : configuration.engine;
+  if ((s.anytime || s.search == "anytime") && engine.kind != EngineSpec::Kind::Anytime) {
+    engine = parse_search_configuration(anytime_expression(SearchConfiguration{engine}.to_string(), s.anytime_min_weight,
+                                                           s.anytime_expansions, s.metric_order))
+                 .engine;
+    engine.deferred = k.deferred;
   }
   return configuration;
 }

@@ -10,6 +10,7 @@
 //                  | portfolio(ENGINE, ..., turns=expansions|evaluations)  leaf engines taking turns
 //                  | then(ENGINE, ENGINE, ...)      phases: the next runs when one gives up
 //                  | anytime(ENGINE, weights=[W, ...], expansions=N, order=steps|metric)
+//                  | preferences(ENGINE, rounds=B)  PDDL 3 (preference_search.h); outermost only
 //   HEURISTIC     := trpg(helpful=B, repetitions=B, balance=B) | blind
 //
 // Leaf engines and portfolios also take `expansions=N` and `time_share=F`
@@ -20,7 +21,10 @@
 // weighted A*, then a complete search), `anytime` (the default, then weighted
 // A* with falling weights under the best plan's value), `gbfs`, `wastar`,
 // `ehc` (the default: EHC and its fallback, as `--search ehc` always meant),
-// and `complete`. planner/README.md documents each component.
+// `complete`, and `pddl3` (`preferences` around the default). On a task
+// without PDDL 3, `preferences(E)` is E; on a task with PDDL 3 any
+// configuration E is planned as `preferences(E)`. planner/README.md
+// documents each component.
 //
 // Which engine may prune what (and so which may prove unsolvability):
 // - `goal_orders` prunes states holding a goal that another still-false
@@ -36,6 +40,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -53,7 +58,7 @@ struct HeuristicSpec {
 };
 
 struct EngineSpec {
-  enum class Kind { Ehc, Gbfs, Wastar, Portfolio, Then, Anytime };
+  enum class Kind { Ehc, Gbfs, Wastar, Portfolio, Then, Anytime, Preferences };
   Kind kind = Kind::Ehc;
   HeuristicSpec heuristic;
   // A phase's budget: past so many expansions (0: no bound), or this share
@@ -71,8 +76,10 @@ struct EngineSpec {
   // portfolio: turns by evaluations (the engine that has evaluated least
   // goes next) instead of one expansion each.
   bool share_evaluations = false;
+  // preferences: in anytime mode, rounds that enforce one more preference each
+  bool rounds = true;
   std::vector<double> weights;           // anytime
-  std::vector<EngineSpec> children;      // portfolio, then; anytime: the first search
+  std::vector<EngineSpec> children;      // portfolio, then; anytime: the first search; preferences: its engine
   bool operator==(const EngineSpec&) const = default;
 };
 
@@ -122,6 +129,17 @@ std::string anytime_expression(const std::string& first, double min_weight = 1.0
 // keeps its first search and takes these weights and cap.
 SearchConfiguration with_anytime(const SearchConfiguration& configuration, double min_weight = 1.0,
                                  std::uint64_t expansions = 0);
+
+// How a PDDL 3 task is planned under a configuration (preference_search.h):
+// `first` finds each round's plan; in anytime mode (the engine, or the one
+// inside `preferences`, is `anytime`) the rounds follow, unless rounds=false,
+// and then `improve`, the anytime engine itself, on the best selection.
+struct PreferencePlan {
+  SearchConfiguration first;
+  bool rounds = false;
+  std::optional<SearchConfiguration> improve;
+};
+PreferencePlan preference_plan(const SearchConfiguration& configuration);
 
 // The flags of `alplan plan` before this language, kept as shorthands (and
 // the Python module's keywords): `search` names ehc, gbfs or wastar (shaped

@@ -33,6 +33,8 @@ void flatten(const EngineSpec& e, std::vector<Phase>& phases) {
       for (const EngineSpec& c : e.children) flatten(c, phases);
       return;
     case K::Portfolio: phases.push_back({e.children, e.share_evaluations, e.expansions, e.time_share}); return;
+    // Without PDDL 3 a preferences engine is its own engine (search_configuration.h).
+    case K::Preferences: flatten(e.children.front(), phases); return;
     case K::Anytime: {
       flatten(e.children.front(), phases);
       for (double w : e.weights) {
@@ -211,6 +213,10 @@ std::string root_proof(const PipelineContext& context) {
 
 std::string proof_limits(const TaskIndex& index) {
   const GroundTask& task = index.task();
+  if (!task.pddl3.approximations.empty()) return task.pddl3.approximations.front();
+  if (!task.pddl3.constraints.empty()) {
+    return "a PDDL 3 `always` constraint is checked in the state between two snaps that VAL may see as one happening";
+  }
   for (const GroundAction& a : task.actions) {
     if (!a.continuous.empty()) return "with continuous change a state holds the values of one schedule among many";
   }

@@ -63,7 +63,8 @@ using SolutionHandler = std::function<std::optional<double>(const Solution&, con
 // Why an exhausted complete search is not a proof for this task ("" when it
 // is): only the shortest and longest durations of an action whose effects
 // or conditions read ?duration are tried; with continuous change a state
-// holds the values of one schedule among many.
+// holds the values of one schedule among many; a PDDL 3 `always` check may
+// refuse a state between two snaps VAL would see as one happening.
 std::string proof_limits(const TaskIndex& index);
 
 PipelineOutcome run_pipeline(const SearchConfiguration& configuration, const PipelineContext& context,

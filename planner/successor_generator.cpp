@@ -133,6 +133,11 @@ bool SuccessorGenerator::invariants_hold(const SearchState& state) const {
     if (r.max_duration == 0.0) continue;
     if (!condition_holds(index_.task().actions[r.action].over_all, state, r.min_duration)) return false;
   }
+  for (const GroundConstraint& g : index_.task().pddl3.constraints) {
+    if (g.op == ModalOperator::Always && !g.preference && !condition_holds(g.requirement, state, std::nan(""))) {
+      return false;
+    }
+  }
   return true;
 }
 

@@ -10,7 +10,8 @@
 //   symmetric branches out of the search); with `self_overlap` it may, as
 //   VAL allows, which a search that must not miss a plan needs (a counter
 //   raised by two overlapping runs of one action). Actions with continuous
-//   effects never overlap themselves (their schedule tracks one run each).
+//   effects never overlap themselves (their schedule tracks one run each);
+// - no state breaks a hard PDDL 3 `always` constraint.
 // Conditions are evaluated exactly (no slack), so plans hold under VAL's
 // slightly more lenient comparisons too.
 #pragma once
@@ -48,7 +49,9 @@ class SuccessorGenerator {
   // The state after a given step, if it is applicable (used for replay).
   std::optional<SearchState> apply(const SearchState& state, const StepRecord& step) const;
 
-  // Whether every running action's over-all condition holds.
+  // Whether every running action's over-all condition holds, and every
+  // hard PDDL 3 `always` constraint (pddl3_compilation.h): a state that
+  // breaks one is in no valid plan, as VAL observes each happening's state.
   bool invariants_hold(const SearchState& state) const;
 
  private:

@@ -118,6 +118,56 @@ class DerivedReads {
   std::vector<std::vector<NumericVarId>> variables_of_;
 };
 
+template <typename T>
+bool intersect(const std::vector<T>& a, const std::vector<T>& b) {
+  auto i = a.begin();
+  auto j = b.begin();
+  while (i != a.end() && j != b.end()) {
+    if (*i < *j) {
+      ++i;
+    } else if (*j < *i) {
+      ++j;
+    } else {
+      return true;
+    }
+  }
+  return false;
+}
+
+// A hard PDDL 3 `always` constraint is read in every state the search makes
+// (successor_generator.h). The partial order keeps only the orders that
+// reads and writes ask for, so a snap that writes what the constraint reads
+// reads all of it: such snaps then keep the order in which the search
+// checked their states, and the schedule cannot interleave them into a state
+// it never checked.
+class AlwaysReads {
+ public:
+  explicit AlwaysReads(const GroundTask& task) {
+    for (const GroundConstraint& g : task.pddl3.constraints) {
+      if (g.op != ModalOperator::Always || g.preference) continue;
+      Footprint f;
+      condition_reads(g.requirement, f);
+      finish(f);
+      if (!f.reads.empty() || !f.reads_values.empty()) reads_.push_back(std::move(f));
+    }
+  }
+  bool empty() const { return reads_.empty(); }
+
+  void expand(Footprint& fp) const {
+    bool grown = false;
+    for (const Footprint& r : reads_) {
+      if (!intersect(fp.writes, r.reads) && !intersect(fp.writes_values, r.reads_values)) continue;
+      fp.reads.insert(fp.reads.end(), r.reads.begin(), r.reads.end());
+      fp.reads_values.insert(fp.reads_values.end(), r.reads_values.begin(), r.reads_values.end());
+      grown = true;
+    }
+    if (grown) finish(fp);
+  }
+
+ private:
+  std::vector<Footprint> reads_;
+};
+
 }  // namespace
 
 std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const GroundTask& t) {
@@ -185,6 +235,11 @@ std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const Gr
       }
     }
   }
+  if (const AlwaysReads always(t); !always.empty()) {
+    for (std::vector<Footprint>* list : {&x.instant, &x.start, &x.end}) {
+      for (Footprint& fp : *list) always.expand(fp);
+    }
+  }
   return tables;
 }
 
@@ -194,7 +249,9 @@ TaskIndex::TaskIndex(std::shared_ptr<const GroundTask> task) : task_(std::move(t
 }
 
 TaskIndex::TaskIndex(std::shared_ptr<const GroundTask> task, const TaskIndex& like) : task_(std::move(task)) {
-  actions_ = same_ground_actions(*task_, like.task()) ? like.actions_ : index_actions(*task_);
+  const bool same = same_ground_actions(*task_, like.task()) &&
+                    task_->pddl3.constraints.size() == like.task().pddl3.constraints.size();
+  actions_ = same ? like.actions_ : index_actions(*task_);
   index_rest();
 }
 
@@ -205,6 +262,9 @@ void TaskIndex::index_rest() {
   unsupported_ = actions_->unsupported;
   til_.resize(t.timed_literals.size());
   for (std::size_t i = 0; i < t.timed_literals.size(); ++i) til_[i].writes.push_back(t.timed_literals[i].fact);
+  if (const AlwaysReads always(t); !always.empty()) {
+    for (Footprint& fp : til_) always.expand(fp);
+  }
   if (!t.lifted->unsupported.empty()) unsupported_ = t.lifted->unsupported.front();
   for (const ActionSchema& schema : t.lifted->actions) {
     if (!schema.unsupported.empty() && !unsupported_) unsupported_ = schema.unsupported;

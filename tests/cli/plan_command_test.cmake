@@ -33,6 +33,16 @@ foreach(order metric steps)
 endforeach()
 expect_run(2 "order" ${ALPLAN} plan --order cost ${data}/mixed-domain.pddl ${data}/mixed-problem.pddl)
 
+# PDDL 3 (issue 30): preferences planned, their violations printed; hard
+# constraints the planner cannot express refused by name and place, exit 2.
+set(pddl3 ${SHARED}/benchmarks/pddl3/ipc-2006)
+expect_run(0 "; best plan preferences violated:" ${ALPLAN} plan --anytime --time-limit 5
+  ${pddl3}/trucks-preferences-complex/domain.pddl ${pddl3}/trucks-preferences-complex/instances/instance-1.pddl)
+expect_run(0 "; plan found" ${ALPLAN} plan --alias pddl3 --time-limit 10
+  ${pddl3}/storage-time-constraints/domain.pddl ${pddl3}/storage-time-constraints/instances/instance-1.pddl)
+expect_run(2 "lamp-at-most-once.pddl:6:5): the planner cannot plan with a hard `at-most-once` constraint"
+  ${ALPLAN} plan ${data}/lamp-pddl3-domain.pddl ${data}/lamp-at-most-once.pddl)
+
 # Limits bound the whole run, whichever phase reaches them: memory running
 # out while loading or grounding is exit 11 with a message, never an abort,
 # and so is a time limit shorter than grounding (driver-log 2014 instance 10

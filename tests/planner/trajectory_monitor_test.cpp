@@ -149,11 +149,11 @@ TEST_CASE("precondition preferences count per occurrence, goal preferences per i
   CHECK(value("", "", "(+ 3 (is-violated nowhere))") == 3);
 }
 
-TEST_CASE("the planner refuses constraints and preferences, naming the first with its place") {
+TEST_CASE("the planner plans constraints and preferences the validator then counts") {
   const test::LoadedTask task = test::load_task_text(kDomain, problem("(sometime (lit a))"));
   const PlannerResult r = Planner(ground(task.normalized), {}).plan();
-  CHECK(r.status == PlannerResult::Status::Unsupported);
   INFO(r.message);
-  // Instantaneous actions are normalised first: smash's precondition.
-  CHECK(r.message.find("domain:18:19: PDDL 3 preference careful") == 0);
+  REQUIRE(r.status == PlannerResult::Status::Solved);
+  CHECK(r.best()->validation.valid);
+  CHECK(r.best()->text.find("(on a)") != std::string::npos);
 }

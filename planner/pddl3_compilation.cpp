@@ -1,0 +1,293 @@
+#include "planner/pddl3_compilation.h"
+
+#include <algorithm>
+
+#include "planner/instantiate.h"
+
+namespace alplan {
+namespace {
+
+void sort_unique(std::vector<FactId>& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+void merge(ConditionSet& into, const ConditionSet& from) {
+  into.positive.insert(into.positive.end(), from.positive.begin(), from.positive.end());
+  into.negative.insert(into.negative.end(), from.negative.begin(), from.negative.end());
+  into.numeric.insert(into.numeric.end(), from.numeric.begin(), from.numeric.end());
+  into.complex.insert(into.complex.end(), from.complex.begin(), from.complex.end());
+  into.mentioned.insert(into.mentioned.end(), from.mentioned.begin(), from.mentioned.end());
+  if (from.never && !into.never) into.never = from.never;
+  sort_unique(into.positive);
+  sort_unique(into.negative);
+  sort_unique(into.mentioned);
+}
+
+// A condition as the disjunction of conditions a witness each can read: a
+// single top-level disjunction splits into its disjuncts, each beside the
+// rest of the condition.
+std::vector<ConditionSet> disjuncts(const ConditionSet& c) {
+  if (c.complex.size() != 1 || c.complex.front().kind != GroundFormula::Kind::Or) return {c};
+  ConditionSet base = c;
+  base.complex.clear();
+  std::vector<ConditionSet> out;
+  for (const GroundFormula& child : c.complex.front().children) {
+    ConditionSet d = base;
+    merge(d, flatten(child));
+    if (!d.never) out.push_back(std::move(d));
+  }
+  if (out.empty()) {
+    base.never = "no disjunct can hold";
+    out.push_back(std::move(base));
+  }
+  return out;
+}
+
+bool compilable(ModalOperator op) {
+  return op == ModalOperator::AtEnd || op == ModalOperator::Always || op == ModalOperator::Sometime ||
+         op == ModalOperator::Within;
+}
+
+bool holds_initially(const GroundTask& task, const ConditionSet& c) {
+  auto in = [&](FactId f) {
+    return std::find(task.initial_facts.begin(), task.initial_facts.end(), f) != task.initial_facts.end();
+  };
+  return std::all_of(c.positive.begin(), c.positive.end(), in) && std::none_of(c.negative.begin(), c.negative.end(), in);
+}
+
+// (is-violated p) of the compiled task: every enforced preference holds and
+// the others are not the search's concern, so the metric reads 0 for each.
+void drop_violation_terms(GroundExpression& e) {
+  if (e.kind == GroundExpression::Kind::IsViolated) {
+    e = GroundExpression{};
+    return;
+  }
+  for (GroundExpression& operand : e.operands) drop_violation_terms(operand);
+}
+
+class Compiler {
+ public:
+  Compiler(const GroundTask& task, const PreferenceSelection& selection)
+      : source_(task), selection_(selection), lifted_(std::make_shared<NormalizedTask>(*task.lifted)),
+        out_(std::make_shared<GroundTask>(task)) {
+    out_->lifted = lifted_;
+    out_->pddl3 = GroundTrajectory{};
+    lifted_->pddl3 = TrajectoryConstraints{};
+    lifted_->pddl3.preferences = task.lifted->pddl3.preferences;
+    if (out_->metric) drop_violation_terms(out_->metric->expression);
+  }
+
+  CompiledTrajectory run() {
+    CompiledTrajectory result;
+    result.first_witness = static_cast<ActionId>(source_.actions.size());
+    for (std::size_t k = 0; k < source_.pddl3.constraints.size(); ++k) {
+      const GroundConstraint& g = source_.pddl3.constraints[k];
+      if (g.preference && !selection_.contains(*g.preference)) continue;
+      if (g.op == ModalOperator::AlwaysWithin && !g.preference) {
+        if (std::optional<std::string> why = watch(k, g)) {
+          result.refused = g.text + ": the planner cannot plan with this hard `always-within` constraint: " + *why;
+          return result;
+        }
+        continue;
+      }
+      if (!compilable(g.op)) {
+        if (!g.preference) {
+          result.refused = g.text + ": the planner cannot plan with a hard `" + to_string(g.op) + "` constraint";
+          return result;
+        }
+        continue;  // never enforced (enforceable() says no)
+      }
+      constraint(k, g);
+    }
+    for (const GroundPreference& p : source_.pddl3.goal_preferences) {
+      if (selection_.contains(p.preference)) merge(out_->goal, p.condition);
+    }
+    action_preferences();
+    sort_unique(out_->goal.positive);
+    result.task = out_;
+    return result;
+  }
+
+ private:
+  void constraint(std::size_t k, const GroundConstraint& g) {
+    switch (g.op) {
+      case ModalOperator::AtEnd: merge(out_->goal, g.requirement); return;
+      case ModalOperator::Always: {
+        GroundConstraint hard = g;
+        hard.preference.reset();
+        hard.monitor = out_->pddl3.monitors++;
+        out_->pddl3.constraints.push_back(std::move(hard));
+        return;
+      }
+      case ModalOperator::Sometime: witness(k, g.requirement, std::nullopt); return;
+      case ModalOperator::Within: witness(k, g.requirement, g.deadline); return;
+      default: return;
+    }
+  }
+
+  // A hard (always-within t φ ψ) with φ one fact f that no timed literal
+  // adds: a durative watch of at most t that adds `pddl3-watching-K` at its
+  // start and needs ψ at its end; each snap that adds f needs a watch
+  // running, and each snap that breaks ψ needs a watch running or f false
+  // (pddl3_compilation.h says why that is enough). The reason it cannot,
+  // otherwise.
+  std::optional<std::string> watch(std::size_t k, const GroundConstraint& g) {
+    const ConditionSet& trigger = g.trigger;
+    if (trigger.positive.size() != 1 || !trigger.negative.empty() || !trigger.numeric.empty() ||
+        !trigger.complex.empty()) {
+      return std::string("its trigger is not a single fact");
+    }
+    const ConditionSet& requirement = g.requirement;
+    if (!requirement.numeric.empty() || !requirement.complex.empty()) {
+      return std::string("its requirement is not a conjunction of literals");
+    }
+    const FactId f = trigger.positive.front();
+    if (holds_initially(source_, trigger)) return std::string("its trigger holds in the initial state");
+    for (const GroundTimedLiteral& til : source_.timed_literals) {
+      if (til.fact == f && til.positive) return std::string("a timed literal adds its trigger");
+    }
+    const std::string id = std::to_string(k);
+    const FactId watching = new_fact("pddl3-watching-" + id);
+    GroundAction w;
+    w.schema = new_schema("pddl3-watch-" + id);
+    w.durative = true;
+    w.at_end = requirement;
+    w.start.add.push_back(watching);
+    w.end.del.push_back(watching);
+    GroundDurationConstraint at_most;
+    at_most.comparison = pddl::Comparison::LessEqual;
+    at_most.value.kind = GroundExpression::Kind::Constant;
+    at_most.value.value = g.deadline;
+    w.duration.push_back(std::move(at_most));
+    // Needs a watch, or the trigger false: breaking ψ where f holds opens a deadline.
+    GroundFormula watched_or_quiet;
+    watched_or_quiet.kind = GroundFormula::Kind::Or;
+    for (const auto& [fact, positive] : {std::pair{watching, true}, std::pair{f, false}}) {
+      GroundFormula literal;
+      literal.kind = GroundFormula::Kind::Literal;
+      literal.fact = fact;
+      literal.positive = positive;
+      watched_or_quiet.children.push_back(literal);
+    }
+    auto breaks = [&](const HappeningEffects& e) {
+      auto in = [](const std::vector<FactId>& v, FactId x) { return std::find(v.begin(), v.end(), x) != v.end(); };
+      for (FactId p : requirement.positive) if (in(e.del, p)) return true;
+      for (FactId n : requirement.negative) if (in(e.add, n)) return true;
+      return false;
+    };
+    auto adds_trigger = [&](const HappeningEffects& e) {
+      if (std::find(e.add.begin(), e.add.end(), f) != e.add.end()) return true;
+      return std::any_of(e.conditional.begin(), e.conditional.end(), [&](const ConditionalEffect& c) {
+        return std::find(c.add.begin(), c.add.end(), f) != c.add.end();
+      });
+    };
+    std::vector<GroundAction>& actions = out_->actions.mutate();
+    for (std::size_t a = 0; a < source_.actions.size(); ++a) {
+      GroundAction& action = actions[a];
+      for (auto [effects, condition] : {std::pair{&action.start, &action.at_start}, std::pair{&action.end, &action.at_end}}) {
+        if (adds_trigger(*effects)) {
+          condition->positive.push_back(watching);
+          sort_unique(condition->positive);
+        } else if (breaks(*effects)) {
+          condition->complex.push_back(watched_or_quiet);
+        }
+      }
+    }
+    out_->actions.push_back(std::move(w));
+    out_->pddl3.approximations.push_back("the hard constraint " + g.text +
+                                         " was planned with watches of at most its span, which may miss plans");
+    return std::nullopt;
+  }
+
+  std::uint32_t new_schema(const std::string& name) {
+    ActionSchema named;
+    named.name = name;
+    while (lifted_->find_action(named.name)) named.name += "'";
+    lifted_->actions.push_back(std::move(named));
+    return static_cast<std::uint32_t>(lifted_->actions.size() - 1);
+  }
+
+  FactId new_fact(const std::string& name) {
+    const auto predicate = static_cast<PredicateId>(lifted_->predicates.size());
+    lifted_->predicates.push_back(PredicateInfo{name, {}, false, true});
+    return out_->facts.intern(GroundKey{predicate, {}});
+  }
+
+  void witness(std::size_t k, const ConditionSet& requirement, std::optional<double> deadline) {
+    const std::string id = std::to_string(k);
+    const FactId done = new_fact("pddl3-done-" + id);
+    out_->goal.positive.push_back(done);
+    std::optional<FactId> open;
+    if (deadline) {
+      open = new_fact("pddl3-open-" + id);
+      out_->initial_facts.push_back(*open);
+      sort_unique(out_->initial_facts);
+      const GroundTimedLiteral close{*deadline, *open, false};
+      auto& tils = out_->timed_literals;
+      tils.insert(std::upper_bound(tils.begin(), tils.end(), close,
+                                   [](const GroundTimedLiteral& a, const GroundTimedLiteral& b) { return a.time < b.time; }),
+                  close);
+    }
+    const std::uint32_t schema = new_schema("pddl3-witness-" + id);
+    for (ConditionSet condition : disjuncts(requirement)) {
+      GroundAction w;
+      w.schema = schema;
+      if (open) condition.positive.push_back(*open);
+      sort_unique(condition.positive);
+      w.at_start = std::move(condition);
+      w.start.add.push_back(done);
+      out_->actions.push_back(std::move(w));
+    }
+  }
+
+  // Enforced precondition preferences join the action's conditions; the
+  // others leave the action (the validator counts them on the plan).
+  void action_preferences() {
+    const bool any = std::any_of(source_.actions.begin(), source_.actions.end(),
+                                 [](const GroundAction& a) { return !a.preferences.empty(); });
+    if (!any) return;
+    for (GroundAction& a : out_->actions.mutate()) {
+      for (const GroundPreference& p : a.preferences) {
+        if (!selection_.contains(p.preference)) continue;
+        if (!a.durative || p.time == pddl::TimeSpecifier::AtStart) {
+          merge(a.at_start, p.condition);
+        } else if (p.time == pddl::TimeSpecifier::AtEnd) {
+          merge(a.at_end, p.condition);
+        } else {
+          merge(a.over_all, p.condition);
+        }
+      }
+      a.preferences.clear();
+    }
+    for (ActionSchema& schema : lifted_->actions) schema.preferences.clear();
+  }
+
+  const GroundTask& source_;
+  const PreferenceSelection& selection_;
+  std::shared_ptr<NormalizedTask> lifted_;
+  std::shared_ptr<GroundTask> out_;
+};
+
+}  // namespace
+
+bool needs_compilation(const GroundTask& task) {
+  if (!task.pddl3.goal_preferences.empty()) return true;
+  for (const GroundConstraint& g : task.pddl3.constraints) {
+    if (g.preference || g.op != ModalOperator::Always) return true;
+  }
+  return std::any_of(task.actions.begin(), task.actions.end(),
+                     [](const GroundAction& a) { return !a.preferences.empty(); });
+}
+
+bool enforceable(const GroundTask& task, std::uint32_t preference) {
+  return std::all_of(task.pddl3.constraints.begin(), task.pddl3.constraints.end(), [&](const GroundConstraint& g) {
+    return g.preference != preference || compilable(g.op);
+  });
+}
+
+CompiledTrajectory compile_trajectory(const GroundTask& task, const PreferenceSelection& selection) {
+  return Compiler(task, selection).run();
+}
+
+}  // namespace alplan

@@ -1,0 +1,208 @@
+#include "planner/preference_search.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <sstream>
+
+#include "planner/evaluation.h"
+#include "planner/explicit_state.h"
+#include "planner/pddl3_compilation.h"
+
+namespace alplan {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// The plan without the compilation's witness steps; the text keeps its
+// other lines as printed (one per step).
+FoundPlan without_witnesses(const FoundPlan& found, const std::set<std::string>& witnesses) {
+  FoundPlan out = found;
+  out.plan.steps.clear();
+  out.text.clear();
+  std::istringstream lines(found.text);
+  std::string line;
+  for (const PlanStep& step : found.plan.steps) {
+    std::getline(lines, line);
+    if (witnesses.count(step.action)) continue;
+    out.plan.steps.push_back(step);
+    out.text += line + "\n";
+  }
+  return out;
+}
+
+// What one preference's violations cost the metric: the metric with the
+// best plan's counts, against the same with this preference's set to 0
+// (the other terms are the same in both and cancel when it is linear).
+double saving(const GroundTask& task, std::vector<double> violations, std::uint32_t preference) {
+  if (!task.metric) return 0.0;
+  EvaluationContext context;
+  context.total_time = 0.0;
+  context.violations = &violations;
+  ExplicitState state;
+  for (NumericVarId v = 0; v < task.initial_values.size(); ++v) state.set_value(v, task.initial_values[v]);
+  try {
+    const double with = evaluate(task.metric->expression, state, context);
+    violations[preference] = 0.0;
+    const double without = evaluate(task.metric->expression, state, context);
+    return task.metric->minimize ? with - without : without - with;
+  } catch (const EvaluationError&) {
+    return 0.0;
+  }
+}
+
+class Rounds {
+ public:
+  Rounds(std::shared_ptr<const GroundTask> task, const PlannerOptions& options,
+         const std::function<void(const FoundPlan&)>& on_plan)
+      : task_(std::move(task)), options_(options), on_plan_(on_plan), began_(Clock::now()),
+        validator_(task_->lifted, ValidatorOptions{options.epsilon, false}) {}
+
+  double remaining() const { return options_.time_limit - since(began_); }
+  PlannerResult& result() { return result_; }
+  const FoundPlan* best() const { return result_.best(); }
+
+  // Plans the task compiled with `selection` by `search` for at most
+  // `seconds`; true when it gave a better plan than the best so far.
+  std::pair<bool, PlannerResult> run(const PreferenceSelection& selection, const SearchConfiguration& search,
+                                     double seconds) {
+    const CompiledTrajectory compiled = compile_trajectory(*task_, selection);
+    PlannerResult inner;
+    if (compiled.refused) {
+      inner.status = PlannerResult::Status::Unsupported;
+      inner.message = *compiled.refused;
+      return {false, inner};
+    }
+    std::set<std::string> witnesses;
+    for (std::size_t s = task_->lifted->actions.size(); s < compiled.task->lifted->actions.size(); ++s) {
+      witnesses.insert(compiled.task->lifted->actions[s].name);
+    }
+    PlannerOptions options = options_;
+    options.search = search;
+    options.time_limit = std::max(0.0, seconds);
+    options.validate_ground = true;
+    bool improved = false;
+    const Clock::time_point round_began = Clock::now();
+    inner = Planner(compiled.task, options).plan([&](const FoundPlan& found) {
+      if (result_.status == PlannerResult::Status::InternalError) return;
+      FoundPlan plan = without_witnesses(found, witnesses);
+      const Clock::time_point validation_began = Clock::now();
+      plan.validation = validator_.validate(read_plan(plan.text, "planner output").plan);
+      result_.times.validation += since(validation_began);
+      plan.seconds = std::chrono::duration<double>(round_began - began_).count() + found.seconds;
+      if (!plan.validation.valid) {
+        result_.status = PlannerResult::Status::InternalError;
+        result_.message = "the planner produced a plan the validator rejects: " +
+                          plan.validation.violation->message() + "\n" + plan.text;
+        return;
+      }
+      if (best() && !better(plan.validation.value, best()->validation.value)) return;
+      improved = true;
+      if (on_plan_) on_plan_(plan);
+      result_.plans.push_back(std::move(plan));
+    });
+    add_statistics(inner);
+    return {improved, inner};
+  }
+
+  bool better(double a, double b) const {
+    const bool minimize = !task_->metric || task_->metric->minimize;
+    return minimize ? a < b - 1e-9 : a > b + 1e-9;
+  }
+
+ private:
+  void add_statistics(const PlannerResult& inner) {
+    SearchStatistics& s = result_.statistics;
+    s.expanded += inner.statistics.expanded;
+    s.evaluated += inner.statistics.evaluated;
+    s.generated += inner.statistics.generated;
+    s.duplicates += inner.statistics.duplicates;
+    s.unschedulable += inner.statistics.unschedulable;
+    s.dead_ends += inner.statistics.dead_ends;
+    result_.times.setup += inner.times.setup;
+    result_.times.search += inner.times.search;
+    if (inner.search_memory) memory_.push_back(inner.search_memory);
+    result_.search_memory = std::make_shared<std::vector<std::shared_ptr<void>>>(memory_);
+  }
+
+  std::shared_ptr<const GroundTask> task_;
+  const PlannerOptions& options_;
+  const std::function<void(const FoundPlan&)>& on_plan_;
+  Clock::time_point began_;
+  PlanValidator validator_;
+  PlannerResult result_;
+  std::vector<std::shared_ptr<void>> memory_;
+};
+
+// The preferences the best plan violates that the compilation can enforce,
+// the costliest first.
+std::vector<std::uint32_t> candidates(const GroundTask& task, const ValidationResult& best,
+                                      const PreferenceSelection& selection) {
+  const std::vector<std::string>& names = task.lifted->pddl3.preferences;
+  std::vector<double> violations(names.size(), 0.0);
+  for (std::uint32_t p = 0; p < names.size(); ++p) {
+    const auto it = best.preference_violations.find(names[p]);
+    if (it != best.preference_violations.end()) violations[p] = it->second;
+  }
+  std::vector<std::pair<double, std::uint32_t>> ranked;
+  for (std::uint32_t p = 0; p < names.size(); ++p) {
+    if (violations[p] <= 0.0 || selection.contains(p) || !enforceable(task, p)) continue;
+    const double gain = saving(task, violations, p);
+    if (gain > 1e-9) ranked.emplace_back(gain, p);
+  }
+  std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<std::uint32_t> out;
+  for (const auto& r : ranked) out.push_back(r.second);
+  return out;
+}
+
+}  // namespace
+
+PreferenceSearch::PreferenceSearch(std::shared_ptr<const GroundTask> task, PlannerOptions options)
+    : task_(std::move(task)), options_(std::move(options)) {}
+
+PlannerResult PreferenceSearch::plan(const std::function<void(const FoundPlan&)>& on_plan) {
+  const PreferencePlan spec = preference_plan(options_.search);
+  Rounds rounds(task_, options_, on_plan);
+  PreferenceSelection selection;
+  selection.enforced.assign(task_->lifted->pddl3.preferences.size(), false);
+  auto [found, first] = rounds.run(selection, spec.first, rounds.remaining());
+  PlannerResult& result = rounds.result();
+  if (result.status == PlannerResult::Status::InternalError) return std::move(result);
+  if (!found) {
+    // Round 0 is the task with its hard constraints exactly (pddl3_compilation.h):
+    // its verdict is the task's.
+    first.statistics = result.statistics;
+    first.times = result.times;
+    first.search_memory = result.search_memory;
+    return first;
+  }
+  if (spec.rounds) {
+    std::vector<std::uint32_t> queue = candidates(*task_, result.best()->validation, selection);
+    std::set<std::uint32_t> tried;
+    while (!queue.empty() && rounds.remaining() > 0.0) {
+      const std::uint32_t p = queue.front();
+      tried.insert(p);
+      PreferenceSelection next = selection;
+      next.enforced[p] = true;
+      // A share of the time left, the anytime phases on the best selection
+      // counted as one more share.
+      const double share = rounds.remaining() / static_cast<double>(queue.size() + 1);
+      if (rounds.run(next, spec.first, share).first) selection = next;
+      if (result.status == PlannerResult::Status::InternalError) return std::move(result);
+      queue.clear();
+      for (std::uint32_t c : candidates(*task_, result.best()->validation, selection)) {
+        if (!tried.count(c)) queue.push_back(c);
+      }
+    }
+  }
+  if (spec.improve && rounds.remaining() > 0.0) rounds.run(selection, *spec.improve, rounds.remaining());
+  if (result.status != PlannerResult::Status::InternalError) result.status = PlannerResult::Status::Solved;
+  return std::move(result);
+}
+
+}  // namespace alplan

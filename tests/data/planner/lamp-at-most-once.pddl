@@ -1,0 +1,6 @@
+(define (problem lamp-once)
+  (:domain lamp)
+  (:init)
+  (:goal (open))
+  (:constraints
+    (at-most-once (lit))))
