@@ -113,7 +113,8 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   CLI::App* p = bench->add_subcommand("planners", "Run our planner on a suite, validate, compare with OPTIC and POPF");
   p->add_option("--suite", planners->suite, "Suite folder, list file, or baseline CSV")->required();
   p->add_option("--out", planners->out, "Folder for runs.csv, runs.json, summary.md and the plans");
-  p->add_option("--baseline", planners->baseline, "Folder with optic_popf_60s.csv and quality_ref.csv");
+  p->add_option("--baseline", planners->baseline,
+                "Folder with optic_popf_60s.csv and quality_ref.csv, or (PDDL 3) optic_60s.csv");
   p->add_option("--time-limit", planners->time_limit, "Seconds per run")->check(CLI::PositiveNumber);
   p->add_option("--memory-limit", planners->memory_limit, "MiB per run")->check(CLI::PositiveNumber);
   p->add_option("--jobs", planners->jobs, "Runs at once (1 for timings comparable to the baseline)")

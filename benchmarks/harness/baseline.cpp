@@ -1,8 +1,11 @@
 #include "benchmarks/harness/baseline.h"
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
+
+#include "pddl_parser/parser.h"
 
 namespace alplan::bench {
 namespace {
@@ -25,11 +28,66 @@ double number_or(const std::string& text, double fallback) {
 }  // namespace
 
 std::string problem_key(const std::string& path) {
-  const std::size_t at = path.find("ipc/ipc-");
-  return at == std::string::npos ? path : path.substr(at);
+  for (const char* prefix : {"pddl3/ipc-", "ipc/ipc-"}) {
+    const std::size_t at = path.find(prefix);
+    if (at != std::string::npos) return path.substr(at);
+  }
+  return path;
 }
 
+double quality_score(double ours, double best, bool maximize) {
+  if (best == 0.0) return ours == 0.0 ? 1.0 : 0.0;
+  if (maximize) return ours / best;
+  return ours > 0.0 ? best / ours : 1.0;
+}
+
+namespace {
+
+bool metric_maximized(const std::string& problem_file) {
+  std::string text;
+  std::vector<pddl::Diagnostic> diagnostics;
+  if (!pddl::read_file(problem_file, text, diagnostics)) return false;
+  const pddl::ProblemParseResult parsed = pddl::parse_problem(text, problem_file);
+  return parsed.ast && parsed.ast->metric && !parsed.ast->metric->minimize;
+}
+
+// optic_60s.csv: domain,problem,first_valid,first_invalid,first_value,
+// first_empty_plan,first_s,anytime_valid,anytime_invalid,anytime_value,anytime_s
+// with the domain relative to the pddl3 folder, the folder's parent.
+Baseline load_pddl3(const std::string& folder, std::ifstream& csv) {
+  Baseline baseline;
+  baseline.planners = {"optic-first", "optic-anytime", "optic-either"};
+  baseline.titles = {"OPTIC first", "OPTIC anytime", "OPTIC either"};
+  std::string line;
+  std::getline(csv, line);
+  while (std::getline(csv, line)) {
+    const std::vector<std::string> c = cells_of(line);
+    if (c.size() < 11) continue;
+    const std::string file = folder + "/../" + c[0] + "/instances/instance-" + c[1] + ".pddl";
+    const std::string key = problem_key(std::filesystem::weakly_canonical(file).string());
+    const bool maximize = metric_maximized(file);
+    baseline.maximize[key] = maximize;
+    auto run_of = [&](std::size_t valid, std::size_t value, std::size_t seconds) {
+      ReferenceRun r;
+      r.valid = c[valid] == "1";
+      r.status = r.valid ? "solved" : c[valid + 1] == "1" ? "invalid" : "unsolved";
+      r.value = number_or(c[value], 0.0);
+      r.seconds = number_or(c[seconds], 0.0);
+      return r;
+    };
+    const ReferenceRun first = run_of(2, 4, 6), anytime = run_of(7, 9, 10);
+    ReferenceRun either = first.valid ? first : anytime;
+    if (first.valid && anytime.valid && baseline.better(key, anytime.value, first.value)) either.value = anytime.value;
+    baseline.runs[key] = {{"optic-first", first}, {"optic-anytime", anytime}, {"optic-either", either}};
+    if (either.valid) baseline.best[key] = either.value;
+  }
+  return baseline;
+}
+
+}  // namespace
+
 Baseline Baseline::load(const std::string& folder) {
+  if (std::ifstream pddl3(folder + "/optic_60s.csv"); pddl3) return load_pddl3(folder, pddl3);
   Baseline baseline;
   std::ifstream runs(folder + "/optic_popf_60s.csv");
   std::string line;

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <mutex>
 #include <ostream>
 #include <sstream>
@@ -191,6 +192,12 @@ struct Scores {
   double quality = 0, time = 0;
 };
 
+struct MetricSums {
+  int both = 0;
+  double ours = 0, reference = 0;
+  bool maximize = false;
+};
+
 int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions& options, std::ostream& out);
 
 }  // namespace
@@ -217,9 +224,15 @@ int run_planner_bench(const PlannerBenchOptions& options, std::ostream& out, std
 namespace {
 
 // Coverage, quality and time per domain and in total, ours beside the references'.
-Table summary_table(const std::map<std::string, std::map<std::string, Scores>>& scores) {
-  const std::vector<std::string> planners{"ours", "optic", "popf"};
-  Table summary({"domain", "coverage ours", "OPTIC", "POPF", "quality ours", "OPTIC", "POPF", "time ours", "OPTIC", "POPF"});
+Table summary_table(const std::map<std::string, std::map<std::string, Scores>>& scores, const Baseline& baseline) {
+  std::vector<std::string> planners{"ours"};
+  planners.insert(planners.end(), baseline.planners.begin(), baseline.planners.end());
+  std::vector<std::string> columns{"domain"};
+  for (const char* measure : {"coverage", "quality", "time"}) {
+    columns.push_back(std::string(measure) + " ours");
+    columns.insert(columns.end(), baseline.titles.begin(), baseline.titles.end());
+  }
+  Table summary(columns);
   std::map<std::string, Scores> total;
   for (const auto& [domain, by_planner] : scores) {
     std::vector<std::string> row{domain};
@@ -249,10 +262,23 @@ Table summary_table(const std::map<std::string, std::map<std::string, Scores>>& 
   return summary;
 }
 
+// Per domain, the summed metric of ours and of the reference's best on the
+// problems both solved: a direct comparison where quality scores hide how far
+// apart two values are.
+Table metric_table(const std::map<std::string, MetricSums>& sums) {
+  Table table({"domain", "both solved", "metric", "ours", "best reference"});
+  for (const auto& [domain, m] : sums) {
+    table.add({domain, std::to_string(m.both), m.maximize ? "maximised" : "minimised", fixed(m.ours, 3),
+               fixed(m.reference, 3)});
+  }
+  return table;
+}
+
 int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions& options, std::ostream& out) {
   const Baseline baseline = options.baseline.empty() ? Baseline{} : Baseline::load(options.baseline);
   // Scores per domain, ours and the references' on the same problems.
   std::map<std::string, std::map<std::string, Scores>> scores;
+  std::map<std::string, MetricSums> sums;
   int invalid = 0;
   nlohmann::json rows = nlohmann::json::array();
   Table runs_table({"domain", "problem", "status", "first plan s", "wall s", "peak MiB", "makespan", "value"});
@@ -262,30 +288,43 @@ int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions
     const bool in_baseline = refs != baseline.runs.end();
     invalid += run.status == "invalid";
     // The reference value: the best any compared planner reached.
-    double reference = std::numeric_limits<double>::infinity();
-    if (auto b = baseline.best.find(key); b != baseline.best.end() && b->second > 0) reference = b->second;
-    if (run.status == "solved") reference = std::min(reference, run.value);
+    const bool maximize = baseline.maximized(key);
+    std::optional<double> reference;
+    auto consider = [&](double value) {
+      if (!reference || baseline.better(key, value, *reference)) reference = value;
+    };
+    if (auto b = baseline.best.find(key); b != baseline.best.end()) consider(b->second);
+    if (run.status == "solved") consider(run.value);
     if (in_baseline) {
       for (const auto& [planner, r] : refs->second) {
-        if (r.valid) reference = std::min(reference, r.value);
+        if (r.valid) consider(r.value);
       }
     }
     Scores& ours = scores[run.problem.domain]["ours"];
     ++ours.attempted;
     if (run.status == "solved") {
       ++ours.solved;
-      ours.quality += run.value > 0 ? reference / run.value : 1.0;
+      ours.quality += quality_score(run.value, *reference, maximize);
       ours.time += time_score(run.first_plan, options.limits.seconds);
     }
     if (in_baseline) {
-      for (const std::string& planner : {std::string("optic"), std::string("popf")}) {
+      for (const std::string& planner : baseline.planners) {
         Scores& s = scores[run.problem.domain][planner];
         ++s.attempted;
         auto r = refs->second.find(planner);
         if (r == refs->second.end() || !r->second.valid) continue;
         ++s.solved;
-        s.quality += r->second.value > 0 ? reference / r->second.value : 1.0;
+        s.quality += quality_score(r->second.value, *reference, maximize);
         s.time += time_score(r->second.seconds, options.limits.seconds);
+      }
+      // The metric where we and the best reference both have a valid plan.
+      const auto best_reference = baseline.best.find(key);
+      if (run.status == "solved" && best_reference != baseline.best.end()) {
+        MetricSums& m = sums[run.problem.domain];
+        ++m.both;
+        m.ours += run.value;
+        m.reference += best_reference->second;
+        m.maximize = maximize;
       }
     }
     runs_table.add({run.problem.domain, std::filesystem::path(run.problem.problem_file).filename().string(),
@@ -295,11 +334,16 @@ int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions
     rows.push_back({{"domain", run.problem.domain}, {"problem", key}, {"status", run.status},
                     {"first_plan_seconds", run.first_plan}, {"wall_seconds", run.seconds},
                     {"max_rss_kib", run.max_rss_kib}, {"makespan", run.makespan}, {"value", run.value},
-                    {"reference", std::isfinite(reference) ? nlohmann::json(reference) : nlohmann::json()},
+                    {"reference", reference ? nlohmann::json(*reference) : nlohmann::json()},
                     {"message", run.message}});
   }
-  const Table summary = summary_table(scores);
+  const Table summary = summary_table(scores, baseline);
   summary.print(out);
+  const Table metric = metric_table(sums);
+  if (!sums.empty()) {
+    out << "\n";
+    metric.print(out);
+  }
   out << "\ninvalid plans: " << invalid << "\n";
   // How well the planner keeps its limit: the process's wall time beyond it
   // (the runner kills at the limit + 5 s, so no overrun shows more).
@@ -316,6 +360,10 @@ int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions
     summary.print_markdown(md);
     std::ofstream scsv(options.out_dir + "/summary.csv");
     summary.write_csv(scsv);
+    if (!sums.empty()) {
+      std::ofstream mmd(options.out_dir + "/metric.md");
+      metric.print_markdown(mmd);
+    }
     std::ofstream json(options.out_dir + "/runs.json");
     json << nlohmann::json{{"time_limit", options.limits.seconds}, {"memory_mib", options.limits.memory_mib},
                            {"anytime", options.anytime}, {"search", options.search},

@@ -2,7 +2,7 @@
 // process per run under the time and memory limits (as the reference runs
 // in shared/benchmarks/baseline were made), validates every plan again with
 // `alplan validate`, and reports coverage, IPC quality score and IPC time
-// score per domain beside OPTIC's and POPF's baseline rows.
+// score per domain beside the reference planners of a baseline (baseline.h).
 //
 // Scores (IPC 2008-2014 temporal tracks): quality = reference / ours, the
 // reference being the best value any compared planner reached (so at most
@@ -22,7 +22,7 @@ struct PlannerBenchOptions {
   std::string suite;
   std::string out_dir;
   std::string alplan;      // executable: `alplan plan --json`, `alplan validate`
-  std::string baseline;    // folder with optic_popf_60s.csv and quality_ref.csv ("" for none)
+  std::string baseline;    // a baseline folder (baseline.h), "" for none
   RunLimits limits;
   int jobs = 1;
   bool progress_bar = false;  // a bar with rate and ETA on the progress stream (a terminal)
