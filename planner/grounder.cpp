@@ -75,7 +75,7 @@ void instantiate_state(const NormalizedTask& lifted, Instantiator& instantiate, 
   if (lifted.metric) {
     task.metric = GroundMetric{lifted.metric->minimize, instantiate.expression(lifted.metric->expression, {})};
   }
-  // PDDL 3 as data; the planner refuses such tasks before searching.
+  // PDDL 3 as data: the validator evaluates it, the planner compiles it (pddl3_compilation.h).
   if (!lifted.pddl3.empty()) task.pddl3 = ground_trajectory(lifted, instantiate);
 }
 

@@ -1,9 +1,9 @@
 // PDDL 3 (Gerevini & Long 2005, "Plan constraints and preferences in PDDL3"),
 // normalised: the trajectory constraints of the domain and problem, the
 // preferences of the goal, and the names `is-violated` counts. Plain data;
-// action precondition preferences live in their ActionSchema. The planner
-// cannot plan such tasks yet and refuses them (planner.cpp, `refused`); the
-// validator evaluates them (trajectory_monitor.h).
+// action precondition preferences live in their ActionSchema. The validator
+// evaluates them (trajectory_monitor.h); the planner compiles them away
+// (pddl3_compilation.h) and treats preferences as costs (preference_search.h).
 #pragma once
 
 #include <cstdint>
