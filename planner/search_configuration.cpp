@@ -311,7 +311,7 @@ EngineSpec engine_of(const Call& c) {
   using K = EngineSpec::Kind;
   // A bare alias that is not an engine's name stands for its expression
   // (`gbfs` alone is the engine with its defaults; `--alias gbfs` the alias).
-  if (c.arguments.empty() && (c.name == "default" || c.name == "anytime" || c.name == "complete")) {
+  if (c.arguments.empty() && (c.name == "default" || c.name == "anytime" || c.name == "complete" || c.name == "pddl3")) {
     return parse_search_configuration(alias_expression(c.name)).engine;
   }
   if (c.name == "ehc") return leaf_of(c, K::Ehc);

@@ -128,7 +128,7 @@ TEST_CASE("a hard always-within is met by a watch of at most its span around the
   CHECK(missed.status != PlannerResult::Status::InternalError);
 }
 
-TEST_CASE("the first plan ignores preferences; anytime rounds enforce those that pay") {
+TEST_CASE("the first plan ignores preferences, anytime rounds enforce those that pay") {
   // Being warm saves 10; being lit at the end saves 1 but costs a plan that
   // leaves the lamp on, which the cheap preference against it (weight 5) forbids.
   const std::string p = problem("(and (open) (preference w (warm)))",
@@ -215,4 +215,11 @@ TEST_CASE("the preferences engine reads, prints and goes outermost only") {
   CHECK(p.rounds);
   CHECK(p.improve);
   CHECK_FALSE(preference_plan(alias("pddl3")).rounds);
+  // As users name it: `--alias pddl3` and `--search pddl3 --anytime`.
+  SearchShorthands named;
+  named.search = "pddl3";
+  named.anytime = true;
+  const SearchConfiguration from_flags = configuration_from(named);
+  CHECK(from_flags.engine.kind == EngineSpec::Kind::Preferences);
+  CHECK(from_flags.engine.children.front().kind == EngineSpec::Kind::Anytime);
 }
