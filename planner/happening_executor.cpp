@@ -70,6 +70,15 @@ std::string HappeningExecutor::explain(const EvaluationError& error) const {
   return "the value of " + task_.variable_name(error.variable()) + " is undefined";
 }
 
+Violation HappeningExecutor::undefined_value(const EvaluationError& error, double time, const std::string& what) const {
+  Violation v;
+  v.kind = Violation::Kind::UndefinedValue;
+  v.time = time;
+  v.action = what;
+  v.condition = explain(error);
+  return v;
+}
+
 HappeningExecutor::HappeningExecutor(const GroundTask& task, const ValidatorOptions& options)
     : task_(task), epsilon_(options.epsilon), val_total_time_(options.val_total_time), numeric_slack_(options.numeric_slack) {}
 
@@ -383,12 +392,7 @@ std::optional<Violation> HappeningExecutor::step() {
     try {
       return trajectory_->observe(state_, time_);
     } catch (const EvaluationError& error) {
-      Violation v;
-      v.kind = Violation::Kind::UndefinedValue;
-      v.time = time_;
-      v.action = "the PDDL 3 constraints";
-      v.condition = explain(error);
-      return v;
+      return undefined_value(error, time_, "the PDDL 3 constraints");
     }
   };
   if (next_ == 0 && trajectory_->active()) {
@@ -478,12 +482,7 @@ std::optional<Violation> HappeningExecutor::finish_trajectory(ValidationResult& 
     // An empty plan has no happening: its initial state is its final state.
     if (auto v = trajectory_->finish(state_, time_)) return v;
   } catch (const EvaluationError& error) {
-    Violation v;
-    v.kind = Violation::Kind::UndefinedValue;
-    v.time = time_;
-    v.action = "the PDDL 3 constraints or preferences";
-    v.condition = explain(error);
-    return v;
+    return undefined_value(error, time_, "the PDDL 3 constraints or preferences");
   }
   const std::vector<std::string>& names = task_.lifted->pddl3.preferences;
   for (std::size_t p = 0; p < names.size(); ++p) result.preference_violations[names[p]] = trajectory_->violations()[p];

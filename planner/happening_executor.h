@@ -100,6 +100,8 @@ class HappeningExecutor {
   const GroundAction* action_of(const Event& e) const;
   Violation violation(Violation::Kind kind, const Event& e) const;
   std::string explain(const EvaluationError& error) const;
+  // An UndefinedValue violation of `what` at `time`, explained.
+  Violation undefined_value(const EvaluationError& error, double time, const std::string& what) const;
 
   const GroundTask& task_;
   double epsilon_;

@@ -116,13 +116,7 @@ class Rounds {
 
  private:
   void add_statistics(const PlannerResult& inner) {
-    SearchStatistics& s = result_.statistics;
-    s.expanded += inner.statistics.expanded;
-    s.evaluated += inner.statistics.evaluated;
-    s.generated += inner.statistics.generated;
-    s.duplicates += inner.statistics.duplicates;
-    s.unschedulable += inner.statistics.unschedulable;
-    s.dead_ends += inner.statistics.dead_ends;
+    result_.statistics += inner.statistics;
     result_.times.setup += inner.times.setup;
     result_.times.search += inner.times.search;
     if (inner.search_memory) memory_.push_back(inner.search_memory);

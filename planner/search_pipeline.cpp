@@ -68,15 +68,6 @@ struct StoppedSearch {
   std::vector<std::unique_ptr<SearchEngine>> engines;
 };
 
-void add(SearchStatistics& into, const SearchStatistics& s) {
-  into.expanded += s.expanded;
-  into.evaluated += s.evaluated;
-  into.generated += s.generated;
-  into.duplicates += s.duplicates;
-  into.unschedulable += s.unschedulable;
-  into.dead_ends += s.dead_ends;
-}
-
 std::unique_ptr<SearchEngine> make_engine(const EngineSpec& spec, SearchSpace& space, const PipelineContext& context,
                                           const NodeBound& bound) {
   const bool metric_order = spec.kind == EngineSpec::Kind::Wastar && spec.metric_order && context.metric;
@@ -174,7 +165,7 @@ PhaseOutcome run_phase(const Phase& phase, const PipelineContext& context, const
   }
   if (left == 0) outcome.status = SearchStatus::Exhausted;
   outcome.root_dead_end = spaces.front()->node(spaces.front()->root()).h == std::numeric_limits<double>::infinity();
-  for (const auto& engine : engines) add(outcome.statistics, engine->statistics());
+  for (const auto& engine : engines) outcome.statistics += engine->statistics();
   if (stopped) outcome.memory = std::make_shared<StoppedSearch>(StoppedSearch{std::move(spaces), std::move(engines)});
   return outcome;
 }
@@ -241,7 +232,7 @@ PipelineOutcome run_pipeline(const SearchConfiguration& configuration, const Pip
     if (found && !phase.improving) continue;  // the first plan is in; anytime phases go on
     const NodeBound bound = found ? bound_by(context, best_value) : NodeBound{};
     const PhaseOutcome outcome = run_phase(phase, context, bound);
-    add(result.statistics, outcome.statistics);
+    result.statistics += outcome.statistics;
     if (outcome.budget_spent) continue;
     if (outcome.status == SearchStatus::InProgress) {
       result.memory = outcome.memory;

@@ -59,6 +59,16 @@ struct SearchNode {
 
 struct SearchStatistics {
   std::uint64_t expanded = 0, evaluated = 0, generated = 0, duplicates = 0, unschedulable = 0, dead_ends = 0;
+
+  SearchStatistics& operator+=(const SearchStatistics& s) {
+    expanded += s.expanded;
+    evaluated += s.evaluated;
+    generated += s.generated;
+    duplicates += s.duplicates;
+    unschedulable += s.unschedulable;
+    dead_ends += s.dead_ends;
+    return *this;
+  }
 };
 
 // The start of a search: the initial state of the task, or an observed state

@@ -8,21 +8,12 @@
 #include "pddl_parser/parser.h"
 #include "pddl_parser/writer.h"
 #include "benchmarks/harness/suite.h"
+#include "tests/support/diagnostics.h"
 #include "tests/support/test_paths.h"
 
 using namespace alplan::pddl;
 
-namespace {
-
-std::string errors_of(const std::vector<Diagnostic>& diagnostics) {
-  std::string all;
-  for (const Diagnostic& d : diagnostics) {
-    if (d.severity == Severity::Error) all += d.to_string() + "\n";
-  }
-  return all;
-}
-
-}  // namespace
+using alplan::test::errors_of;
 
 TEST_CASE("every IPC file parses and round-trips through the writer") {
   const std::vector<std::string> files =

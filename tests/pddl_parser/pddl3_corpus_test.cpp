@@ -10,21 +10,12 @@
 #include "pddl_parser/checker.h"
 #include "pddl_parser/parser.h"
 #include "pddl_parser/writer.h"
+#include "tests/support/diagnostics.h"
 #include "tests/support/test_paths.h"
 
 using namespace alplan::pddl;
 
-namespace {
-
-std::string errors_of(const std::vector<Diagnostic>& diagnostics) {
-  std::string all;
-  for (const Diagnostic& d : diagnostics) {
-    if (d.severity == Severity::Error) all += d.to_string() + "\n";
-  }
-  return all;
-}
-
-}  // namespace
+using alplan::test::errors_of;
 
 TEST_CASE("every PDDL 3 benchmark file parses, round-trips and checks") {
   const std::string root = alplan::test::benchmarks_dir() + "/pddl3/ipc-2006";
