@@ -9,6 +9,7 @@
 #include "pddl_parser/writer.h"
 #include "benchmarks/harness/suite.h"
 #include "tests/support/diagnostics.h"
+#include "tests/support/round_trip.h"
 #include "tests/support/test_paths.h"
 
 using namespace alplan::pddl;
@@ -25,21 +26,10 @@ TEST_CASE("every IPC file parses and round-trips through the writer") {
     INFO(file);
     if (detect_file_kind(text) == FileKind::Problem) {
       ++problems;
-      const ProblemParseResult first = parse_problem(text, file);
-      REQUIRE(errors_of(first.diagnostics).empty());
-      REQUIRE(first.ast);
-      const ProblemParseResult second = parse_problem(write_problem(*first.ast), file + " (written)");
-      REQUIRE(second.ok());
-      CHECK(*second.ast == *first.ast);
+      alplan::test::require_problem_round_trip(text, file);
     } else {
       REQUIRE(detect_file_kind(text) == FileKind::Domain);
-      const DomainParseResult first = parse_domain(text, file);
-      REQUIRE(errors_of(first.diagnostics).empty());
-      REQUIRE(first.ast);
-      CHECK(errors_of(check_domain(*first.ast, file)).empty());
-      const DomainParseResult second = parse_domain(write_domain(*first.ast), file + " (written)");
-      REQUIRE(second.ok());
-      CHECK(*second.ast == *first.ast);
+      alplan::test::require_domain_round_trip(text, file);
     }
   }
   CHECK(problems == 996);

@@ -11,6 +11,7 @@
 #include "pddl_parser/parser.h"
 #include "pddl_parser/writer.h"
 #include "tests/support/diagnostics.h"
+#include "tests/support/round_trip.h"
 #include "tests/support/test_paths.h"
 
 using namespace alplan::pddl;
@@ -27,23 +28,12 @@ TEST_CASE("every PDDL 3 benchmark file parses, round-trips and checks") {
     const std::string text = alplan::test::read_text(file);
     INFO(file);
     if (detect_file_kind(text) == FileKind::Domain) {
-      const DomainParseResult first = parse_domain(text, file);
-      REQUIRE(errors_of(first.diagnostics).empty());
-      REQUIRE(first.ast);
-      CHECK(errors_of(check_domain(*first.ast, file)).empty());
-      const DomainParseResult second = parse_domain(write_domain(*first.ast), file + " (written)");
-      REQUIRE(second.ok());
-      CHECK(*second.ast == *first.ast);
+      alplan::test::require_domain_round_trip(text, file);
       continue;
     }
     REQUIRE(detect_file_kind(text) == FileKind::Problem);
     ++problems;
-    const ProblemParseResult first = parse_problem(text, file);
-    REQUIRE(errors_of(first.diagnostics).empty());
-    REQUIRE(first.ast);
-    const ProblemParseResult second = parse_problem(write_problem(*first.ast), file + " (written)");
-    REQUIRE(second.ok());
-    CHECK(*second.ast == *first.ast);
+    const std::shared_ptr<const Problem> problem = alplan::test::require_problem_round_trip(text, file);
     // instances/instance-N.pddl beside domain.pddl
     const std::string domain_file = file.substr(0, file.rfind("/instances/")) + "/domain.pddl";
     auto& domain = domains[domain_file];
@@ -52,7 +42,7 @@ TEST_CASE("every PDDL 3 benchmark file parses, round-trips and checks") {
       REQUIRE(d.ok());
       domain = d.ast;
     }
-    CHECK(errors_of(check_problem(*domain, *first.ast, file)).empty());
+    CHECK(errors_of(check_problem(*domain, *problem, file)).empty());
   }
   CHECK(problems == 45);
   CHECK(domains.size() == 9);
