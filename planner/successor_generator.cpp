@@ -115,6 +115,9 @@ SuccessorGenerator::SuccessorGenerator(const TaskIndex& index, bool self_overlap
   const auto& actions = index.task().actions;
   constant_start_window_.reserve(actions.size());
   for (const GroundAction& a : actions) constant_start_window_.push_back(constant_duration_window(a, Moment::Start));
+  for (const GroundConstraint& g : index.task().pddl3.constraints) {
+    if (g.op == ModalOperator::Always && !g.preference && !g.requirement.empty()) always_.push_back(&g.requirement);
+  }
 }
 
 bool SuccessorGenerator::attach_continuous(const GroundAction& action, const SearchState& before, double duration,
@@ -133,10 +136,8 @@ bool SuccessorGenerator::invariants_hold(const SearchState& state) const {
     if (r.max_duration == 0.0) continue;
     if (!condition_holds(index_.task().actions[r.action].over_all, state, r.min_duration)) return false;
   }
-  for (const GroundConstraint& g : index_.task().pddl3.constraints) {
-    if (g.op == ModalOperator::Always && !g.preference && !condition_holds(g.requirement, state, std::nan(""))) {
-      return false;
-    }
+  for (const ConditionSet* always : always_) {
+    if (!condition_holds(*always, state, std::nan(""))) return false;
   }
   return true;
 }

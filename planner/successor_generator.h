@@ -74,6 +74,10 @@ class SuccessorGenerator {
   // Per action, its start's duration window when it is the same in every
   // state (constant_duration_window), read instead of evaluated.
   std::vector<std::optional<DurationWindow>> constant_start_window_;
+  // The requirements of the hard `always` constraints that simplification
+  // did not reduce to true (storage's compatible pairs, for one), checked in
+  // every state made.
+  std::vector<const ConditionSet*> always_;
   // The continuous parts of the steps generated so far, which the steps
   // point to. Only grows, and only with continuous change; generating is
   // otherwise free of side effects.
