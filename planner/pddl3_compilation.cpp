@@ -1,6 +1,7 @@
 #include "planner/pddl3_compilation.h"
 
 #include <algorithm>
+#include <functional>
 
 #include "planner/instantiate.h"
 
@@ -80,7 +81,6 @@ class Compiler {
 
   CompiledTrajectory run() {
     CompiledTrajectory result;
-    result.first_witness = static_cast<ActionId>(source_.actions.size());
     for (std::size_t k = 0; k < source_.pddl3.constraints.size(); ++k) {
       const GroundConstraint& g = source_.pddl3.constraints[k];
       if (g.preference && !selection_.contains(*g.preference)) continue;
@@ -126,8 +126,8 @@ class Compiler {
     }
   }
 
-  // A hard (always-within t φ ψ) with φ one fact f that no timed literal
-  // adds: a durative watch of at most t that adds `pddl3-watching-K` at its
+  // A hard (always-within t φ ψ) with φ one fact f, in the form the
+  // header names: a durative watch of at most t that adds `pddl3-watching-K` at its
   // start and needs ψ at its end; each snap that adds f needs a watch
   // running, and each snap that breaks ψ needs a watch running or f false
   // (pddl3_compilation.h says why that is enough). The reason it cannot,
@@ -144,8 +144,15 @@ class Compiler {
     }
     const FactId f = trigger.positive.front();
     if (holds_initially(source_, trigger)) return std::string("its trigger holds in the initial state");
+    // What ψ's literals lose by: their facts deleted where positive, added where negative.
+    auto breaks_requirement = [&](FactId fact, bool added) {
+      const std::vector<FactId>& lost = added ? requirement.negative : requirement.positive;
+      return std::find(lost.begin(), lost.end(), fact) != lost.end();
+    };
     for (const GroundTimedLiteral& til : source_.timed_literals) {
       if (til.fact == f && til.positive) return std::string("a timed literal adds its trigger");
+      // A timed literal takes no condition, so it cannot be made to wait for a watch.
+      if (breaks_requirement(til.fact, til.positive)) return std::string("a timed literal breaks its requirement");
     }
     const std::string id = std::to_string(k);
     const FactId watching = new_fact("pddl3-watching-" + id);
@@ -170,17 +177,20 @@ class Compiler {
       literal.positive = positive;
       watched_or_quiet.children.push_back(literal);
     }
-    auto breaks = [&](const HappeningEffects& e) {
-      auto in = [](const std::vector<FactId>& v, FactId x) { return std::find(v.begin(), v.end(), x) != v.end(); };
-      for (FactId p : requirement.positive) if (in(e.del, p)) return true;
-      for (FactId n : requirement.negative) if (in(e.add, n)) return true;
-      return false;
+    // Conditional effects count as if their condition held: a watch more
+    // than needed costs plans, one fewer would cost validity.
+    auto any_write = [](const HappeningEffects& e, const std::function<bool(FactId, bool)>& test) {
+      auto in = [&](const std::vector<FactId>& add, const std::vector<FactId>& del) {
+        return std::any_of(add.begin(), add.end(), [&](FactId x) { return test(x, true); }) ||
+               std::any_of(del.begin(), del.end(), [&](FactId x) { return test(x, false); });
+      };
+      return in(e.add, e.del) ||
+             std::any_of(e.conditional.begin(), e.conditional.end(),
+                         [&](const ConditionalEffect& c) { return in(c.add, c.del); });
     };
+    auto breaks = [&](const HappeningEffects& e) { return any_write(e, breaks_requirement); };
     auto adds_trigger = [&](const HappeningEffects& e) {
-      if (std::find(e.add.begin(), e.add.end(), f) != e.add.end()) return true;
-      return std::any_of(e.conditional.begin(), e.conditional.end(), [&](const ConditionalEffect& c) {
-        return std::find(c.add.begin(), c.add.end(), f) != c.add.end();
-      });
+      return any_write(e, [&](FactId x, bool added) { return added && x == f; });
     };
     std::vector<GroundAction>& actions = out_->actions.mutate();
     for (std::size_t a = 0; a < source_.actions.size(); ++a) {

@@ -19,11 +19,12 @@
 // - (always φ): kept as a hard constraint of the compiled task, which the
 //   successor generator checks in every state it makes (successor_generator.h).
 // - a precondition preference: its condition joins the action's condition.
-// - a hard (always-within t φ ψ), φ a single fact f no timed literal adds
-//   and false at first, ψ a conjunction of literals: a durative watch
-//   `pddl3-watch-K` of at most t adds `pddl3-watching-K` at its start and
-//   needs ψ at its end; a snap that adds f needs a watch running, and a snap
-//   that breaks ψ needs a watch running or f false. Then every state with f
+// - a hard (always-within t φ ψ), φ a single fact f false at first, ψ a
+//   conjunction of literals, no timed literal adding f or breaking ψ: a
+//   durative watch `pddl3-watch-K` of at most t adds `pddl3-watching-K` at
+//   its start and needs ψ at its end; a snap that adds f needs a watch
+//   running, and a snap that breaks ψ needs a watch running or f false
+//   (conditional effects counted as if their condition held). Then every state with f
 //   and not ψ has, since f was last added, a watch that ends within t of
 //   that addition with ψ in the state before its end, at or after that
 //   state: the deadline VAL opens there is met. A plan whose ψ comes in the
@@ -61,9 +62,9 @@ struct PreferenceSelection {
 };
 
 struct CompiledTrajectory {
+  // Its lifted task names the added actions (witnesses, watches) after the
+  // original schemas: steps of those are not steps of the original task.
   std::shared_ptr<const GroundTask> task;
-  // Actions from this id on are witnesses, not steps of the original task.
-  ActionId first_witness = 0;
   // Set when a hard constraint cannot be compiled: "what (where)".
   std::optional<std::string> refused;
 };

@@ -128,6 +128,15 @@ TEST_CASE("a hard always-within is met by a watch of at most its span around the
   CHECK(missed.status != PlannerResult::Status::InternalError);
 }
 
+TEST_CASE("a hard always-within whose requirement a timed literal breaks is refused by name") {
+  const test::LoadedTask loaded = test::load_task_text(
+      kLamp, "(define (problem p) (:domain lamp) (:init (at 9 (not (open)))) (:goal (warm)) "
+             "(:constraints (always-within 4 (lit) (open))))");
+  const PlannerResult result = Planner(ground(loaded.normalized), {}).plan();
+  CHECK(result.status == PlannerResult::Status::Unsupported);
+  CHECK(result.message.find("a timed literal breaks its requirement") != std::string::npos);
+}
+
 TEST_CASE("the first plan ignores preferences, anytime rounds enforce those that pay") {
   // Being warm saves 10; being lit at the end saves 1 but costs a plan that
   // leaves the lamp on, which the cheap preference against it (weight 5) forbids.
