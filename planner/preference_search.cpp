@@ -168,8 +168,9 @@ PlannerResult PreferenceSearch::plan(const std::function<void(const FoundPlan&)>
   PlannerResult& result = rounds.result();
   if (result.status == PlannerResult::Status::InternalError) return std::move(result);
   if (!found) {
-    // Round 0 is the task with its hard constraints exactly (pddl3_compilation.h):
-    // its verdict is the task's.
+    // Round 0 is the task with its hard constraints (pddl3_compilation.h):
+    // its verdict is the task's, and where the compilation is not exact its
+    // exhaustion says so (GroundTrajectory::approximations).
     first.statistics = result.statistics;
     first.times = result.times;
     first.search_memory = result.search_memory;
