@@ -175,7 +175,11 @@ void HappeningExecutor::load(const std::vector<ScheduledStep>& steps, const Exec
   }
   next_ = 0;
   time_ = start.now;
-  trajectory_.emplace(task_, numeric_slack_);
+  if (start.trajectory) {
+    trajectory_.emplace(*start.trajectory);
+  } else {
+    trajectory_.emplace(task_, numeric_slack_);
+  }
   invariant_preferences_counted_.clear();
   last_action_state_.reset();
   last_action_time_ = 0.0;

@@ -41,6 +41,9 @@ struct ExecutionStart {
   ExplicitState state;
   std::size_t first_timed_literal = 0;
   double now = 0.0;
+  // PDDL 3: the monitor of the states seen before `now`, over this
+  // executor's task, which this run carries on; none, a fresh one.
+  std::shared_ptr<const TrajectoryMonitor> trajectory;
 };
 
 class HappeningExecutor {

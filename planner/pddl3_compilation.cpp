@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <functional>
 
+#include "pddl_parser/writer.h"
 #include "planner/instantiate.h"
+#include "planner/trajectory_monitor.h"
 
 namespace alplan {
 namespace {
@@ -50,10 +52,8 @@ bool compilable(ModalOperator op) {
          op == ModalOperator::Within;
 }
 
-bool holds_initially(const GroundTask& task, const ConditionSet& c) {
-  auto in = [&](FactId f) {
-    return std::find(task.initial_facts.begin(), task.initial_facts.end(), f) != task.initial_facts.end();
-  };
+bool holds_in(const std::vector<FactId>& facts, const ConditionSet& c) {
+  auto in = [&](FactId f) { return std::find(facts.begin(), facts.end(), f) != facts.end(); };
   return std::all_of(c.positive.begin(), c.positive.end(), in) && std::none_of(c.negative.begin(), c.negative.end(), in);
 }
 
@@ -69,8 +69,9 @@ void drop_violation_terms(GroundExpression& e) {
 
 class Compiler {
  public:
-  Compiler(const GroundTask& task, const PreferenceSelection& selection)
-      : source_(task), selection_(selection), lifted_(std::make_shared<NormalizedTask>(*task.lifted)),
+  Compiler(const GroundTask& task, const PreferenceSelection& selection, const TrajectorySoFar& so_far)
+      : source_(task), selection_(selection), so_far_(so_far),
+        start_facts_(so_far.facts ? *so_far.facts : task.initial_facts), lifted_(std::make_shared<NormalizedTask>(*task.lifted)),
         out_(std::make_shared<GroundTask>(task)) {
     out_->lifted = lifted_;
     out_->pddl3 = GroundTrajectory{};
@@ -84,6 +85,19 @@ class Compiler {
     for (std::size_t k = 0; k < source_.pddl3.constraints.size(); ++k) {
       const GroundConstraint& g = source_.pddl3.constraints[k];
       if (g.preference && !selection_.contains(*g.preference)) continue;
+      if (so_far_.seen) {
+        const std::optional<std::string> settled = settled_before(k, g);
+        if (settled && !g.preference && !settled->empty()) {
+          result.broken = g.text + ": " + *settled;
+          return result;
+        }
+        if (settled) continue;
+        if (g.op == ModalOperator::AlwaysWithin && !g.preference && so_far_.seen->deadline_open(k)) {
+          result.refused = g.text + ": the planner cannot plan on with a hard `always-within` deadline opened "
+                           "before the observed state";
+          return result;
+        }
+      }
       if (g.op == ModalOperator::AlwaysWithin && !g.preference) {
         if (std::optional<std::string> why = watch(k, g)) {
           result.refused = g.text + ": the planner cannot plan with this hard `always-within` constraint: " + *why;
@@ -110,6 +124,20 @@ class Compiler {
   }
 
  private:
+  // What the states seen before the start settle about constraint k: empty
+  // when it is met already, why it is violated when it is; none when the
+  // plan still decides.
+  std::optional<std::string> settled_before(std::size_t k, const GroundConstraint& g) const {
+    const TrajectoryMonitor& seen = *so_far_.seen;
+    if (seen.broken(k)) return std::string("violated before the observed state");
+    const bool eventually = g.op == ModalOperator::Sometime || g.op == ModalOperator::Within;
+    if (eventually && seen.met(k)) return std::string();
+    if (g.op == ModalOperator::Within && g.deadline < so_far_.now) {
+      return "not reached by " + pddl::format_number(g.deadline) + ", before the observed state";
+    }
+    return std::nullopt;
+  }
+
   void constraint(std::size_t k, const GroundConstraint& g) {
     switch (g.op) {
       case ModalOperator::AtEnd: merge(out_->goal, g.requirement); return;
@@ -143,7 +171,7 @@ class Compiler {
       return std::string("its requirement is not a conjunction of literals");
     }
     const FactId f = trigger.positive.front();
-    if (holds_initially(source_, trigger)) return std::string("its trigger holds in the initial state");
+    if (holds_in(start_facts_, trigger)) return std::string("its trigger holds in the initial state");
     // What ψ's literals lose by: their facts deleted where positive, added where negative.
     auto breaks_requirement = [&](FactId fact, bool added) {
       const std::vector<FactId>& lost = added ? requirement.negative : requirement.positive;
@@ -275,6 +303,8 @@ class Compiler {
 
   const GroundTask& source_;
   const PreferenceSelection& selection_;
+  const TrajectorySoFar& so_far_;
+  const std::vector<FactId>& start_facts_;
   std::shared_ptr<NormalizedTask> lifted_;
   std::shared_ptr<GroundTask> out_;
 };
@@ -296,8 +326,9 @@ bool enforceable(const GroundTask& task, std::uint32_t preference) {
   });
 }
 
-CompiledTrajectory compile_trajectory(const GroundTask& task, const PreferenceSelection& selection) {
-  return Compiler(task, selection).run();
+CompiledTrajectory compile_trajectory(const GroundTask& task, const PreferenceSelection& selection,
+                                      const TrajectorySoFar& so_far) {
+  return Compiler(task, selection, so_far).run();
 }
 
 }  // namespace alplan

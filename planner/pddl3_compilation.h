@@ -67,6 +67,23 @@ struct CompiledTrajectory {
   std::shared_ptr<const GroundTask> task;
   // Set when a hard constraint cannot be compiled: "what (where)".
   std::optional<std::string> refused;
+  // Set when the states seen before the start violated a hard constraint:
+  // no plan from here can mend it (a proof, not a refusal).
+  std::optional<std::string> broken;
+};
+
+class TrajectoryMonitor;
+
+// Planning from a state observed at `now` (PlanningStart): the monitor of
+// the states seen before it, over the task being compiled. A `sometime` or
+// `within` it saw met needs no witness; a constraint it saw violated, or a
+// `within` whose deadline is past, is not enforced (broken, when hard); a
+// hard `always-within` with a deadline still open is refused, since a
+// watch cannot start in the past.
+struct TrajectorySoFar {
+  const TrajectoryMonitor* seen = nullptr;
+  double now = 0.0;
+  const std::vector<FactId>* facts = nullptr;  // the observed state
 };
 
 // Whether the task has PDDL 3 the search cannot take as it is: preferences
@@ -78,6 +95,7 @@ bool needs_compilation(const GroundTask& task);
 // within).
 bool enforceable(const GroundTask& task, std::uint32_t preference);
 
-CompiledTrajectory compile_trajectory(const GroundTask& task, const PreferenceSelection& selection);
+CompiledTrajectory compile_trajectory(const GroundTask& task, const PreferenceSelection& selection,
+                                      const TrajectorySoFar& so_far = {});
 
 }  // namespace alplan

@@ -74,11 +74,6 @@ std::optional<std::string> broken_always(const GroundTask& task, const PlanningS
   return std::nullopt;
 }
 
-bool is_initial(const GroundTask& task, const PlanningStart& start) {
-  return start.now == 0.0 && start.running.empty() && start.next_timed_literal == 0 && start.facts == task.initial_facts &&
-         start.values == task.initial_values;
-}
-
 // Validation of a plan made from an observed state: the executor runs the
 // plan as printed (times read back from the text) from that state, with the
 // running actions' ends where the schedule put them.
@@ -119,6 +114,11 @@ ValidationResult validate_from(const GroundTask& task, const PlanningStart& star
 }
 
 }  // namespace
+
+bool is_initial_start(const GroundTask& task, const PlanningStart& start) {
+  return start.now == 0.0 && start.running.empty() && start.history.empty() && start.next_timed_literal == 0 &&
+         start.facts == task.initial_facts && start.values == task.initial_values;
+}
 
 PlanningStart initial_start(const GroundTask& task) {
   PlanningStart start;
@@ -206,12 +206,10 @@ PlannerResult Planner::plan(const std::function<void(const FoundPlan&)>& on_plan
 }
 
 PlannerResult Planner::plan_from(const PlanningStart& start, const std::function<void(const FoundPlan&)>& on_plan) {
-  if (needs_compilation(*task_)) {
-    if (is_initial(*task_, start)) return PreferenceSearch(task_, options_).plan(on_plan);
-    PlannerResult result;
-    result.status = PlannerResult::Status::Unsupported;
-    result.message = "planning from an observed state is not supported for PDDL 3 preferences and constraints yet";
-    return result;
+  // A hard `always` alone needs no compilation, but a history may have
+  // broken it already.
+  if (needs_compilation(*task_) || (!task_->pddl3.constraints.empty() && !start.history.empty())) {
+    return PreferenceSearch(task_, options_).plan_from(start, on_plan);
   }
   return options_.prune_irrelevant ? plan_relevant(start, on_plan) : search_from(start, on_plan);
 }
@@ -311,7 +309,7 @@ class PlanChecker {
   PlanChecker(std::shared_ptr<const GroundTask> task, const PlanningStart& start, const TaskIndex& index,
               const SearchStart& search_start, const PlannerOptions& options)
       : task_(std::move(task)), start_(start), index_(index), search_start_(search_start), options_(options),
-        from_initial_(is_initial(*task_, start) && !options.validate_ground) {
+        from_initial_(is_initial_start(*task_, start) && !options.validate_ground) {
     // The plan validator grounds the task again for itself: only from the start.
     if (from_initial_) validator_.emplace(task_->lifted, ValidatorOptions{options.epsilon, false});
   }

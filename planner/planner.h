@@ -101,15 +101,32 @@ const char* status_name(PlannerResult::Status status);
 // `next_timed_literal` on keep their times (earlier ones are past), and a
 // running action (start_step kNoId) ends within [min_duration,
 // max_duration] of time 0 — that is, the bounds are absolute end times.
+//
+// PDDL 3 constraints judge the whole trajectory, so a plan from an observed
+// state is judged with the states seen before it: `history`, oldest first,
+// each at its time (before `now`). A `sometime` or `within` met there needs
+// nothing more, a constraint violated there stays violated (a hard one makes
+// the task unsolvable from here, and that is a proof), and `within` and
+// `hold-during` deadlines keep their absolute times. With no history the
+// observed state is the trajectory's first.
+struct ObservedState {
+  double time = 0.0;
+  std::vector<FactId> facts;
+  std::vector<double> values;
+};
+
 struct PlanningStart {
   double now = 0.0;
   std::vector<FactId> facts;
   std::vector<double> values;
   std::uint32_t next_timed_literal = 0;
   std::vector<RunningAction> running;
+  std::vector<ObservedState> history;
 };
 
 PlanningStart initial_start(const GroundTask& task);
+// Whether `start` is the task's initial state at time 0, nothing before it.
+bool is_initial_start(const GroundTask& task, const PlanningStart& start);
 
 // What a planner builds for its task before it searches (the task index,
 // the relaxed planning graph), kept by a caller who plans again and again on

@@ -6,10 +6,14 @@
 #include <limits>
 #include <set>
 #include <sstream>
+#include <stdexcept>
+#include <unordered_map>
 
 #include "planner/evaluation.h"
 #include "planner/explicit_state.h"
+#include "planner/happening_executor.h"
 #include "planner/pddl3_compilation.h"
+#include "planner/trajectory_monitor.h"
 
 namespace alplan {
 namespace {
@@ -57,10 +61,12 @@ double saving(const GroundTask& task, std::vector<double> violations, std::uint3
 
 class Rounds {
  public:
-  Rounds(std::shared_ptr<const GroundTask> task, const PlannerOptions& options,
-         const std::function<void(const FoundPlan&)>& on_plan)
-      : task_(std::move(task)), options_(options), on_plan_(on_plan), began_(Clock::now()),
-        validator_(task_->lifted, ValidatorOptions{options.epsilon, false}) {}
+  // `seen`: the monitor of the states before an observed start; null from
+  // the task's initial state.
+  Rounds(std::shared_ptr<const GroundTask> task, const PlannerOptions& options, const PlanningStart& start,
+         std::shared_ptr<const TrajectoryMonitor> seen, const std::function<void(const FoundPlan&)>& on_plan)
+      : task_(std::move(task)), options_(options), start_(start), seen_(std::move(seen)), on_plan_(on_plan),
+        began_(Clock::now()), validator_(task_->lifted, ValidatorOptions{options.epsilon, false}) {}
 
   double remaining() const { return options_.time_limit - since(began_); }
   PlannerResult& result() { return result_; }
@@ -70,11 +76,12 @@ class Rounds {
   // `seconds`; true when it gave a better plan than the best so far.
   std::pair<bool, PlannerResult> run(const PreferenceSelection& selection, const SearchConfiguration& search,
                                      double seconds) {
-    const CompiledTrajectory compiled = compile_trajectory(*task_, selection);
+    const TrajectorySoFar so_far{seen_.get(), start_.now, seen_ ? &start_.facts : nullptr};
+    const CompiledTrajectory compiled = compile_trajectory(*task_, selection, so_far);
     PlannerResult inner;
-    if (compiled.refused) {
-      inner.status = PlannerResult::Status::Unsupported;
-      inner.message = *compiled.refused;
+    if (compiled.refused || compiled.broken) {
+      inner.status = compiled.broken ? PlannerResult::Status::Unsolvable : PlannerResult::Status::Unsupported;
+      inner.message = compiled.broken ? "no plan exists: the hard constraint " + *compiled.broken : *compiled.refused;
       return {false, inner};
     }
     std::set<std::string> witnesses;
@@ -87,11 +94,13 @@ class Rounds {
     options.validate_ground = true;
     bool improved = false;
     const Clock::time_point round_began = Clock::now();
-    inner = Planner(compiled.task, options).plan([&](const FoundPlan& found) {
+    const PlanningStart from = seen_ ? compiled_start(*compiled.task) : initial_start(*compiled.task);
+    inner = Planner(compiled.task, options).plan_from(from, [&](const FoundPlan& found) {
       if (result_.status == PlannerResult::Status::InternalError) return;
       FoundPlan plan = without_witnesses(found, witnesses);
       const Clock::time_point validation_began = Clock::now();
-      plan.validation = validator_.validate(read_plan(plan.text, "planner output").plan);
+      plan.validation = seen_ ? validate_observed(plan.text)
+                              : validator_.validate(read_plan(plan.text, "planner output").plan);
       result_.times.validation += since(validation_began);
       plan.seconds = std::chrono::duration<double>(round_began - began_).count() + found.seconds;
       if (!plan.validation.valid) {
@@ -115,6 +124,51 @@ class Rounds {
   }
 
  private:
+  // The observed start on the compiled task: its ids extend the task's, and
+  // the facts it adds that hold at first (a `within` still open) hold.
+  PlanningStart compiled_start(const GroundTask& compiled) const {
+    PlanningStart from = start_;
+    from.history.clear();  // settled by the compilation
+    for (FactId f : compiled.initial_facts) {
+      if (f >= task_->facts.size()) from.facts.push_back(f);
+    }
+    std::sort(from.facts.begin(), from.facts.end());
+    return from;
+  }
+
+  // A plan from the observed state, validated on the task with the
+  // trajectory seen so far carried on (its value counts it all).
+  ValidationResult validate_observed(const std::string& text) {
+    if (action_ids_.empty()) {
+      for (ActionId a = 0; a < task_->actions.size(); ++a) action_ids_.emplace(task_->action_name(task_->actions[a]), a);
+    }
+    const PlanReadResult printed = read_plan(text, "planner output");
+    std::vector<ScheduledStep> steps;
+    for (std::size_t i = 0; i < printed.plan.steps.size(); ++i) {
+      const PlanStep& p = printed.plan.steps[i];
+      std::string name = "(" + p.action;
+      for (const std::string& arg : p.args) name += " " + arg;
+      const auto id = action_ids_.find(name + ")");
+      if (id == action_ids_.end()) throw std::logic_error("a planned step the task lacks: " + name + ")");
+      ScheduledStep step;
+      step.action = id->second;
+      step.step = i;
+      step.line = p.line;
+      step.start = p.time.value_or(start_.now);
+      step.duration = p.duration.value_or(0.0);
+      step.name = name + ")";
+      steps.push_back(std::move(step));
+    }
+    ExecutionStart from;
+    for (FactId f : start_.facts) from.state.set_fact(f, true);
+    for (NumericVarId v = 0; v < start_.values.size(); ++v) from.state.set_value(v, start_.values[v]);
+    from.first_timed_literal = start_.next_timed_literal;
+    from.now = start_.now;
+    from.trajectory = seen_;
+    HappeningExecutor executor(*task_, ValidatorOptions{options_.epsilon, false});
+    return executor.run(steps, printed.plan.steps.size(), from);
+  }
+
   void add_statistics(const PlannerResult& inner) {
     result_.statistics += inner.statistics;
     result_.times.setup += inner.times.setup;
@@ -125,6 +179,9 @@ class Rounds {
 
   std::shared_ptr<const GroundTask> task_;
   const PlannerOptions& options_;
+  const PlanningStart& start_;
+  std::shared_ptr<const TrajectoryMonitor> seen_;
+  std::unordered_map<std::string, ActionId> action_ids_;  // by printed name, filled when first needed
   const std::function<void(const FoundPlan&)>& on_plan_;
   Clock::time_point began_;
   PlanValidator validator_;
@@ -154,14 +211,44 @@ std::vector<std::uint32_t> candidates(const GroundTask& task, const ValidationRe
   return out;
 }
 
+ExplicitState state_of(const std::vector<FactId>& facts, const std::vector<double>& values) {
+  ExplicitState state;
+  for (FactId f : facts) state.set_fact(f, true);
+  for (NumericVarId v = 0; v < values.size(); ++v) state.set_value(v, values[v]);
+  return state;
+}
+
 }  // namespace
 
 PreferenceSearch::PreferenceSearch(std::shared_ptr<const GroundTask> task, PlannerOptions options)
     : task_(std::move(task)), options_(std::move(options)) {}
 
 PlannerResult PreferenceSearch::plan(const std::function<void(const FoundPlan&)>& on_plan) {
+  return plan_from(initial_start(*task_), on_plan);
+}
+
+PlannerResult PreferenceSearch::plan_from(const PlanningStart& start,
+                                          const std::function<void(const FoundPlan&)>& on_plan) {
+  std::shared_ptr<const TrajectoryMonitor> seen;
+  if (!is_initial_start(*task_, start)) {
+    PlannerResult refused;
+    refused.status = PlannerResult::Status::Unsupported;
+    if (!start.running.empty()) {
+      refused.message = "PDDL 3 from an observed state with actions still running is not supported: commit their "
+                        "ends as timed literals";
+      return refused;
+    }
+    auto monitor = std::make_shared<TrajectoryMonitor>(*task_, ValidatorOptions{}.numeric_slack);
+    try {
+      for (const ObservedState& h : start.history) monitor->observe(state_of(h.facts, h.values), h.time);
+    } catch (const EvaluationError& error) {
+      refused.message = std::string("the states observed before cannot be judged: ") + error.what();
+      return refused;
+    }
+    seen = std::move(monitor);
+  }
   const PreferencePlan spec = preference_plan(options_.search);
-  Rounds rounds(task_, options_, on_plan);
+  Rounds rounds(task_, options_, start, seen, on_plan);
   PreferenceSelection selection;
   selection.enforced.assign(task_->lifted->pddl3.preferences.size(), false);
   auto [found, first] = rounds.run(selection, spec.first, rounds.remaining());

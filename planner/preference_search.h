@@ -17,6 +17,15 @@
 // within the round's share of the time). The time left then goes to the
 // anytime phases on the best selection. Every plan handed on is better than
 // the one before under the task's metric (minimised or maximised).
+//
+// From an observed state (a monitor's repair), the states seen before it
+// (PlanningStart::history) are run through the validator's trajectory
+// monitor first: what they settle is compiled away (TrajectorySoFar), a hard
+// constraint they broke makes the task unsolvable from here, and each plan
+// is validated from the observed state with that monitor carried on, so its
+// value counts the violations of the whole trajectory. Actions still running
+// at the start are not supported with PDDL 3 (a monitor commits them as
+// timed literals, repair/reformulation.h).
 #pragma once
 
 #include <functional>
@@ -31,6 +40,7 @@ class PreferenceSearch {
   PreferenceSearch(std::shared_ptr<const GroundTask> task, PlannerOptions options);
 
   PlannerResult plan(const std::function<void(const FoundPlan&)>& on_plan = {});
+  PlannerResult plan_from(const PlanningStart& start, const std::function<void(const FoundPlan&)>& on_plan = {});
 
  private:
   std::shared_ptr<const GroundTask> task_;

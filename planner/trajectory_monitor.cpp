@@ -18,6 +18,7 @@ bool TrajectoryMonitor::holds(const ConditionSet& c, const ExplicitState& state)
 
 std::optional<Violation> TrajectoryMonitor::violated(std::size_t k, double time, const std::string& why) {
   const GroundConstraint& g = task_.pddl3.constraints[k];
+  memory_[k].violated = true;
   if (g.preference) {
     if (!monitor_counted_[g.monitor]) {
       monitor_counted_[g.monitor] = true;

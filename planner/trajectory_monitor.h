@@ -48,6 +48,14 @@ class TrajectoryMonitor {
   // Violations per preference, indexed as TrajectoryConstraints::preferences.
   const std::vector<double>& violations() const { return violations_; }
 
+  // What the states seen so far settle about constraint k (an index into
+  // GroundTrajectory::constraints), for planning on from the last of them
+  // (PreferenceSearch): a sometime or within already met, any constraint
+  // already violated, an always-within deadline still open.
+  bool met(std::size_t k) const { return memory_[k].met && !memory_[k].violated; }
+  bool broken(std::size_t k) const { return memory_[k].violated; }
+  bool deadline_open(std::size_t k) const { return !memory_[k].deadlines.empty(); }
+
  private:
   enum class Phase : unsigned char { NotYet, Holding, Released };
   // What one constraint instance remembers between states.
@@ -57,6 +65,7 @@ class TrajectoryMonitor {
     bool requirement_seen = false;   // sometime-before
     Phase phase = Phase::NotYet;     // at-most-once
     std::vector<double> deadlines;   // always-within: open deadlines
+    bool violated = false;           // at least once, hard or soft
   };
 
   bool holds(const ConditionSet& c, const ExplicitState& state) const;

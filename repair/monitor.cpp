@@ -149,6 +149,7 @@ class Execution {
       if (belief_.observe(world_.observe())) ++news_;
       if (take_arrivals(t)) continue;  // look again at the same time, with the merged plan
       const WorldState observed = belief_.state();
+      remember(observed, t);
       const ExplicitState state = mapping_->to_explicit(observed);
       // An overrun's own invariant first: a battery run down below its
       // reserve is why the steps after it fail, not the other way round.
@@ -235,7 +236,18 @@ class Execution {
     r.recognizer = recognizer_;
     r.ontology = ontology_;
     r.grounding = grounding_.get();
+    if (!history_.empty()) r.history = &history_;
     return r;
+  }
+
+  // The trajectory believed so far, for PDDL 3 constraints: each change,
+  // kept only when the problem has constraints (a home's day of
+  // observations is long, and nothing else reads it).
+  void remember(const WorldState& observed, double t) {
+    if (!problem_.constraints) return;
+    if (!history_.empty() && history_.back().atoms == observed.atoms && history_.back().values == observed.values) return;
+    history_.push_back(observed);
+    history_.back().time = t;
   }
 
   // The first part of an explanation: the plan in force and why it was made.
@@ -523,6 +535,7 @@ class Execution {
   ExecutionReport report_;
   std::unique_ptr<GroundingCache> grounding_;
   Belief belief_;
+  std::vector<WorldState> history_;
   std::size_t news_ = 0;  // observations that showed something new
   std::optional<DeferredFailure> deferred_;
 };

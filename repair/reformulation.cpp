@@ -16,6 +16,37 @@ std::optional<std::string> object_type(const pddl::Problem& problem, const std::
   return std::nullopt;
 }
 
+namespace {
+
+// The absolute times of PDDL 3 constraints, moved to a plan that starts
+// `shift` later; always-within's number is a span and stays.
+void shift_constraint_times(pddl::Condition& c, double shift) {
+  using Kind = pddl::Condition::Kind;
+  if (c.kind == Kind::Within || c.kind == Kind::HoldDuring || c.kind == Kind::HoldAfter) {
+    for (double& t : c.numbers) t -= shift;
+  }
+  for (pddl::Condition& child : c.children) shift_constraint_times(child, shift);
+}
+
+// The believed states as the planner's, on the task's ids.
+std::vector<ObservedState> observed_history(const GroundTask& task, const std::vector<WorldState>& history) {
+  const StateMapping mapping(task);
+  std::vector<ObservedState> out;
+  for (const WorldState& w : history) {
+    const ExplicitState state = mapping.to_explicit(w);
+    ObservedState o;
+    o.time = w.time;
+    for (FactId f = 0; f < task.facts.size(); ++f) {
+      if (state.fact(f)) o.facts.push_back(f);
+    }
+    for (NumericVarId v = 0; v < task.numeric.size(); ++v) o.values.push_back(state.value(v));
+    out.push_back(std::move(o));
+  }
+  return out;
+}
+
+}  // namespace
+
 pddl::Problem reformulate(const pddl::Domain& domain, const pddl::Problem& base, const WorldState& observed,
                           const std::vector<ActionInProgress>& in_progress, double now, double shift) {
   // The frame alone: the base's initial state and timed literals are
@@ -28,6 +59,7 @@ pddl::Problem reformulate(const pddl::Domain& domain, const pddl::Problem& base,
   problem.objects = base.objects;
   problem.goal = base.goal;
   problem.constraints = base.constraints;
+  if (problem.constraints && shift != 0.0) shift_constraint_times(*problem.constraints, shift);
   problem.metric = base.metric;
   problem.location = base.location;
   std::set<std::string> names;
@@ -104,7 +136,7 @@ std::shared_ptr<const GroundTask> without_schemas(std::shared_ptr<const GroundTa
 
 PlanningOutcome plan_in_process(const pddl::Domain& domain, const pddl::Problem& problem, double now,
                                 const PlannerOptions& options, GroundingCache* cache,
-                                const std::set<std::string>& excluded) {
+                                const std::set<std::string>& excluded, const std::vector<WorldState>* history) {
   const auto began = std::chrono::steady_clock::now();
   PlanningOutcome outcome;
   std::shared_ptr<const GroundTask> task;
@@ -117,6 +149,7 @@ PlanningOutcome plan_in_process(const pddl::Domain& domain, const pddl::Problem&
   }
   PlanningStart start = initial_start(*task);
   start.now = now;
+  if (history && !task->pddl3.constraints.empty()) start.history = observed_history(*task, *history);
   PlannerResult result = Planner(task, options, cache ? cache->planner_workspace() : nullptr).plan_from(start);
   outcome.status = result.status;
   outcome.message = result.message;

@@ -24,7 +24,11 @@
 namespace alplan::repair {
 
 // `shift` is subtracted from every time (an external planner starts at 0;
-// the in-process one plans in the task's own time from `now`).
+// the in-process one plans in the task's own time from `now`): timed
+// literals' and the absolute times of PDDL 3 constraints (within,
+// hold-during, hold-after), not always-within's span, which is relative.
+// The text carries no history: an external planner is asked again for a
+// `sometime` the trajectory met already (plan_in_process is told it).
 pddl::Problem reformulate(const pddl::Domain& domain, const pddl::Problem& base, const WorldState& observed,
                           const std::vector<ActionInProgress>& in_progress, double now, double shift = 0.0);
 
@@ -43,9 +47,12 @@ std::shared_ptr<const GroundTask> ground_problem(const pddl::Domain& domain, con
 
 // Grounds the problem (through `cache` when given) and plans from `now`
 // with the in-process planner, without the actions of `excluded` schemas.
+// `history`: the states believed before `now`, for the problem's PDDL 3
+// constraints (what they met or broke already); may be absent.
 PlanningOutcome plan_in_process(const pddl::Domain& domain, const pddl::Problem& problem, double now,
                                 const PlannerOptions& options, GroundingCache* cache = nullptr,
-                                const std::set<std::string>& excluded = {});
+                                const std::set<std::string>& excluded = {},
+                                const std::vector<WorldState>* history = nullptr);
 
 // The task without the ground actions of the named schemas: a view, so that
 // one grounding serves a strategy that forbids some actions (suggest).

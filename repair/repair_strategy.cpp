@@ -121,7 +121,7 @@ RepairResult replan_from(const RepairRequest& request, const pddl::Domain& domai
   RepairResult result;
   result.problem = reformulate(domain, problem, request.observed, request.in_progress, request.now);
   PlanningOutcome outcome =
-      plan_in_process(domain, result.problem, request.now, options, request.grounding, excluded);
+      plan_in_process(domain, result.problem, request.now, options, request.grounding, excluded, request.history);
   result.planner_calls = 1;
   result.reused_grounding = outcome.reused_grounding;
   result.repaired = outcome.plan.has_value();

@@ -73,6 +73,10 @@ struct RepairRequest {
   // The execution's grounding, reused when the reformulated problem fits it
   // (grounding_cache.h); may be absent, and then every repair grounds anew.
   GroundingCache* grounding = nullptr;
+  // What the monitor believed at each change before `now`, oldest first:
+  // the trajectory so far, which PDDL 3 constraints judge (planner.h,
+  // PlanningStart::history). Kept only for problems with constraints.
+  const std::vector<WorldState>* history = nullptr;
 };
 
 struct RepairResult {

@@ -4,6 +4,9 @@
 // name.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
+
 #include "planner/grounder.h"
 #include "planner/pddl3_compilation.h"
 #include "planner/planner.h"
@@ -231,4 +234,73 @@ TEST_CASE("the preferences engine reads, prints and goes outermost only") {
   const SearchConfiguration from_flags = configuration_from(named);
   CHECK(from_flags.engine.kind == EngineSpec::Kind::Preferences);
   CHECK(from_flags.engine.children.front().kind == EngineSpec::Kind::Anytime);
+}
+
+namespace {
+
+// The lamp task planned from a state observed at `now`, after `history`
+// (each a time and the facts true then, by name).
+PlannerResult plan_observed(const std::string& problem_text, double now, const std::vector<std::string>& facts,
+                            const std::vector<std::pair<double, std::vector<std::string>>>& history,
+                            PlannerOptions options = {}) {
+  const test::LoadedTask loaded = test::load_task_text(kLamp, problem_text);
+  const std::shared_ptr<const GroundTask> task = ground(loaded.normalized);
+  auto ids = [&](const std::vector<std::string>& names) {
+    std::vector<FactId> out;
+    for (const std::string& name : names) {
+      for (FactId f = 0; f < task->facts.size(); ++f) {
+        if (task->fact_name(f) == name) out.push_back(f);
+      }
+    }
+    REQUIRE(out.size() == names.size());
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  PlanningStart start = initial_start(*task);
+  start.now = now;
+  start.facts = ids(facts);
+  for (const auto& [time, seen] : history) start.history.push_back(ObservedState{time, ids(seen), task->initial_values});
+  if (!std::isfinite(options.time_limit)) options.time_limit = 20.0;
+  return Planner(task, options).plan_from(start);
+}
+
+}  // namespace
+
+TEST_CASE("from an observed state, a within met before needs nothing more and one missed before is proven lost") {
+  const std::string p = problem("(open)", "(within 10 (warm))");
+  // Warm at 6, cold again by 20: the deadline is past, but it was met.
+  const PlannerResult met = plan_observed(p, 20.0, {}, {{0.0, {}}, {6.0, {"(warm)"}}, {15.0, {}}});
+  INFO(met.message);
+  REQUIRE(met.status == PlannerResult::Status::Solved);
+  CHECK(met.best()->validation.valid);
+  CHECK_FALSE(has_step(met, "heat"));
+  CHECK(met.best()->plan.steps.front().time.value_or(0.0) >= 20.0);
+  // Never warm before 20: no plan from here can meet it, and that is a proof.
+  const PlannerResult missed = plan_observed(p, 20.0, {}, {{0.0, {}}, {15.0, {}}});
+  CHECK(missed.status == PlannerResult::Status::Unsolvable);
+  CHECK(missed.message.find("(within 10") != std::string::npos);
+  // Before the deadline, its absolute time still binds the new plan.
+  const PlannerResult open = plan_observed(p, 1.0, {}, {{0.0, {}}});
+  REQUIRE(open.status == PlannerResult::Status::Solved);
+  CHECK(open.best()->validation.valid);
+  CHECK(has_step(open, "heat"));
+}
+
+TEST_CASE("from an observed state, an always broken before is proven lost and a preference met before costs nothing") {
+  const std::string hard = problem("(open)", "(always (not (warm)))");
+  const PlannerResult broken = plan_observed(hard, 8.0, {}, {{0.0, {}}, {5.0, {"(warm)"}}});
+  CHECK(broken.status == PlannerResult::Status::Unsolvable);
+  const std::string soft = problem("(open)", "(preference p (sometime (warm)))", "minimize (is-violated p)");
+  PlannerOptions anytime;
+  anytime.search = with_anytime(alias("pddl3"));
+  anytime.time_limit = 2.0;
+  const PlannerResult seen = plan_observed(soft, 8.0, {}, {{0.0, {}}, {5.0, {"(warm)"}}}, anytime);
+  REQUIRE(seen.status == PlannerResult::Status::Solved);
+  CHECK(seen.best()->validation.value == Approx(0.0));
+  CHECK_FALSE(has_step(seen, "heat"));
+  // Not seen before: the rounds make the plan warm the room.
+  const PlannerResult unseen = plan_observed(soft, 8.0, {}, {{0.0, {}}}, anytime);
+  REQUIRE(unseen.status == PlannerResult::Status::Solved);
+  CHECK(unseen.best()->validation.value == Approx(0.0));
+  CHECK(has_step(unseen, "heat"));
 }

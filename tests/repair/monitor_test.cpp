@@ -3,6 +3,11 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <unistd.h>
 
 #include "domains/paper_scenarios.h"
 #include "tests/support/test_paths.h"
@@ -210,4 +215,32 @@ TEST_CASE("adapt keeps what it can of the old plan") {
 
 TEST_CASE("an unknown strategy is refused with the known names") {
   CHECK_THROWS_WITH(repair::make_strategy("pray", {}), Catch::Contains("replan, substitute, suggest, patch, adapt"));
+}
+
+TEST_CASE("a PDDL 3 deadline met before the failure binds no repair: the monitor hands the trajectory over") {
+  // Scenario 1 with a hard (within 130 (be robot1 dinning_room1)): the robot
+  // is there at 120, the glass fails at 140.008, past the deadline. Without
+  // what the monitor saw before, the repair would have to be there by 130
+  // again and could not.
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("alplan-pddl3-scenario-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::copy(test::source_dir() + "/domains/assisted_living", dir, fs::copy_options::recursive);
+  {
+    std::ifstream in(dir / "paper-scenario-1.pddl");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string problem = text.str();
+    problem.insert(problem.rfind(')'), "  (:constraints (within 130 (be robot1 dinning_room1)))\n");
+    std::ofstream(dir / "paper-scenario-1.pddl") << problem;
+  }
+  ScenarioOptions o = options();
+  o.assisted_living_dir = dir.string();
+  const ScenarioRun run = run_paper_scenario(scenario(1), o);
+  fs::remove_all(dir);
+  const repair::RepairRecord& r = only_repair(run);
+  INFO(r.explanation.how);
+  CHECK(r.repaired);
+  CHECK(r.plan_text.find("(carry robot1 mug_id01 kitchen1)") != std::string::npos);
+  CHECK(run.report.goal_reached);
 }

@@ -7,6 +7,7 @@
 #include "domains/home_generator.h"
 #include "domains/paper_scenarios.h"
 #include "domains/pddl_files.h"
+#include "pddl_parser/parser.h"
 #include "pddl_parser/writer.h"
 #include "repair/monitor.h"
 #include "repair/random_events.h"
@@ -227,4 +228,23 @@ TEST_CASE("each failure kind of the study is drawn as it is named") {
   CHECK(seen_iot);
   CHECK(seen_sibling);
   CHECK(seen_two);
+}
+
+TEST_CASE("reformulated for a planner that starts later, PDDL 3 deadlines shift as timed literals do") {
+  const auto domain = pddl::parse_domain(
+      "(define (domain d) (:requirements :strips :constraints) (:predicates (p) (q)))", "d.pddl");
+  const auto problem = pddl::parse_problem(
+      "(define (problem x) (:domain d) (:init) (:goal (p)) (:constraints (and (within 130 (p)) "
+      "(hold-during 10 20 (q)) (hold-after 50 (q)) (preference late (within 200 (q))) (always-within 5 (p) (q)))))",
+      "x.pddl");
+  REQUIRE(domain.ok());
+  REQUIRE(problem.ok());
+  const pddl::Problem shifted = repair::reformulate(*domain.ast, *problem.ast, repair::WorldState{}, {}, 100.0, 100.0);
+  REQUIRE(shifted.constraints);
+  CHECK(pddl::write_condition(*shifted.constraints) ==
+        "(and (within 30 (p)) (hold-during -90 -80 (q)) (hold-after -50 (q)) (preference late (within 100 (q))) "
+        "(always-within 5 (p) (q)))");
+  // The in-process planner plans in the task's own time: nothing moves.
+  const pddl::Problem same = repair::reformulate(*domain.ast, *problem.ast, repair::WorldState{}, {}, 100.0);
+  CHECK(same.constraints == problem.ast->constraints);
 }
