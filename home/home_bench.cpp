@@ -21,16 +21,32 @@ std::string row(const std::string& what, const std::vector<double>& seconds) {
   return line;
 }
 
+// Replanning: merges and repairs, the calls that found no plan included.
+bool is_replanning(const std::string& reason) {
+  return reason == "merge" || reason == "repair" || reason == "merge_failed" || reason == "repair_failed";
+}
+
+std::vector<double> replanning_seconds(const HomeSummary& summary) {
+  std::vector<double> out;
+  for (const auto& [reason, seconds] : summary.planning_by_reason) {
+    if (is_replanning(reason)) out.insert(out.end(), seconds.begin(), seconds.end());
+  }
+  return out;
+}
+
+std::string reason_label(const std::string& reason) {
+  if (reason == "none") return "no initial plan found";
+  if (reason == "merge_failed") return "merge, no plan found";
+  if (reason == "repair_failed") return "repair, no plan found";
+  return reason;
+}
+
 }  // namespace
 
 nlohmann::json HomeBenchResult::json(const HomeSettings& settings) const {
   nlohmann::json by_reason = nlohmann::json::object();
   for (const auto& [reason, seconds] : summary.planning_by_reason) by_reason[reason] = latency(seconds);
-  std::vector<double> replanning;
-  for (const char* r : {"merge", "repair"}) {
-    const auto it = summary.planning_by_reason.find(r);
-    if (it != summary.planning_by_reason.end()) replanning.insert(replanning.end(), it->second.begin(), it->second.end());
-  }
+  const std::vector<double> replanning = replanning_seconds(summary);
   const double goals = static_cast<double>(std::max<std::size_t>(1, summary.goals));
   return {{"settings", settings.json()},
           {"summary", summary.json()},
@@ -57,12 +73,8 @@ void print_home_bench(std::ostream& out, const HomeSettings& settings, const Hom
   const HomeSummary& s = r.summary;
   out << "| planning (seconds, wall)     | plans  |      p50 |      p95 |      max |\n"
       << "|------------------------------|--------|----------|----------|----------|\n";
-  std::vector<double> replanning;
-  for (const auto& [reason, seconds] : s.planning_by_reason) {
-    out << row(reason == "none" ? "no plan found" : reason, seconds);
-    if (reason == "merge" || reason == "repair") replanning.insert(replanning.end(), seconds.begin(), seconds.end());
-  }
-  out << row("replanning (merge + repair)", replanning) << row("every planner call", s.planning_seconds);
+  for (const auto& [reason, seconds] : s.planning_by_reason) out << row(reason_label(reason), seconds);
+  out << row("replanning, failed included", replanning_seconds(s)) << row("every planner call", s.planning_seconds);
   char line[400];
   std::snprintf(line, sizeof line,
                 "\n%zu goals: %zu comforted within their windows (%.1f%%), %zu late, %zu windows missed; "

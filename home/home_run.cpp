@@ -319,8 +319,7 @@ class HomeRun {
     current_plan_ = id;
     ++summary_.plans;
     summary_.merges += reason == "merge";
-    summary_.planning_seconds.push_back(seconds);
-    summary_.planning_by_reason[reason].push_back(seconds);
+    record_planning(reason, seconds);
     // The world changes against the plans the deliberation makes for new
     // goals; a repair's plan meets what the world does next, not a draw of
     // its own (else failures would beget failures without end).
@@ -330,6 +329,12 @@ class HomeRun {
       world_.schedule(failure);
       if (settings_.object_return_s > 0) world_.schedule(returns_.after_failure(failure));
     }
+  }
+
+  // Every planner call, plan found or not, by why it was made.
+  void record_planning(const std::string& reason, double seconds) {
+    summary_.planning_seconds.push_back(seconds);
+    summary_.planning_by_reason[reason].push_back(seconds);
   }
 
   void on_monitor_event(const repair::MonitorEvent& m) {
@@ -365,10 +370,13 @@ class HomeRun {
         log_.write(e);
         if (r.repaired) ++summary_.repairs[r.strategy];
         else if (!r.deferred) ++summary_.repairs_failed;
+        // A call that found no plan took its time too: latency counts it.
+        if (!r.repaired && r.planner_calls > 0) record_planning("repair_failed", r.seconds);
         explain(m.time, r.explanation.why, r.explanation.what, r.explanation.how);
         return;
       }
       case Kind::MergeFailed:
+        record_planning("merge_failed", m.planning_seconds);
         explain(m.time, "new goals arrived while a plan ran", "no plan serves them with the goals in force",
                 m.reason + "; they wait until the plan in force ends");
         merge_blocked_ = true;
@@ -468,8 +476,7 @@ class HomeRun {
       keep_unplanned(t);
       explain(t, motivation, "no plan reaches the goals in course in time",
               planned.message + "; the seniors are looked at again when their windows close");
-      summary_.planning_seconds.push_back(planned.seconds);
-      summary_.planning_by_reason["none"].push_back(planned.seconds);
+      record_planning("none", planned.seconds);
       for (PerceivedGoal& g : active_) unplannable_.push_back(std::move(g));
       active_.clear();
       return t + settings_.step_s;

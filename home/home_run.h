@@ -34,8 +34,11 @@ struct HomeSummary {
   std::size_t failures = 0, plans = 0, merges = 0;
   std::map<std::string, std::size_t> repairs;  // by strategy, repaired
   std::size_t repairs_failed = 0;
-  std::vector<double> planning_seconds;  // every plan made: initial, merged, repaired
-  std::map<std::string, std::vector<double>> planning_by_reason;  // initial, merge, repair, none (no plan found)
+  // Every planner call, a plan found or not (a survivor statistic otherwise).
+  std::vector<double> planning_seconds;
+  // initial, merge, repair, proactive; none (no initial plan), merge_failed,
+  // repair_failed (no plan found, deferred attempts included).
+  std::map<std::string, std::vector<double>> planning_by_reason;
   // Scored against the simulation's truth.
   std::size_t episodes = 0, episodes_detected = 0, false_alarms = 0;
   double end_time = 0.0;

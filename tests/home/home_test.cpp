@@ -178,3 +178,37 @@ TEST_CASE("replay refuses settings of another log version, naming both", "[home]
 }
 
 }  // namespace alplan::home
+
+namespace alplan::home {
+
+TEST_CASE("every planner call counts in the latency figures, those that found no plan too", "[home]") {
+  // A drawn home where a repair finds no plan (seed 1: one of nine), as
+  // `alplan bench home --seniors 12 --robots 2 --rooms 12 --objects 60
+  // --hours 1 --episodes-per-hour 2 --failure-chance 1 --strategy replan`.
+  HomeSettings s;
+  s.domains_dir = kAssistedLiving;
+  s.until = 3600.0;
+  s.generate_seniors = 12;
+  s.generate_robots = 2;
+  s.generate_rooms = 12;
+  s.generate_objects = 60;
+  s.seniors.episodes_per_hour = 2.0;
+  s.failure_chance = 1.0;
+  s.strategy = "replan";
+  s.seed = 1;
+  EventLog log;
+  const HomeSummary summary = run_home(s, log);
+  std::size_t by_reason = 0;
+  for (const auto& [reason, seconds] : summary.planning_by_reason) by_reason += seconds.size();
+  CHECK(by_reason == summary.planning_seconds.size());
+  const auto failed = summary.planning_by_reason.find("repair_failed");
+  REQUIRE(failed != summary.planning_by_reason.end());
+  std::size_t unrepaired = 0;
+  for (const LogEvent& e : log.events()) {
+    if (e.type == "repair" && !e.payload.at("repaired").get<bool>()) ++unrepaired;
+  }
+  CHECK(failed->second.size() == unrepaired);
+  CHECK(summary.repairs_failed >= 1);
+}
+
+}  // namespace alplan::home
