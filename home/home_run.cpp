@@ -263,6 +263,8 @@ class HomeRun {
 
   repair::GoalArrival take_pending(double t) {
     repair::GoalArrival arrival;
+    arrival.withdrawn = std::move(withdrawn_);
+    withdrawn_.clear();
     for (PerceivedGoal& g : pending_) {
       tell(g, t, arrival);
       active_.push_back(std::move(g));
@@ -290,6 +292,7 @@ class HomeRun {
         summary_.within_window += within;
         perception_->comforted(*g, t);
         collect_from(g->senior, t);
+        withdraw_window(*g, t);
         g = goals.erase(g);
       } else if (t > g->window_end + 1e-6) {
         LogEvent e{"window_missed", t, g->senior, {}, {}};
@@ -303,6 +306,22 @@ class HomeRun {
         ++g;
       }
     }
+  }
+
+  // A settled goal's window closes for nobody: its closing literal leaves
+  // the world, the belief and the home's problem at once, and the running
+  // mission's at the next arrival, so that it cannot end a later window of
+  // the same senior early.
+  void withdraw_window(const PerceivedGoal& g, double t) {
+    if (g.window_end <= t) return;  // closed already
+    pddl::TimedInitialLiteral close;
+    close.time = g.window_end;
+    close.positive = false;
+    close.atom = domains::senior_atom(g.window, g.senior);
+    std::erase_if(base_.timed_literals, [&](const pddl::TimedInitialLiteral& l) { return repair::same_literal(l, close); });
+    belief_.withdraw(close);
+    world_.cancel({g.window, g.senior}, false, g.window_end);
+    withdrawn_.push_back(close);
   }
 
   void collect_from(const std::string& senior, double t) {
@@ -533,6 +552,7 @@ class HomeRun {
   std::unique_ptr<repair::RepairStrategy> strategy_;
   std::vector<PerceivedGoal> pending_, active_;
   std::vector<PerceivedGoal> unplannable_;  // no plan found: they wait for their windows to close
+  std::vector<pddl::TimedInitialLiteral> withdrawn_;  // windows of settled goals, for the running mission
   bool replan_ = false;
   pddl::Problem current_problem_;
   bool merge_blocked_ = false;

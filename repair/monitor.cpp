@@ -399,6 +399,10 @@ class Execution {
     world_.advance(t);  // what the deliberation scheduled for now
     if (belief_.observe(world_.observe())) ++news_;
     for (const auto& [fact, value] : arrival->facts) belief_.told(fact, value);
+    for (const pddl::TimedInitialLiteral& gone : arrival->withdrawn) {
+      belief_.withdraw(gone);
+      std::erase_if(problem_.timed_literals, [&](const pddl::TimedInitialLiteral& l) { return same_literal(l, gone); });
+    }
     for (const pddl::TimedInitialLiteral& l : arrival->timed_literals) belief_.expect(l);
     pddl::Problem merged = problem_;
     pddl::Condition all;

@@ -75,6 +75,9 @@ struct GoalArrival {
   // window is open.
   std::vector<std::pair<AtomKey, bool>> facts;
   std::vector<pddl::TimedInitialLiteral> timed_literals;  // windows closing
+  // Literals no longer to come: the windows of goals settled since the last
+  // arrival, which must not close a new window early.
+  std::vector<pddl::TimedInitialLiteral> withdrawn;
   std::string motivation;
 };
 

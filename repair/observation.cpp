@@ -155,6 +155,10 @@ void Belief::expect(const pddl::TimedInitialLiteral& literal) {
   timed_literals_.insert(later, literal);
 }
 
+void Belief::withdraw(const pddl::TimedInitialLiteral& literal) {
+  std::erase_if(timed_literals_, [&](const pddl::TimedInitialLiteral& l) { return same_literal(l, literal); });
+}
+
 void Belief::act(const GroundTask& task, ActionId action, bool start, double duration) {
   apply_snap_effects(task, action, start, duration, state_);
 }

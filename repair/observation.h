@@ -78,6 +78,8 @@ class Belief {
   // literal that will close it.
   void told(const AtomKey& key, bool value);
   void expect(const pddl::TimedInitialLiteral& literal);
+  // A literal expected no more (a goal settled before its window closes).
+  void withdraw(const pddl::TimedInitialLiteral& literal);
 
   const WorldState& state() const { return state_; }
   // Things the problem does not name that the camera has seen, the latest

@@ -1,16 +1,10 @@
 #include "repair/world_simulator.h"
 
 #include <algorithm>
-
+#include <cmath>
 
 namespace alplan::repair {
 namespace {
-
-AtomKey key_of(const pddl::Atom& atom) {
-  AtomKey key{atom.name};
-  for (const pddl::Term& t : atom.args) key.push_back(t.name);
-  return key;
-}
 
 // Running actions ordered by when they are expected to end (by name among
 // equal ends, as the map holds them).
@@ -102,6 +96,12 @@ void WorldSimulator::schedule(const std::vector<ExogenousEvent>& events) {
   pending_.insert(pending_.end(), events.begin(), events.end());
   std::stable_sort(pending_.begin(), pending_.end(),
                    [](const ExogenousEvent& a, const ExogenousEvent& b) { return a.time < b.time; });
+}
+
+void WorldSimulator::cancel(const AtomKey& atom, bool value, double time) {
+  std::erase_if(pending_, [&](const ExogenousEvent& e) {
+    return e.atom == atom && e.value == value && std::abs(e.time - time) < 1e-9;
+  });
 }
 
 double WorldSimulator::finish_running(double now) {

@@ -68,6 +68,9 @@ class WorldSimulator : public World, public ObjectRecognizer {
   // More events, from now on (a home's deliberation opens comfort windows
   // and draws failures against each new plan).
   void schedule(const std::vector<ExogenousEvent>& events);
+  // Events still to come that set `atom` to `value` at `time`, dropped (a
+  // window closing for a goal already settled).
+  void cancel(const AtomKey& atom, bool value, double time);
 
   // Lets every running action end as expected (a mission given up leaves
   // a robot mid-move, and it still arrives); returns when the last ends,

@@ -6,6 +6,16 @@
 
 namespace alplan::repair {
 
+AtomKey key_of(const pddl::Atom& atom) {
+  AtomKey key{atom.name};
+  for (const pddl::Term& t : atom.args) key.push_back(t.name);
+  return key;
+}
+
+bool same_literal(const pddl::TimedInitialLiteral& a, const pddl::TimedInitialLiteral& b) {
+  return a.time == b.time && a.positive == b.positive && key_of(a.atom) == key_of(b.atom);
+}
+
 pddl::Atom atom_of(const AtomKey& key) {
   pddl::Atom atom;
   atom.name = key.front();

@@ -20,6 +20,11 @@ namespace alplan::repair {
 // A ground atom or function term: the head, then the arguments, lower-case.
 using AtomKey = std::vector<std::string>;
 
+// The key of a ground atom of the parser's AST.
+AtomKey key_of(const pddl::Atom& atom);
+// The same literal at the same time, wherever each was written.
+bool same_literal(const pddl::TimedInitialLiteral& a, const pddl::TimedInitialLiteral& b);
+
 std::string to_string(const AtomKey& key);  // "(be robot1 kitchen1)"
 // The atom (or function term) a key names, as the parser's AST holds it.
 pddl::Atom atom_of(const AtomKey& key);

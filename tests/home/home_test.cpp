@@ -212,3 +212,34 @@ TEST_CASE("every planner call counts in the latency figures, those that found no
 }
 
 }  // namespace alplan::home
+
+namespace alplan::home {
+
+TEST_CASE("a settled goal's window no longer closes a later one", "[home]") {
+  // senior1 terrified at 300, seen at 340: a window to 940. With a grace of
+  // 30 s the face is read again while the body is still stressed, so goals
+  // for senior1 follow one another, each with a new window; the one seen at
+  // 930 is soothed from 930 to 940 with the glass still at hand. The first
+  // window's close at 940 ended that soothing's window before it was withdrawn
+  // (the goal was then dropped as having no plan, and missed).
+  HomeSettings s = default_home_settings(kAssistedLiving);
+  s.until = 1200.0;
+  s.failure_chance = 0.0;
+  s.grace_s = 30.0;
+  s.object_return_s = 30.0;
+  s.script = {{"senior1", 300.0, "terrified"}};
+  EventLog log;
+  const HomeSummary summary = run_home(s, log);
+  std::size_t comforted = 0, after_first_close = 0;
+  for (const LogEvent& e : log.events()) {
+    if (e.type != "comforted" || e.senior != "senior1") continue;
+    ++comforted;
+    CHECK(e.payload.at("within_window").get<bool>());
+    after_first_close += e.time > 940.0;
+  }
+  CHECK(comforted >= 2);
+  CHECK(after_first_close >= 1);
+  CHECK(summary.windows_missed == 0);
+}
+
+}  // namespace alplan::home
