@@ -55,7 +55,11 @@ void add_deliberation_options(CLI::App& cmd, DeliberationSettings& s) {
   cmd.add_option("--problem", s.problem, "The home's problem file in that folder (its goal is replaced)");
   cmd.add_option("--face", s.face, "An image of the senior's face (the pretrained emotion network reads it)");
   cmd.add_option("--emotion", s.emotion, "The emotion, when no face image is at hand (said to be given)");
-  cmd.add_option("--looks", s.looks, "Times the robot looks at the face (the boredom rule needs repeated neutral looks)");
+  cmd.add_option("--looks", s.looks,
+                 "Looks at the face per stress event, --look-interval apart (the boredom rule needs neutral looks at "
+                 "several times; one image read at one instant is one look)");
+  cmd.add_option("--look-interval", s.look_interval, "Seconds the robot waits between two looks at the face")
+      ->check(CLI::Range(0.0, 3600.0));
   cmd.add_option("--camera", s.camera, "Folder with a subfolder of images per location: what the robot's camera sees");
   cmd.add_option("--unavailable", s.unavailable, "OBJECT@TIME: the object becomes unavailable then (repeatable)");
   cmd.add_option("--strategy", s.strategy, "Repair strategy: replan, substitute, suggest, patch, adapt");
@@ -70,6 +74,7 @@ home::DeliberatorSettings library_settings(const DeliberationSettings& s) {
   out.face = s.face;
   out.emotion = s.emotion;
   out.looks = s.looks;
+  out.look_interval_s = s.look_interval;
   out.camera = s.camera;
   out.events = scripted_events(s.unavailable);
   out.strategy = s.strategy;

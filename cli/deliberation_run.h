@@ -22,7 +22,8 @@ struct DeliberationSettings {
   std::string problem = "paper-scenario-1.pddl";
   std::string face;
   std::string emotion;
-  int looks = 3;
+  int looks = 1;
+  double look_interval = 20.0;
   std::string camera;
   std::vector<std::string> unavailable;  // OBJECT@TIME
   std::string strategy = "substitute";
@@ -45,6 +46,8 @@ class Deliberator {
   // when the run ends with an explained failure; throws CommandInputError
   // on an unreadable face image.
   int on_stress(const std::string& senior, const perception::StressState& stress);
+  // The senior is calm again: their stress episode ends.
+  void on_calm(const std::string& senior) { deliberator_.on_calm(senior); }
 
  private:
   home::Deliberator deliberator_;

@@ -150,6 +150,7 @@ int run_serve(const ServeOptions& o) {
       if (e) {
         if (events_out) print_event(*events_out, *e);
         if (deliberator && e->stressed) deliberate_on_event(*deliberator, *e);
+        if (deliberator && !e->stressed) deliberator->on_calm(e->senior);
       } else if (events.closed()) {
         return;  // closed and drained
       }

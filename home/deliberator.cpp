@@ -1,7 +1,9 @@
 #include "home/deliberator.h"
 
+#include <chrono>
 #include <filesystem>
 #include <stdexcept>
+#include <thread>
 
 #include "home/deliberation.h"
 #include "perception/vision/coco_detector.h"
@@ -21,6 +23,15 @@ Deliberator::Deliberator(DeliberatorSettings settings)
 }
 
 Deliberator::~Deliberator() = default;
+
+void Deliberator::wait(double seconds) const {
+  if (seconds <= 0.0) return;
+  if (settings_.wait) {
+    settings_.wait(seconds);
+  } else {
+    std::this_thread::sleep_for(std::chrono::duration<double>(seconds));
+  }
+}
 
 std::optional<perception::EmotionReading> Deliberator::look(std::vector<std::string>& notes) {
   std::string note;
@@ -59,16 +70,25 @@ domains::MissionInput Deliberator::mission_input(const std::string& senior, cons
 
 Deliberation Deliberator::on_stress(const std::string& senior, const perception::StressState& stress) {
   Deliberation out;
-  // Layer 2: a look at the face, then another while no goal is decided
-  // (the boredom rule wants neutral faces at several looks); a given
-  // emotion is one reading, not one repeated.
+  // Layer 2: a look at the face, then, while no goal is decided, another
+  // after the look interval (the boredom rule wants neutral faces at
+  // several looks, at different times); a given emotion is one reading.
   const int looks = settings_.emotion.empty() ? std::max(1, settings_.looks) : 1;
   for (int look = 0; look < looks && !out.goal; ++look) {
+    if (look > 0) wait(settings_.look_interval_s);
     out.emotion = this->look(out.notes);
     if (!out.emotion) return out;
     out.goal = generator_.generate(senior, stress, *out.emotion);
   }
-  if (!out.goal) return out;
+  if (!out.goal) {
+    const std::size_t streak = generator_.neutral_streak(senior);
+    if (streak > 0) {
+      out.notes.push_back("[goal] the boredom rule wants " + std::to_string(generator_.options().bored_after_neutral) +
+                          " neutral looks in a row at different times; " + std::to_string(streak) +
+                          " so far in this episode");
+    }
+    return out;
+  }
   domains::ScenarioOptions options;
   options.assisted_living_dir = settings_.dir;
   options.strategy = settings_.strategy;

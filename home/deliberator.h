@@ -7,6 +7,8 @@
 // service) run; the home with many seniors is home_run.h.
 #pragma once
 
+#include <functional>
+
 #include <memory>
 #include <optional>
 #include <string>
@@ -27,7 +29,13 @@ struct DeliberatorSettings {
   std::string problem = "paper-scenario-1.pddl";
   std::string face;                    // an image of the senior's face, read at every look
   std::string emotion;                 // or the emotion, said to be given
-  int looks = 3;                       // looks at the face per stress event
+  // Looks at the face per stress event, `look_interval_s` apart in real
+  // time (the face read anew each time: a camera may have refreshed the
+  // image). One image read thrice at one instant is one look, not three.
+  int looks = 1;
+  double look_interval_s = 20.0;
+  // How the deliberator waits between looks; null: it sleeps. Tests record.
+  std::function<void(double seconds)> wait;
   std::string camera;                  // a folder of views per location
   std::vector<repair::ExogenousEvent> events;  // scripted: objects becoming unavailable
   std::string strategy = "substitute";
@@ -58,9 +66,13 @@ class Deliberator {
   // taken at different times. Throws std::invalid_argument on an
   // unreadable face image.
   Deliberation on_stress(const std::string& senior, const perception::StressState& stress);
+  // The senior is calm again: the stress episode is over, and the boredom
+  // rule's count of neutral looks starts afresh with the next.
+  void on_calm(const std::string& senior) { generator_.episode_ended(senior); }
 
  private:
   std::optional<perception::EmotionReading> look(std::vector<std::string>& notes);
+  void wait(double seconds) const;
   domains::MissionInput mission_input(const std::string& senior, const perception::GeneratedGoal& goal);
 
   DeliberatorSettings settings_;

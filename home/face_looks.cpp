@@ -6,7 +6,12 @@ namespace alplan::home {
 
 std::optional<PerceivedGoal> FaceLooks::look(const std::string& senior, const perception::StressState& stress, double t,
                                              const Look& read_face) {
-  if (!stress.stressed || busy_.count(senior)) return std::nullopt;
+  if (!stress.stressed) {
+    // Looks are taken only while stressed: calm again is where the episode ends.
+    generator_.episode_ended(senior);
+    return std::nullopt;
+  }
+  if (busy_.count(senior)) return std::nullopt;
   double& due = next_look_.try_emplace(senior, t).first->second;
   if (due > t) return std::nullopt;
   due = t + settings_.look_interval_s;
@@ -44,6 +49,7 @@ PerceivedGoal FaceLooks::goal_of(const std::string& senior, const perception::Ge
 
 void FaceLooks::comforted(const std::string& senior, double t) {
   busy_.erase(senior);
+  generator_.episode_ended(senior);
   next_look_[senior] = t + settings_.grace_s;
 }
 

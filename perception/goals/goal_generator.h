@@ -64,6 +64,16 @@ class EmotionGoalGenerator : public GoalGenerator {
 
   std::optional<GeneratedGoal> generate(const std::string& senior, const StressState& stress,
                                         const EmotionReading& emotion) override;
+  // The senior's stress episode is over (calm again, or comforted): the
+  // boredom rule's streak starts afresh, so that a senior judged bored once
+  // is not bored again on the first neutral look of a later episode.
+  void episode_ended(const std::string& senior) { neutral_streak_.erase(senior); }
+  // Neutral looks in a row while stressed, in the senior's current episode.
+  std::size_t neutral_streak(const std::string& senior) const {
+    const auto it = neutral_streak_.find(senior);
+    return it == neutral_streak_.end() ? 0 : it->second;
+  }
+  const GoalGenerationOptions& options() const { return options_; }
 
  private:
   GoalGenerationOptions options_;

@@ -6,6 +6,8 @@
 
 #include "domains/pddl_files.h"
 #include "home/event_log.h"
+#include "home/deliberator.h"
+#include "home/face_looks.h"
 #include "home/home_map.h"
 #include "home/home_run.h"
 #include "home/simulated_senior.h"
@@ -240,6 +242,64 @@ TEST_CASE("a settled goal's window no longer closes a later one", "[home]") {
   CHECK(comforted >= 2);
   CHECK(after_first_close >= 1);
   CHECK(summary.windows_missed == 0);
+}
+
+}  // namespace alplan::home
+
+namespace alplan::home {
+
+TEST_CASE("the boredom streak starts afresh with each stress episode", "[home]") {
+  HomeSettings s = default_home_settings(kAssistedLiving);
+  EventLog log;
+  FaceLooks looks(s, log);
+  const auto neutral = [](const std::string&, double) {
+    return std::optional(perception::EmotionReading{perception::Emotion::Neutral, 0.8f, false});
+  };
+  perception::StressState stressed;
+  stressed.stressed = true;
+  const perception::StressState calm;
+  // Three neutral looks at three times while stressed: bored.
+  CHECK_FALSE(looks.look("senior1", stressed, 0.0, neutral));
+  CHECK_FALSE(looks.look("senior1", stressed, s.look_interval_s, neutral));
+  const std::optional<PerceivedGoal> bored = looks.look("senior1", stressed, 2 * s.look_interval_s, neutral);
+  REQUIRE(bored);
+  CHECK(bored->emotion == "bored");
+  // Comforted, then stressed again after the grace: a new episode, whose
+  // first neutral look is one, not a fourth.
+  looks.comforted("senior1", 100.0);
+  CHECK_FALSE(looks.look("senior1", stressed, 100.0 + s.grace_s, neutral));
+  CHECK_FALSE(looks.look("senior1", stressed, 100.0 + s.grace_s + s.look_interval_s, neutral));
+  // Calm in between ends the episode too.
+  CHECK_FALSE(looks.look("senior1", calm, 1000.0, neutral));
+  CHECK_FALSE(looks.look("senior1", stressed, 1100.0, neutral));
+}
+
+}  // namespace alplan::home
+
+namespace alplan::home {
+
+TEST_CASE("deliberation looks at the face at several times, not thrice at one instant", "[home]") {
+  // The smiling astronaut (scikit-image's data): happy, so no goal and no
+  // end to the looks; between them the deliberator waits the interval.
+  DeliberatorSettings s;
+  s.dir = kAssistedLiving;
+  s.face = "/usr/lib/python3/dist-packages/skimage/data/astronaut.png";
+  s.looks = 3;
+  std::vector<double> waits;
+  s.wait = [&waits](double seconds) { waits.push_back(seconds); };
+  Deliberator deliberator(s);
+  perception::StressState stressed;
+  stressed.stressed = true;
+  const Deliberation d = deliberator.on_stress("senior1", stressed);
+  CHECK_FALSE(d.goal);
+  CHECK(d.notes.size() == 3);
+  CHECK(waits == std::vector<double>{20.0, 20.0});
+  // One look by default: one image at one instant is one look.
+  s.looks = 1;
+  waits.clear();
+  Deliberator once(s);
+  CHECK(once.on_stress("senior1", stressed).notes.size() == 1);
+  CHECK(waits.empty());
 }
 
 }  // namespace alplan::home

@@ -53,3 +53,15 @@ TEST_CASE("boredom: decided by the stated rule when the recogniser has no bored 
   // A model with a bored class is believed: neutral stays neutral.
   for (int i = 0; i < 5; ++i) CHECK_FALSE(generator.generate("senior3", stressed(), {Emotion::Neutral, 0.8f, true}));
 }
+
+TEST_CASE("boredom: the streak starts afresh with each stress episode") {
+  EmotionGoalGenerator generator;
+  for (int i = 0; i < 2; ++i) CHECK_FALSE(generator.generate("senior1", stressed(), {Emotion::Neutral, 0.8f, false}));
+  REQUIRE(generator.generate("senior1", stressed(), {Emotion::Neutral, 0.8f, false}));
+  // Without an end of episode, the next neutral look is a fourth in a row.
+  CHECK(generator.generate("senior1", stressed(), {Emotion::Neutral, 0.8f, false}));
+  generator.episode_ended("senior1");
+  CHECK_FALSE(generator.generate("senior1", stressed(), {Emotion::Neutral, 0.8f, false}));
+  CHECK_FALSE(generator.generate("senior1", stressed(), {Emotion::Neutral, 0.8f, false}));
+  CHECK(generator.generate("senior1", stressed(), {Emotion::Neutral, 0.8f, false}));
+}
