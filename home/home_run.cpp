@@ -324,6 +324,22 @@ class HomeRun {
     withdrawn_.push_back(close);
   }
 
+  // Objects the mission's repairs recognised join the home's problem, so
+  // that the next mission can plan with them (the shared belief knows where
+  // they stand).
+  void keep_recognized(const repair::ExecutionReport& report) {
+    for (const repair::RepairRecord& r : report.repairs) {
+      for (const repair::RecognizedObject& o : r.integrated) {
+        if (repair::object_type(base_, o.name)) continue;
+        pddl::TypedName object;
+        object.name = o.name;
+        object.types = {o.type};
+        base_.objects.push_back(std::move(object));
+        ++summary_.objects_recognized;
+      }
+    }
+  }
+
   void collect_from(const std::string& senior, double t) {
     if (settings_.object_return_s > 0) world_.schedule(returns_.collect_from(world_.observe(), senior, t));
   }
@@ -511,6 +527,7 @@ class HomeRun {
     m.start_time = t;
     m.on_event = [this](const repair::MonitorEvent& e) { on_monitor_event(e); };
     m.arrivals = [this](double now, const repair::WorldState& b) { return arrivals(now, b); };
+    m.belief = &belief_;  // one belief: what this mission learns, the next knows
     repair::MonitorOptions options;
     options.step_size = settings_.step_s;
     // A home's plan runs long and meets many changes; a repair each is fine.
@@ -524,7 +541,9 @@ class HomeRun {
     const double end = world_.finish_running(std::max(t + settings_.step_s, report.end_time));
     world_.advance(end);
     belief_.observe(world_.observe());
-    settle(end, world_.observe());
+    keep_recognized(report);
+    // Settled on what the robots believe, as during the mission.
+    settle(end, belief_.state());
     if (!report.goal_reached) {
       explain(end, m.motivation, report.outcome, "the goals not reached are planned again while their windows last");
     }
@@ -573,6 +592,7 @@ nlohmann::json HomeSummary::json() const {
   nlohmann::json j = {{"goals", goals},         {"comforted", comforted},     {"within_window", within_window},
           {"windows_missed", windows_missed}, {"failures", failures}, {"plans", plans},
           {"merges", merges},       {"repairs", repairs},         {"repairs_failed", repairs_failed},
+          {"objects_recognized", objects_recognized},
           {"planning_p50_s", quantile(planning_seconds, 0.5)}, {"planning_p95_s", quantile(planning_seconds, 0.95)},
           {"episodes", episodes},   {"episodes_detected", episodes_detected}, {"false_alarms", false_alarms}, {"end_time", end_time}};
   if (batteries.empty()) return j;  // runs without batteries: as before

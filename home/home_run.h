@@ -34,6 +34,7 @@ struct HomeSummary {
   std::size_t failures = 0, plans = 0, merges = 0;
   std::map<std::string, std::size_t> repairs;  // by strategy, repaired
   std::size_t repairs_failed = 0;
+  std::size_t objects_recognized = 0;  // by repairs, kept for the missions after
   // Every planner call, a plan found or not (a survivor statistic otherwise).
   std::vector<double> planning_seconds;
   // initial, merge, repair, proactive; none (no initial plan), merge_failed,

@@ -134,7 +134,7 @@ class Execution {
             RepairStrategy& strategy, ObjectRecognizer* recognizer, const TypeOntology* ontology)
       : options_(options), mission_(mission), world_(world), strategy_(strategy), recognizer_(recognizer),
         ontology_(ontology), problem_(mission.problem), motivation_(mission.motivation),
-        belief_(mission.problem, options.observation) {
+        belief_(mission.belief ? *mission.belief : own_belief_.emplace(mission.problem, options.observation)) {
     report_.initial_plan_text = plan_text(plan);
     report_.observation = options.observation.model;
     goal_ = problem_.goal ? pddl::write_condition(*problem_.goal) : "(and)";
@@ -538,7 +538,8 @@ class Execution {
   std::vector<Overrun> overruns_;
   ExecutionReport report_;
   std::unique_ptr<GroundingCache> grounding_;
-  Belief belief_;
+  std::optional<Belief> own_belief_;  // when the mission brings none
+  Belief& belief_;
   std::vector<WorldState> history_;
   std::size_t news_ = 0;  // observations that showed something new
   std::optional<DeferredFailure> deferred_;

@@ -103,6 +103,11 @@ struct Mission {
   std::function<void(const MonitorEvent&)> on_event;
   // Asked at every observation, with what the robot believes then. Optional.
   std::function<std::optional<GoalArrival>(double t, const WorldState& observed)> arrivals;
+  // The belief to keep: a home's, shared by its missions, so that what one
+  // mission's robot learns (an object gone, a substitute recognised, a
+  // sighting) is known to the next. None: the monitor keeps its own, made
+  // from the problem with MonitorOptions::observation.
+  Belief* belief = nullptr;
 };
 
 struct RepairRecord {

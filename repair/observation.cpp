@@ -149,6 +149,11 @@ bool Belief::observe(const WorldState& truth) {
 void Belief::told(const AtomKey& key, bool value) { state_.set(key, value); }
 
 void Belief::expect(const pddl::TimedInitialLiteral& literal) {
+  // A home and its mission's monitor may both be told of one window.
+  if (std::any_of(timed_literals_.begin(), timed_literals_.end(),
+                  [&](const pddl::TimedInitialLiteral& l) { return same_literal(l, literal); })) {
+    return;
+  }
   const auto later = std::upper_bound(
       timed_literals_.begin(), timed_literals_.end(), literal.time,
       [](double t, const pddl::TimedInitialLiteral& l) { return t < l.time; });

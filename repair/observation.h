@@ -77,7 +77,7 @@ class Belief {
   // emotion from the home's perception, a comfort window it opened and the
   // literal that will close it.
   void told(const AtomKey& key, bool value);
-  void expect(const pddl::TimedInitialLiteral& literal);
+  void expect(const pddl::TimedInitialLiteral& literal);  // once, however often told
   // A literal expected no more (a goal settled before its window closes).
   void withdraw(const pddl::TimedInitialLiteral& literal);
 

@@ -303,3 +303,37 @@ TEST_CASE("deliberation looks at the face at several times, not thrice at one in
 }
 
 }  // namespace alplan::home
+
+namespace alplan::home {
+
+TEST_CASE("a substitute recognised in one mission is planned with in the next", "[home]") {
+  // As `alplan home --seniors 12 --robots 2 --until 6100 --failure-chance 1
+  // --strategy substitute --seed 5`: at 3440 a repair recognises story_new3
+  // in a corridor; the mission of 6040 brings it to another senior.
+  HomeSettings s = default_home_settings(kAssistedLiving);
+  s.generate_seniors = 12;
+  s.generate_robots = 2;
+  s.until = 6100.0;
+  s.failure_chance = 1.0;
+  s.strategy = "substitute";
+  s.seed = 5;
+  s.script.clear();  // drawn episodes, as the command draws them
+  EventLog log;
+  const HomeSummary summary = run_home(s, log);
+  CHECK(summary.objects_recognized >= 1);
+  int recognised_in = 0;
+  bool used_later = false;
+  for (const LogEvent& e : log.events()) {
+    if (e.type == "repair" && e.payload.at("how").get<std::string>().find("recognised story_new3") != std::string::npos) {
+      recognised_in = e.payload.at("plan_id").get<int>();
+    }
+    if (e.type == "plan" && recognised_in > 0 && e.payload.at("reason") == "initial" &&
+        e.payload.at("plan").get<std::string>().find("story_new3") != std::string::npos) {
+      used_later = true;
+    }
+  }
+  CHECK(recognised_in > 0);
+  CHECK(used_later);
+}
+
+}  // namespace alplan::home
