@@ -41,7 +41,8 @@ extern "C" __attribute__((visibility("default"))) bool alplan_drawing_camera(con
     const alplan::perception::TrainedObjectClassifier trained = alplan::perception::train_object_classifier_on_drawings({});
     *info = {{"recognizer", "the paper's CNN on drawings of each thing's true type"},
              {"classifier_test_accuracy", trained.test_accuracy},
-             {"training_seconds", trained.seconds}};
+             {"training_seconds", trained.seconds},
+             {"model_from_cache", trained.from_cache}};
     *make = [ontology, classifier = trained.classifier](alplan::repair::ObjectRecognizer& truth) {
       return std::unique_ptr<alplan::repair::ObjectRecognizer>(
           std::make_unique<alplan::perception::DrawingObjectRecognizer>(truth, classifier, *ontology));

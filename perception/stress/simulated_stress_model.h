@@ -22,7 +22,10 @@ struct SimulatedModelSpec {
 };
 
 // Throws std::invalid_argument when the spec yields too few usable windows
-// of a class to train on.
-StressClassifier train_simulated_stress_classifier(const SimulatedModelSpec& spec);
+// of a class to train on. Kept in the model cache (model_cache.h), keyed by
+// the spec: `from_cache` tells whether this run trained it.
+StressClassifier train_simulated_stress_classifier(const SimulatedModelSpec& spec, bool* from_cache = nullptr);
+// Always trains (the cache's trainer, and runs that measure training).
+StressClassifier train_uncached(const SimulatedModelSpec& spec);
 
 }  // namespace alplan::perception

@@ -28,11 +28,13 @@ struct DrawingCameraOptions {
 };
 
 // The paper's CNN trained on generated drawings of every drawable class,
-// and its accuracy on held-out drawings.
+// and its accuracy on held-out drawings; kept in the model cache
+// (model_cache.h), keyed by the options, so that later runs read it.
 struct TrainedObjectClassifier {
   std::shared_ptr<const CnnClassifier> classifier;
   double test_accuracy = 0.0;
-  double seconds = 0.0;
+  double seconds = 0.0;     // training, or reading the cached model
+  bool from_cache = false;  // model_cache.h: trained by an earlier run
 };
 TrainedObjectClassifier train_object_classifier_on_drawings(const DrawingCameraOptions& options);
 
