@@ -1,6 +1,7 @@
 #include "repair/monitor.h"
 
 #include <algorithm>
+#include <set>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -165,6 +166,22 @@ class Execution {
         if (!failure) return done(true, "the goal " + goal_ + " holds at " + time_text(t), t);
       }
       if (failure && foreseen && waiting_for_news(*failure)) failure.reset();
+      if (failure && awaiting_overrun(*failure)) {
+        // Nothing is dispatched meanwhile: the plan's next steps need it.
+        awaited_ = failure;
+        t += options_.step_size;  // look again soon: the plan's own times are stale
+        continue;
+      }
+      if (!failure && awaited_) {
+        if (awaiting_overrun(*awaited_)) {
+          t += options_.step_size;
+          continue;
+        }
+        // Seen to end: the steps that waited on it are late, plan again now
+        // (the failure keeps its time: the condition failed then).
+        failure = awaited_;
+      }
+      awaited_.reset();
       if (failure) {
         const Attempt attempt = repair(*failure, foreseen, observed, t);
         if (attempt == Attempt::Ended) return report_;
@@ -229,7 +246,7 @@ class Execution {
     r.plan = &plan_;
     r.failure = &failure;
     r.observed = observed;
-    r.in_progress = world_.in_progress();
+    r.in_progress = known_in_progress(t);
     r.now = t;
     r.robot_location = location_of(observed, mission_.robot);
     r.sightings = belief_.sightings();
@@ -281,6 +298,32 @@ class Execution {
   enum class Attempt : unsigned char { Repaired, Deferred, Ended };
 
   // A foreseen failure tried before, with nothing new seen since.
+  // An action seen to overrun whose end will make the failed condition
+  // hold: the robot cannot know how much longer it takes (the world's own
+  // estimate is not a sensor), so it waits to see the action end and
+  // repairs from what it sees then, instead of planning around a guess.
+  bool awaiting_overrun(const Violation& failure) const {
+    if (overrunning_.empty()) return false;
+    for (const ActionInProgress& a : world_.in_progress()) {
+      if (!overrunning_.count(a.name)) continue;
+      for (const AtomKey& k : a.adds) {
+        if (to_string(k) == failure.condition) return true;
+      }
+    }
+    return false;
+  }
+
+  // What the robot knows of its actions underway: which run, what their
+  // ends change, and when they end as planned; an action seen to overrun
+  // ends, as far as it knows, no earlier than its next look.
+  std::vector<ActionInProgress> known_in_progress(double t) const {
+    std::vector<ActionInProgress> known = world_.in_progress();
+    for (ActionInProgress& a : known) {
+      if (overrunning_.count(a.name)) a.expected_end = t + options_.step_size;
+    }
+    return known;
+  }
+
   bool waiting_for_news(const Violation& failure) const {
     return deferred_ && deferred_->action == failure.action && deferred_->condition == failure.condition &&
            deferred_->news == news_;
@@ -482,6 +525,7 @@ class Execution {
   // conditions of the steps after it, as it always has.
   void overran(const std::shared_ptr<const GroundTask>& task, ActionId action, double duration) {
     const GroundAction& a = task->actions[action];
+    overrunning_.insert(task->action_name(a));
     if (a.over_all.empty() || a.continuous.empty()) return;
     overruns_.push_back({task, std::make_shared<StateMapping>(*task), action, duration, task->action_name(a)});
   }
@@ -491,8 +535,8 @@ class Execution {
   // the timeline's own entries end where the plan said the actions would.
   std::optional<Violation> check_overruns(double t, const WorldState& observed) {
     if (overruns_.empty()) return std::nullopt;
-    std::map<std::string, double> running;
-    for (const ActionInProgress& a : world_.in_progress()) running[a.name] = a.expected_end;
+    std::set<std::string> running;  // whether each still runs, not when it will end
+    for (const ActionInProgress& a : world_.in_progress()) running.insert(a.name);
     std::erase_if(overruns_, [&](const Overrun& o) { return !running.count(o.name); });
     for (Overrun& o : overruns_) {
       if (o.reported) continue;
@@ -511,7 +555,7 @@ class Execution {
       Violation v;
       v.kind = Violation::Kind::UnsatisfiedInvariant;
       v.time = t;
-      v.until = running[o.name];
+      v.until = t + options_.step_size;  // its end is unknown: at the earliest, the next look
       v.action = o.name;
       v.condition = describe(*o.task, a.over_all, *failed);
       return v;
@@ -536,6 +580,8 @@ class Execution {
   Progress progress_{0};
   std::vector<CommittedEnd> committed_;
   std::vector<Overrun> overruns_;
+  std::set<std::string> overrunning_;  // actions seen to run past their planned end
+  std::optional<Violation> awaited_;    // a failure put off until an overrun is seen to end
   ExecutionReport report_;
   std::unique_ptr<GroundingCache> grounding_;
   std::optional<Belief> own_belief_;  // when the mission brings none

@@ -130,7 +130,11 @@ TEST_CASE("an action that takes longer is committed to and planned around") {
   const ScenarioRun run = run_paper_scenario(s, options("replan"));
   const repair::RepairRecord& r = only_repair(run);
   CHECK(r.failure.condition == "(be robot1 corridor2)");
-  // The robot reaches corridor2 at 100.002; the next move starts after it.
+  // The robot reaches corridor2 at 100.002, which it cannot know before: it
+  // waits to see the move end, looking every step, and plans from there.
+  CHECK(r.failure.time == Approx(80.004));
+  CHECK(std::any_of(run.report.events.begin(), run.report.events.end(),
+                    [](const std::string& e) { return e.rfind("100.004: repaired", 0) == 0; }));
   CHECK(r.plan_text.rfind("100.", 0) == 0);
   CHECK(run.report.goal_reached);
   // Nothing new in the world: the repair maps onto the grounding made when
