@@ -6,6 +6,7 @@
 #include <fstream>
 #include <memory>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -266,6 +267,7 @@ class HomeRun {
     arrival.withdrawn = std::move(withdrawn_);
     withdrawn_.clear();
     for (PerceivedGoal& g : pending_) {
+      mission_seniors_.insert(g.senior);
       tell(g, t, arrival);
       active_.push_back(std::move(g));
       ++summary_.goals;
@@ -419,8 +421,11 @@ class HomeRun {
     }
   }
 
+  // An explanation names the seniors of the mission it explains.
   void explain(double t, const std::string& why, const std::string& what, const std::string& how) {
-    LogEvent e{"explanation", t, {}, {}, {}};
+    std::string seniors;
+    for (const std::string& s : mission_seniors_) seniors += (seniors.empty() ? "" : ", ") + s;
+    LogEvent e{"explanation", t, seniors, {}, {}};
     e.payload = {{"why", why}, {"what", what}, {"how", how}};
     log_.write(e);
   }
@@ -492,6 +497,8 @@ class HomeRun {
   // executes under the monitor until the plan ends; returns the time then.
   double mission(double t) {
     replan_ = false;
+    mission_seniors_.clear();
+    for (const PerceivedGoal& g : active_) mission_seniors_.insert(g.senior);
     repair::GoalArrival arrival = take_pending(t);
     std::string motivation;
     for (const PerceivedGoal& g : active_) motivation += (motivation.empty() ? "" : "; ") + g.motivation;
@@ -572,6 +579,7 @@ class HomeRun {
   std::vector<PerceivedGoal> pending_, active_;
   std::vector<PerceivedGoal> unplannable_;  // no plan found: they wait for their windows to close
   std::vector<pddl::TimedInitialLiteral> withdrawn_;  // windows of settled goals, for the running mission
+  std::set<std::string> mission_seniors_;  // whose goals the mission in course serves
   bool replan_ = false;
   pddl::Problem current_problem_;
   bool merge_blocked_ = false;

@@ -26,7 +26,7 @@ struct ScriptedEpisode {
 // so that replay refuses a log it cannot reproduce instead of reporting a
 // difference. 2: relevance analysis, deferred anytime, dispatch, objects
 // that come back, drifting seniors (2026-11-25).
-inline constexpr int kHomeLogVersion = 2;
+inline constexpr int kHomeLogVersion = 3;
 
 struct HomeSettings {
   std::string domains_dir;  // domain.pddl and types.ttl

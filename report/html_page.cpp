@@ -1,5 +1,6 @@
 #include "report/html_page.h"
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -47,6 +48,23 @@ document.getElementById('versions').textContent =
   ' and vega-embed ' + vegaEmbed.version + ', inlined in this page.';
 )";
 
+// Each robot's busy share, in all and hour by hour.
+void utilisation_table(std::ostream& out, const RunSummary& s) {
+  out << "<table id=\"utilisation\">\n<tr><th>robot</th><th>busy (s)</th><th>busy share</th>"
+         "<th>busy share per hour of the run</th></tr>\n";
+  for (const RobotUtilisation& u : s.robots) {
+    std::string hours;
+    for (double share : u.busy_share_per_hour) {
+      hours += (hours.empty() ? "" : " ") + std::to_string(static_cast<int>(std::lround(100.0 * share))) + "%";
+    }
+    const double share = s.end_time > 0 ? u.busy_seconds / s.end_time : 0.0;
+    out << "<tr><td>" << html_escape(u.robot) << "</td><td class=\"n\">" << number(u.busy_seconds)
+        << "</td><td class=\"n\">" << std::lround(100.0 * share) << "%</td><td>" << hours << "</td></tr>\n";
+  }
+  if (s.robots.empty()) out << "<tr><td colspan=\"4\">no robot acted in the log</td></tr>\n";
+  out << "</table>\n";
+}
+
 void row(std::ostream& out, const std::string& name, double value) {
   out << "<tr><th>" << html_escape(name) << "</th><td class=\"n\">" << number(value) << "</td></tr>\n";
 }
@@ -64,13 +82,18 @@ void summary_section(std::ostream& out, const RunSummary& s) {
   row(out, "explanations", s.explanations);
   row(out, "last event at (s)", s.end_time);
   out << "</table>\n<table id=\"seniors\">\n<tr><th>senior</th><th>goals</th><th>comforted</th>"
-         "<th>within window</th><th>windows missed</th></tr>\n";
+         "<th>within window</th><th>late</th><th>mean lateness (s)</th><th>worst lateness (s)</th>"
+         "<th>windows missed</th></tr>\n";
   for (const SeniorSummary& p : s.seniors) {
     out << "<tr><td>" << html_escape(p.senior) << "</td><td class=\"n\">" << p.goals << "</td><td class=\"n\">"
-        << p.comforted << "</td><td class=\"n\">" << p.within_window << "</td><td class=\"n\">" << p.windows_missed
-        << "</td></tr>\n";
+        << p.comforted << "</td><td class=\"n\">" << p.within_window << "</td><td class=\"n\">" << p.late
+        << "</td><td class=\"n\">" << (p.late ? number(p.lateness_total / p.late) : std::string("-"))
+        << "</td><td class=\"n\">" << (p.late ? number(p.lateness_max) : std::string("-")) << "</td><td class=\"n\">"
+        << p.windows_missed << "</td></tr>\n";
   }
-  out << "</table>\n<table id=\"repairs\">\n<tr><th>repair strategy</th><th>attempts</th><th>repaired</th>"
+  out << "</table>\n";
+  utilisation_table(out, s);
+  out << "<table id=\"repairs\">\n<tr><th>repair strategy</th><th>attempts</th><th>repaired</th>"
          "<th>seconds</th></tr>\n";
   for (const StrategySummary& r : s.repairs) {
     out << "<tr><td>" << html_escape(r.strategy) << "</td><td class=\"n\">" << r.attempts << "</td><td class=\"n\">"
@@ -112,15 +135,30 @@ void chart_section(std::ostream& out, const char* id, const char* title, const c
   out << "</div>\n";
 }
 
-void settings_line(std::ostream& out, const EventLog& log, const std::string& log_name) {
-  out << "<p class=\"meta\">From <code>" << html_escape(log_name) << "</code>";
-  if (log.settings.is_object()) {
-    for (const auto& [key, value] : log.settings.items()) {
-      out << " &middot; " << html_escape(key) << ": "
-          << html_escape(value.is_string() ? value.get<std::string>() : value.dump());
-    }
+// A setting as a person reads it: text as it is, a list one item after
+// another, an object as "key value" pairs; never a JSON blob.
+std::string readable(const json& value) {
+  if (value.is_string()) return value.get<std::string>();
+  if (value.is_boolean()) return value.get<bool>() ? "yes" : "no";
+  if (value.is_number()) return number(value.get<double>());
+  if (value.is_null()) return "-";
+  std::string out;
+  if (value.is_array()) {
+    for (const json& item : value) out += (out.empty() ? "" : "; ") + readable(item);
+    return out.empty() ? "(none)" : out;
   }
-  out << "</p>\n";
+  for (const auto& [key, item] : value.items()) out += (out.empty() ? "" : ", ") + key + " " + readable(item);
+  return out.empty() ? "(none)" : out;
+}
+
+void settings_line(std::ostream& out, const EventLog& log, const std::string& log_name) {
+  out << "<p class=\"meta\">From <code>" << html_escape(log_name) << "</code></p>\n";
+  if (!log.settings.is_object()) return;
+  out << "<details><summary>Settings of the run</summary>\n<table id=\"settings\">\n";
+  for (const auto& [key, value] : log.settings.items()) {
+    out << "<tr><th>" << html_escape(key) << "</th><td>" << html_escape(readable(value)) << "</td></tr>\n";
+  }
+  out << "</table></details>\n";
 }
 
 }  // namespace

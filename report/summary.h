@@ -16,6 +16,18 @@ struct SeniorSummary {
   int comforted = 0;
   int within_window = 0;
   int windows_missed = 0;
+  // Comforted after the window closed: how late, summed and at worst.
+  int late = 0;
+  double lateness_total = 0;
+  double lateness_max = 0;
+};
+
+// How busy a robot was: the union of its actions' spans (action_start to
+// action_end), in all and per hour of the run.
+struct RobotUtilisation {
+  std::string robot;
+  double busy_seconds = 0;
+  std::vector<double> busy_share_per_hour;  // hour h: [3600 h, 3600 (h + 1)), up to the last event
 };
 
 struct StrategySummary {
@@ -48,6 +60,7 @@ struct RunSummary {
   std::vector<SeniorSummary> seniors;      // those the log mentions, by name
   std::vector<StrategySummary> repairs;    // by strategy name
   std::vector<BatterySummary> batteries;   // by robot; empty without batteries
+  std::vector<RobotUtilisation> robots;    // by robot, those the log names
 };
 
 RunSummary summarize(const EventLog& log);

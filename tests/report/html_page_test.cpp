@@ -67,3 +67,17 @@ TEST_CASE("load_vega_libraries names the missing file and how to get it") {
   CHECK(r.error.rfind("/nonexistent/vega.min.js: error: cannot read the charting library", 0) == 0);
   CHECK(r.error.find("scripts/fetch_vega") != std::string::npos);
 }
+
+TEST_CASE("the settings are a table a person reads, not JSON") {
+  const EventLog log = test::log_of(
+      R"J({"type":"observation","time":0,"what":"home","home":{"name":"h"},"settings":{"strategy":"substitute","failure_kinds":["sibling","moves"],"battery":false,"until":3600,"battery_options":{"capacity":100}}})J" "\n"
+      R"J({"type":"explanation","time":5,"senior":"senior1, senior2","why":"w","what":"x","how":"y"})J" "\n");
+  const std::string page = render_report_page(log, "run.jsonl", {"/*vega*/", "/*vega-lite*/", "/*embed*/"});
+  CHECK(page.find("<table id=\"settings\">") != std::string::npos);
+  CHECK(page.find("<th>failure_kinds</th><td>sibling; moves</td>") != std::string::npos);
+  CHECK(page.find("<th>battery</th><td>no</td>") != std::string::npos);
+  CHECK(page.find("<th>battery_options</th><td>capacity 100</td>") != std::string::npos);
+  CHECK(page.find("[\"sibling\"") == std::string::npos);
+  CHECK(page.find("<td>senior1, senior2</td>") != std::string::npos);
+  CHECK(page.find("<table id=\"utilisation\">") != std::string::npos);
+}

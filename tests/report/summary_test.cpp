@@ -79,3 +79,33 @@ TEST_CASE("the summary states each robot's lowest battery and whether it went be
   const EventLog plain = log_of(R"J({"type":"action_end","time":10,"robot":"robot1","action":"(move robot1 a b)"})J" "\n");
   CHECK(summarize(plain).batteries.empty());
 }
+
+TEST_CASE("each senior's lateness and each robot's busy share, hour by hour") {
+  const EventLog log = log_of(
+      R"J({"type":"goal","time":1,"senior":"senior1","window_end":50})J" "\n"
+      R"J({"type":"comforted","time":80,"senior":"senior1","window_end":50,"within_window":false})J" "\n"
+      R"J({"type":"goal","time":100,"senior":"senior1","window_end":150})J" "\n"
+      R"J({"type":"comforted","time":160,"senior":"senior1","window_end":150,"within_window":false})J" "\n"
+      R"J({"type":"goal","time":100,"senior":"senior2","window_end":150})J" "\n"
+      R"J({"type":"comforted","time":120,"senior":"senior2","window_end":150,"within_window":true})J" "\n"
+      R"J({"type":"action_start","time":3000,"robot":"robot1","action":"(move robot1 a b)"})J" "\n"
+      R"J({"type":"action_start","time":3100,"robot":"robot1","action":"(look robot1)"})J" "\n"
+      R"J({"type":"action_end","time":3300,"robot":"robot1","action":"(look robot1)"})J" "\n"
+      R"J({"type":"action_end","time":4200,"robot":"robot1","action":"(move robot1 a b)"})J" "\n"
+      R"J({"type":"action_start","time":6000,"robot":"robot2","action":"(move robot2 a b)"})J" "\n"
+      R"J({"type":"explanation","time":7200,"senior":"senior1, senior2","why":"w","what":"x","how":"y"})J" "\n");
+  const RunSummary s = summarize(log);
+  REQUIRE(s.seniors.size() == 2);  // the explanation's list is no senior of its own
+  CHECK(s.seniors[0].late == 2);
+  CHECK(s.seniors[0].lateness_total == Approx(40.0));  // 30 + 10
+  CHECK(s.seniors[0].lateness_max == Approx(30.0));
+  CHECK(s.seniors[1].late == 0);
+  REQUIRE(s.robots.size() == 2);
+  // robot1: 3000-4200, the look inside it counted once; 600 s in hour 0, 600 s in hour 1.
+  CHECK(s.robots[0].busy_seconds == Approx(1200.0));
+  REQUIRE(s.robots[0].busy_share_per_hour.size() == 2);
+  CHECK(s.robots[0].busy_share_per_hour[0] == Approx(600.0 / 3600.0));
+  CHECK(s.robots[0].busy_share_per_hour[1] == Approx(600.0 / 3600.0));
+  // robot2's move never ended in the log: busy to its last event.
+  CHECK(s.robots[1].busy_seconds == Approx(1200.0));
+}
