@@ -54,6 +54,7 @@ void add_bench_home_command(CLI::App* bench, int& exit_code) {
   s.generate_robots = 4;
   s.generate_rooms = 50;
   s.generate_objects = 400;
+  s.score_meetable = true;
   CLI::App* cmd = bench->add_subcommand("home", kBenchHomeHelp);
   cmd->add_option("--seniors", s.generate_seniors, "Seniors of the generated home")->check(CLI::Range(1, 1000));
   cmd->add_option("--robots", s.generate_robots, "Robots")->check(CLI::Range(1, 100));
@@ -65,6 +66,8 @@ void add_bench_home_command(CLI::App* bench, int& exit_code) {
   cmd->add_option("--strategy", s.strategy, "Repair strategy");
   cmd->add_option("--out", o->out, "Write bench-home.json here");
   cmd->add_option("--unplanned-dir", s.unplanned_dir, "Write each problem the planner found no plan for here (PDDL)");
+  cmd->add_flag("!--no-score-meetable", s.score_meetable,
+                "Skip asking, for each goal, whether one idle robot could have met its window alone");
   cmd->callback([o, &exit_code] { exit_code = guarded([&] { return run_bench_home(*o); }, "bench home"); });
 }
 

@@ -23,6 +23,8 @@ struct PerceivedGoal {
   pddl::Condition goal;
   std::string motivation, decided_by;
   double time = 0.0, window_end = 0.0;
+  // HomeSettings::score_meetable: one idle robot could have met the window.
+  bool meetable_alone = false;
 };
 
 // Perception scored against a simulation's truth, which only a simulated

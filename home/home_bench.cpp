@@ -54,6 +54,9 @@ nlohmann::json HomeBenchResult::json(const HomeSettings& settings) const {
           {"replanning", latency(replanning)},
           {"planning_by_reason", by_reason},
           {"comforted_within_window_share", static_cast<double>(summary.within_window) / goals},
+          {"meetable_goals", summary.meetable},
+          {"meetable_within_window_share",
+           static_cast<double>(summary.meetable_within_window) / static_cast<double>(std::max<std::size_t>(1, summary.meetable))},
           {"wall_seconds", wall_seconds},
           {"simulated_per_wall_second", settings.until / std::max(1e-9, wall_seconds)},
           {"events", events}};
@@ -84,6 +87,14 @@ void print_home_bench(std::ostream& out, const HomeSettings& settings, const Hom
                 s.comforted - s.within_window, s.windows_missed, s.failures, s.repairs_failed, settings.until,
                 r.wall_seconds, settings.until / std::max(1e-9, r.wall_seconds), s.episodes, s.episodes_detected, s.false_alarms);
   out << line;
+  if (settings.score_meetable) {
+    std::snprintf(line, sizeof line,
+                  "of the %zu goals one idle robot could have met alone, %zu within their windows (%.1f%%)\n",
+                  s.meetable, s.meetable_within_window,
+                  100.0 * static_cast<double>(s.meetable_within_window) /
+                      static_cast<double>(std::max<std::size_t>(1, s.meetable)));
+    out << line;
+  }
 }
 
 }  // namespace alplan::home

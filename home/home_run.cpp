@@ -269,11 +269,37 @@ class HomeRun {
     for (PerceivedGoal& g : pending_) {
       mission_seniors_.insert(g.senior);
       tell(g, t, arrival);
+      score_meetable(g, t);
       active_.push_back(std::move(g));
       ++summary_.goals;
     }
     pending_.clear();
     return arrival;
+  }
+
+  // Whether one robot, idle where the home believes it stands, could meet
+  // the goal's window alone: the goal's problem with that robot only and the
+  // window's close, planned from now (first plan, a quarter of the node
+  // limit: an unreachable window runs to it). Scoring; the run goes on as
+  // if it had not been asked.
+  void score_meetable(PerceivedGoal& g, double t) {
+    if (!settings_.score_meetable) return;
+    std::vector<std::string> all;
+    for (const Placed& r : loaded_.map.robots) all.push_back(r.name);
+    pddl::Problem goal_problem = base_;
+    goal_problem.goal = g.goal;
+    const pddl::Problem from_now = repair::reformulate(loaded_.home.domain, goal_problem, belief_.state(), {}, t, 0.0);
+    PlannerOptions scoring = replanner_;  // the first plan: feasibility is the question
+    scoring.node_limit = std::max<std::size_t>(1, settings_.planner_node_limit / 4);
+    for (const std::string& robot : all) {
+      pddl::Problem alone = with_robots_only(from_now, all, {robot});
+      require_return(alone, {robot});
+      if (repair::plan_in_process(loaded_.home.domain, alone, t, scoring).plan) {
+        g.meetable_alone = true;
+        ++summary_.meetable;
+        return;
+      }
+    }
   }
 
   // Goals reached or out of time, as the robot believes.
@@ -292,6 +318,7 @@ class HomeRun {
         log_.write(e);
         ++summary_.comforted;
         summary_.within_window += within;
+        summary_.meetable_within_window += within && g->meetable_alone;
         perception_->comforted(*g, t);
         collect_from(g->senior, t);
         withdraw_window(*g, t);

@@ -35,6 +35,9 @@ struct HomeSummary {
   std::map<std::string, std::size_t> repairs;  // by strategy, repaired
   std::size_t repairs_failed = 0;
   std::size_t objects_recognized = 0;  // by repairs, kept for the missions after
+  // With score_meetable: goals one idle robot could have met alone, and of
+  // those, the ones comforted within their windows.
+  std::size_t meetable = 0, meetable_within_window = 0;
   // Every planner call, a plan found or not (a survivor statistic otherwise).
   std::vector<double> planning_seconds;
   // initial, merge, repair, proactive; none (no initial plan), merge_failed,

@@ -88,6 +88,11 @@ struct HomeSettings {
   // Not part of the run (left out of json()): where to write, as PDDL, each
   // problem the planner found no plan for, to study the search offline.
   std::string unplanned_dir;
+  // Scoring only (bench home): for each goal, whether one robot, idle where
+  // the home believes it stands when the goal comes, could have met the
+  // window alone (a planner call per robot until one can); the run itself
+  // is unchanged. Not in the log's settings: it changes no event.
+  bool score_meetable = false;
 
   nlohmann::json json() const;
   // Throws std::invalid_argument naming a field of the wrong kind.

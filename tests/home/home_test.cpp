@@ -337,3 +337,31 @@ TEST_CASE("a substitute recognised in one mission is planned with in the next", 
 }
 
 }  // namespace alplan::home
+
+namespace alplan::home {
+
+TEST_CASE("bench home asks whether one idle robot could have met each window alone", "[home]") {
+  HomeSettings s = default_home_settings(kAssistedLiving);
+  s.until = 700.0;
+  s.failure_chance = 0.0;
+  s.script = {{"senior1", 300.0, "terrified"}};
+  s.score_meetable = true;
+  EventLog log;
+  const HomeSummary met = run_home(s, log);
+  CHECK(met.goals == 1);
+  CHECK(met.meetable == 1);  // water from the kitchen in 320 s, within 600
+  CHECK(met.meetable_within_window == 1);
+  // A window shorter than any robot's round trip to the kitchen.
+  s.terrified_window_s = 60.0;
+  EventLog short_log;
+  const HomeSummary unmet = run_home(s, short_log);
+  CHECK(unmet.goals >= 1);
+  CHECK(unmet.meetable == 0);
+  // Scoring changes nothing in the run.
+  s.score_meetable = false;
+  EventLog unscored;
+  run_home(s, unscored);
+  CHECK(unscored.events().size() == short_log.events().size());
+}
+
+}  // namespace alplan::home
