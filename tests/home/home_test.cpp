@@ -126,10 +126,6 @@ TEST_CASE("a script naming a senior the home lacks is refused", "[home]") {
   CHECK_THROWS_AS(run_home(settings, log), std::invalid_argument);
 }
 
-}  // namespace alplan::home
-
-namespace alplan::home {
-
 TEST_CASE("a senior's resting heart rate drifts slowly unless told not to", "[home]") {
   // The mean rate over the minutes around the drift's two extremes (a
   // 20-minute swing): apart by most of twice the drift with it, close without.
@@ -159,10 +155,6 @@ TEST_CASE("a senior's resting heart rate drifts slowly unless told not to", "[ho
   CHECK(swing(0.0) < 6.0);
 }
 
-}  // namespace alplan::home
-
-namespace alplan::home {
-
 TEST_CASE("replay refuses settings of another log version, naming both", "[home]") {
   const HomeSettings s = default_home_settings(kAssistedLiving);
   nlohmann::json j = s.json();
@@ -178,10 +170,6 @@ TEST_CASE("replay refuses settings of another log version, naming both", "[home]
   j["log_version"] = "two";
   CHECK_THROWS_AS(HomeSettings::from_json(j), std::invalid_argument);
 }
-
-}  // namespace alplan::home
-
-namespace alplan::home {
 
 TEST_CASE("every planner call counts in the latency figures, those that found no plan too", "[home]") {
   // A drawn home where a repair finds no plan (seed 1: one of nine), as
@@ -213,10 +201,6 @@ TEST_CASE("every planner call counts in the latency figures, those that found no
   CHECK(summary.repairs_failed >= 1);
 }
 
-}  // namespace alplan::home
-
-namespace alplan::home {
-
 TEST_CASE("a settled goal's window no longer closes a later one", "[home]") {
   // senior1 terrified at 300, seen at 340: a window to 940. With a grace of
   // 30 s the face is read again while the body is still stressed, so goals
@@ -244,10 +228,6 @@ TEST_CASE("a settled goal's window no longer closes a later one", "[home]") {
   CHECK(summary.windows_missed == 0);
 }
 
-}  // namespace alplan::home
-
-namespace alplan::home {
-
 TEST_CASE("the boredom streak starts afresh with each stress episode", "[home]") {
   HomeSettings s = default_home_settings(kAssistedLiving);
   EventLog log;
@@ -274,10 +254,6 @@ TEST_CASE("the boredom streak starts afresh with each stress episode", "[home]")
   CHECK_FALSE(looks.look("senior1", stressed, 1100.0, neutral));
 }
 
-}  // namespace alplan::home
-
-namespace alplan::home {
-
 TEST_CASE("deliberation looks at the face at several times, not thrice at one instant", "[home]") {
   // The smiling astronaut (scikit-image's data): happy, so no goal and no
   // end to the looks; between them the deliberator waits the interval.
@@ -301,10 +277,6 @@ TEST_CASE("deliberation looks at the face at several times, not thrice at one in
   CHECK(once.on_stress("senior1", stressed).notes.size() == 1);
   CHECK(waits.empty());
 }
-
-}  // namespace alplan::home
-
-namespace alplan::home {
 
 TEST_CASE("a substitute recognised in one mission is planned with in the next", "[home]") {
   // As `alplan home --seniors 12 --robots 2 --until 6100 --failure-chance 1
@@ -335,10 +307,6 @@ TEST_CASE("a substitute recognised in one mission is planned with in the next", 
   CHECK(recognised_in > 0);
   CHECK(used_later);
 }
-
-}  // namespace alplan::home
-
-namespace alplan::home {
 
 TEST_CASE("bench home asks whether one idle robot could have met each window alone", "[home]") {
   HomeSettings s = default_home_settings(kAssistedLiving);
