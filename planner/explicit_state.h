@@ -11,6 +11,14 @@ namespace alplan {
 
 class ExplicitState {
  public:
+  ExplicitState() = default;
+  // The facts listed true, the rest false; the values as given.
+  static ExplicitState of(const std::vector<FactId>& facts, const std::vector<double>& values) {
+    ExplicitState state;
+    for (FactId f : facts) state.set_fact(f, true);
+    for (NumericVarId v = 0; v < values.size(); ++v) state.set_value(v, values[v]);
+    return state;
+  }
   bool fact(FactId f) const { return f < facts_.size() && facts_[f] != 0; }
   double value(NumericVarId v) const { return v < values_.size() ? values_[v] : std::nan(""); }
   void set_fact(FactId f, bool on) {

@@ -121,8 +121,7 @@ Violation HappeningExecutor::violation(Violation::Kind kind, const Event& e) con
 
 void HappeningExecutor::load(const std::vector<ScheduledStep>& steps) {
   ExecutionStart start;
-  for (FactId f : task_.initial_facts) start.state.set_fact(f, true);
-  for (NumericVarId v = 0; v < task_.initial_values.size(); ++v) start.state.set_value(v, task_.initial_values[v]);
+  start.state = ExplicitState::of(task_.initial_facts, task_.initial_values);
   load(steps, start);
 }
 

@@ -60,9 +60,7 @@ std::optional<std::string> clashing_timed_literals(const GroundTask& task, std::
 
 std::optional<std::string> broken_always(const GroundTask& task, const PlanningStart& start) {
   if (task.pddl3.constraints.empty()) return std::nullopt;
-  ExplicitState state;
-  for (FactId f : start.facts) state.set_fact(f, true);
-  for (NumericVarId v = 0; v < start.values.size(); ++v) state.set_value(v, start.values[v]);
+  const ExplicitState state = ExplicitState::of(start.facts, start.values);
   for (const GroundConstraint& g : task.pddl3.constraints) {
     if (g.op != ModalOperator::Always || g.preference) continue;
     try {
@@ -74,15 +72,27 @@ std::optional<std::string> broken_always(const GroundTask& task, const PlanningS
   return std::nullopt;
 }
 
-// Validation of a plan made from an observed state: the executor runs the
-// plan as printed (times read back from the text) from that state, with the
-// running actions' ends where the schedule put them.
+// Validation of a plan made from an observed state, with the running
+// actions' ends where the schedule put them.
 ValidationResult validate_from(const GroundTask& task, const PlanningStart& start, const Solution& solution,
                                const std::vector<ActionId>& actions, const std::string& text, double epsilon) {
-  const PlanReadResult printed = read_plan(text, "planner output");
+  std::vector<std::pair<ActionId, double>> running_ends;
+  for (std::size_t e = 0; e < solution.steps.size(); ++e) {
+    const StepRecord& r = solution.steps[e];
+    if (r.snap.kind == SnapKind::End && r.start_step == kNoId) running_ends.emplace_back(r.snap.index, solution.times[e]);
+  }
+  return validate_printed_from(task, start, read_plan(text, "planner output").plan, actions, running_ends, epsilon);
+}
+
+}  // namespace
+
+ValidationResult validate_printed_from(const GroundTask& task, const PlanningStart& start, const Plan& printed,
+                                       const std::vector<ActionId>& actions,
+                                       const std::vector<std::pair<ActionId, double>>& running_ends, double epsilon,
+                                       std::shared_ptr<const TrajectoryMonitor> trajectory) {
   std::vector<ScheduledStep> steps;
-  for (std::size_t i = 0; i < printed.plan.steps.size(); ++i) {
-    const PlanStep& p = printed.plan.steps[i];
+  for (std::size_t i = 0; i < printed.steps.size(); ++i) {
+    const PlanStep& p = printed.steps[i];
     ScheduledStep s;
     s.action = actions[i];
     s.step = i;
@@ -92,28 +102,24 @@ ValidationResult validate_from(const GroundTask& task, const PlanningStart& star
     s.name = task.action_name(task.actions[s.action]);
     steps.push_back(s);
   }
-  for (std::size_t e = 0; e < solution.steps.size(); ++e) {
-    const StepRecord& r = solution.steps[e];
-    if (r.snap.kind != SnapKind::End || r.start_step != kNoId) continue;
+  for (const auto& [action, end] : running_ends) {
     ScheduledStep s;
-    s.action = r.snap.index;
+    s.action = action;
     s.step = steps.size();
     s.started_before = true;
     s.start = start.now;
-    s.duration = solution.times[e] - start.now;
+    s.duration = end - start.now;
     s.name = task.action_name(task.actions[s.action]);
     steps.push_back(s);
   }
   ExecutionStart from;
-  for (FactId f : start.facts) from.state.set_fact(f, true);
-  for (NumericVarId v = 0; v < start.values.size(); ++v) from.state.set_value(v, start.values[v]);
+  from.state = ExplicitState::of(start.facts, start.values);
   from.first_timed_literal = start.next_timed_literal;
   from.now = start.now;
+  from.trajectory = std::move(trajectory);
   HappeningExecutor executor(task, ValidatorOptions{epsilon, false});
-  return executor.run(steps, printed.plan.steps.size(), from);
+  return executor.run(steps, printed.steps.size(), from);
 }
-
-}  // namespace
 
 bool is_initial_start(const GroundTask& task, const PlanningStart& start) {
   return start.now == 0.0 && start.running.empty() && start.history.empty() && start.next_timed_literal == 0 &&

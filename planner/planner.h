@@ -128,6 +128,18 @@ PlanningStart initial_start(const GroundTask& task);
 // Whether `start` is the task's initial state at time 0, nothing before it.
 bool is_initial_start(const GroundTask& task, const PlanningStart& start);
 
+class TrajectoryMonitor;
+
+// A plan printed for `start`, validated from that state by the validator's
+// executor (times as printed): `actions` are its steps' ground actions, in
+// order; `running_ends` the actions running at the start, with when each
+// ends; `trajectory` the PDDL 3 monitor of the states before it, carried on
+// (null: the trajectory starts here).
+ValidationResult validate_printed_from(const GroundTask& task, const PlanningStart& start, const Plan& printed,
+                                       const std::vector<ActionId>& actions,
+                                       const std::vector<std::pair<ActionId, double>>& running_ends, double epsilon,
+                                       std::shared_ptr<const TrajectoryMonitor> trajectory = nullptr);
+
 // What a planner builds for its task before it searches (the task index,
 // the relaxed planning graph), kept by a caller who plans again and again on
 // tasks that share their ground actions (a GroundingCache's derived tasks),

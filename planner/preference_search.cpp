@@ -11,7 +11,6 @@
 
 #include "planner/evaluation.h"
 #include "planner/explicit_state.h"
-#include "planner/happening_executor.h"
 #include "planner/pddl3_compilation.h"
 #include "planner/trajectory_monitor.h"
 
@@ -137,36 +136,22 @@ class Rounds {
   }
 
   // A plan from the observed state, validated on the task with the
-  // trajectory seen so far carried on (its value counts it all).
+  // trajectory seen so far carried on (its value counts it all). The
+  // compiled task kept the task's action ids, but the plan comes as text.
   ValidationResult validate_observed(const std::string& text) {
     if (action_ids_.empty()) {
       for (ActionId a = 0; a < task_->actions.size(); ++a) action_ids_.emplace(task_->action_name(task_->actions[a]), a);
     }
-    const PlanReadResult printed = read_plan(text, "planner output");
-    std::vector<ScheduledStep> steps;
-    for (std::size_t i = 0; i < printed.plan.steps.size(); ++i) {
-      const PlanStep& p = printed.plan.steps[i];
+    const Plan printed = read_plan(text, "planner output").plan;
+    std::vector<ActionId> actions;
+    for (const PlanStep& p : printed.steps) {
       std::string name = "(" + p.action;
       for (const std::string& arg : p.args) name += " " + arg;
       const auto id = action_ids_.find(name + ")");
       if (id == action_ids_.end()) throw std::logic_error("a planned step the task lacks: " + name + ")");
-      ScheduledStep step;
-      step.action = id->second;
-      step.step = i;
-      step.line = p.line;
-      step.start = p.time.value_or(start_.now);
-      step.duration = p.duration.value_or(0.0);
-      step.name = name + ")";
-      steps.push_back(std::move(step));
+      actions.push_back(id->second);
     }
-    ExecutionStart from;
-    for (FactId f : start_.facts) from.state.set_fact(f, true);
-    for (NumericVarId v = 0; v < start_.values.size(); ++v) from.state.set_value(v, start_.values[v]);
-    from.first_timed_literal = start_.next_timed_literal;
-    from.now = start_.now;
-    from.trajectory = seen_;
-    HappeningExecutor executor(*task_, ValidatorOptions{options_.epsilon, false});
-    return executor.run(steps, printed.plan.steps.size(), from);
+    return validate_printed_from(*task_, start_, printed, actions, {}, options_.epsilon, seen_);
   }
 
   void add_statistics(const PlannerResult& inner) {
@@ -211,13 +196,6 @@ std::vector<std::uint32_t> candidates(const GroundTask& task, const ValidationRe
   return out;
 }
 
-ExplicitState state_of(const std::vector<FactId>& facts, const std::vector<double>& values) {
-  ExplicitState state;
-  for (FactId f : facts) state.set_fact(f, true);
-  for (NumericVarId v = 0; v < values.size(); ++v) state.set_value(v, values[v]);
-  return state;
-}
-
 }  // namespace
 
 PreferenceSearch::PreferenceSearch(std::shared_ptr<const GroundTask> task, PlannerOptions options)
@@ -240,7 +218,7 @@ PlannerResult PreferenceSearch::plan_from(const PlanningStart& start,
     }
     auto monitor = std::make_shared<TrajectoryMonitor>(*task_, ValidatorOptions{}.numeric_slack);
     try {
-      for (const ObservedState& h : start.history) monitor->observe(state_of(h.facts, h.values), h.time);
+      for (const ObservedState& h : start.history) monitor->observe(ExplicitState::of(h.facts, h.values), h.time);
     } catch (const EvaluationError& error) {
       refused.message = std::string("the states observed before cannot be judged: ") + error.what();
       return refused;

@@ -45,8 +45,7 @@ bool valid_from_now(const ExecutingPlan& plan, double now) {
     steps.push_back({a.action, i, 0, a.start, a.duration, a.name, false});
   }
   ExecutionStart start;
-  for (FactId f : task.initial_facts) start.state.set_fact(f, true);
-  for (NumericVarId v = 0; v < task.initial_values.size(); ++v) start.state.set_value(v, task.initial_values[v]);
+  start.state = ExplicitState::of(task.initial_facts, task.initial_values);
   start.now = now;
   HappeningExecutor executor(task, ValidatorOptions{plan.epsilon, false});
   return executor.run(steps, steps.size(), start).valid;
