@@ -1,12 +1,13 @@
 #include "repair/monitor.h"
 
 #include <algorithm>
-#include <set>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <set>
+#include <utility>
 
 #include "pddl_parser/writer.h"
 #include "planner/evaluation.h"
@@ -166,14 +167,11 @@ class Execution {
         if (!failure) return done(true, "the goal " + goal_ + " holds at " + time_text(t), t);
       }
       if (failure && foreseen && waiting_for_news(*failure)) failure.reset();
-      if (failure && awaiting_overrun(*failure)) {
-        // Nothing is dispatched meanwhile: the plan's next steps need it.
-        awaited_ = failure;
-        t += options_.step_size;  // look again soon: the plan's own times are stale
-        continue;
-      }
+      if (failure && awaiting_overrun(*failure)) awaited_ = std::exchange(failure, std::nullopt);
       if (!failure && awaited_) {
         if (awaiting_overrun(*awaited_)) {
+          // Nothing is dispatched meanwhile (the plan's next steps need the
+          // action's end), and the plan's own times are stale: look again soon.
           t += options_.step_size;
           continue;
         }
@@ -297,7 +295,6 @@ class Execution {
 
   enum class Attempt : unsigned char { Repaired, Deferred, Ended };
 
-  // A foreseen failure tried before, with nothing new seen since.
   // An action seen to overrun whose end will make the failed condition
   // hold: the robot cannot know how much longer it takes (the world's own
   // estimate is not a sensor), so it waits to see the action end and
@@ -324,6 +321,7 @@ class Execution {
     return known;
   }
 
+  // A foreseen failure tried before, with nothing new seen since.
   bool waiting_for_news(const Violation& failure) const {
     return deferred_ && deferred_->action == failure.action && deferred_->condition == failure.condition &&
            deferred_->news == news_;
