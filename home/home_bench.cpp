@@ -34,6 +34,11 @@ std::vector<double> replanning_seconds(const HomeSummary& summary) {
   return out;
 }
 
+// part / whole, 0 for no whole.
+double share(std::size_t part, std::size_t whole) {
+  return static_cast<double>(part) / static_cast<double>(std::max<std::size_t>(1, whole));
+}
+
 std::string reason_label(const std::string& reason) {
   if (reason == "none") return "no initial plan found";
   if (reason == "merge_failed") return "merge, no plan found";
@@ -47,16 +52,14 @@ nlohmann::json HomeBenchResult::json(const HomeSettings& settings) const {
   nlohmann::json by_reason = nlohmann::json::object();
   for (const auto& [reason, seconds] : summary.planning_by_reason) by_reason[reason] = latency(seconds);
   const std::vector<double> replanning = replanning_seconds(summary);
-  const double goals = static_cast<double>(std::max<std::size_t>(1, summary.goals));
   return {{"settings", settings.json()},
           {"summary", summary.json()},
           {"planning", latency(summary.planning_seconds)},
           {"replanning", latency(replanning)},
           {"planning_by_reason", by_reason},
-          {"comforted_within_window_share", static_cast<double>(summary.within_window) / goals},
+          {"comforted_within_window_share", share(summary.within_window, summary.goals)},
           {"meetable_goals", summary.meetable},
-          {"meetable_within_window_share",
-           static_cast<double>(summary.meetable_within_window) / static_cast<double>(std::max<std::size_t>(1, summary.meetable))},
+          {"meetable_within_window_share", share(summary.meetable_within_window, summary.meetable)},
           {"wall_seconds", wall_seconds},
           {"simulated_per_wall_second", settings.until / std::max(1e-9, wall_seconds)},
           {"events", events}};
@@ -83,16 +86,14 @@ void print_home_bench(std::ostream& out, const HomeSettings& settings, const Hom
                 "\n%zu goals: %zu comforted within their windows (%.1f%%), %zu late, %zu windows missed; "
                 "%zu failures, %zu repairs failed\n%.0f simulated s in %.1f wall s (%.0fx); scored against the "
                 "simulation: %zu stress episodes, %zu detected, %zu false alarms\n",
-                s.goals, s.within_window, 100.0 * static_cast<double>(s.within_window) / static_cast<double>(std::max<std::size_t>(1, s.goals)),
+                s.goals, s.within_window, 100.0 * share(s.within_window, s.goals),
                 s.comforted - s.within_window, s.windows_missed, s.failures, s.repairs_failed, settings.until,
                 r.wall_seconds, settings.until / std::max(1e-9, r.wall_seconds), s.episodes, s.episodes_detected, s.false_alarms);
   out << line;
   if (settings.score_meetable) {
     std::snprintf(line, sizeof line,
                   "of the %zu goals one idle robot could have met alone, %zu within their windows (%.1f%%)\n",
-                  s.meetable, s.meetable_within_window,
-                  100.0 * static_cast<double>(s.meetable_within_window) /
-                      static_cast<double>(std::max<std::size_t>(1, s.meetable)));
+                  s.meetable, s.meetable_within_window, 100.0 * share(s.meetable_within_window, s.meetable));
     out << line;
   }
 }

@@ -28,7 +28,20 @@ struct CnnWithAccuracy {
   double test_accuracy = 0.0;
 };
 
-CnnWithAccuracy train_drawing_cnn(const DrawingCameraOptions& options);
+CnnWithAccuracy train_drawing_cnn(const DrawingCameraOptions& options) {
+  ObjectImageOptions images;
+  images.per_class = options.images_per_class;
+  images.seed = options.seed;
+  const ImageDataset data = generate_object_images(images);
+  CnnRunOptions run;
+  run.architecture.channels = 3;
+  run.training.epochs = options.epochs;
+  run.training.threads = options.threads;
+  run.training.seed = options.seed;
+  run.seed = options.seed;
+  auto [classifier, report] = train_and_test_cnn(data, run);
+  return CnnWithAccuracy{std::move(classifier), report.test.accuracy()};
+}
 
 }  // namespace
 
@@ -61,25 +74,6 @@ TrainedObjectClassifier train_object_classifier_on_drawings(const DrawingCameraO
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   return out;
 }
-
-namespace {
-
-CnnWithAccuracy train_drawing_cnn(const DrawingCameraOptions& options) {
-  ObjectImageOptions images;
-  images.per_class = options.images_per_class;
-  images.seed = options.seed;
-  const ImageDataset data = generate_object_images(images);
-  CnnRunOptions run;
-  run.architecture.channels = 3;
-  run.training.epochs = options.epochs;
-  run.training.threads = options.threads;
-  run.training.seed = options.seed;
-  run.seed = options.seed;
-  auto [classifier, report] = train_and_test_cnn(data, run);
-  return CnnWithAccuracy{std::move(classifier), report.test.accuracy()};
-}
-
-}  // namespace
 
 DrawingObjectRecognizer::DrawingObjectRecognizer(repair::ObjectRecognizer& truth,
                                                  std::shared_ptr<const CnnClassifier> classifier,
