@@ -63,7 +63,8 @@ void narrate(const home::LogEvent& e) {
          "), window until " + std::to_string(static_cast<long>(p.value("window_end", 0.0))) + " s");
   }
   if (e.type == "plan") {
-    line("plan " + std::to_string(p.value("plan_id", 0)) + " (" + p.value("reason", "") + "):");
+    line("plan " + std::to_string(p.value("plan_id", 0)) + " (" + p.value("reason", "") + ", mission " +
+         std::to_string(p.value("mission", 0)) + "):");
     std::printf("%s", p.value("plan", "").c_str());
   }
   if (e.type == "failure") line("failure: " + p.value("action", "") + ": " + p.value("condition", ""));
@@ -85,6 +86,9 @@ void narrate(const home::LogEvent& e) {
                   p.value("below_reserve", false) ? ": WENT BELOW ITS RESERVE" : "");
     line(text);
   }
+  if (e.type == "robot_down") line(e.robot + " reports a fault: out of service");
+  if (e.type == "robot_up") line(e.robot + " is back in service");
+  if (e.type == "window_passed") line(e.senior + "'s window passed before " + p.value("goal", "") + ": served late");
   if (e.type == "window_missed") line(e.senior + "'s window closed before " + p.value("goal", "") + ": looking again");
 }
 

@@ -21,7 +21,35 @@ void add_home_run_options(CLI::App& cmd, home::HomeSettings& s) {
   cmd.add_option("--object-return", s.object_return_s,
                  "Seconds until an object taken away or handed to a senior is back in its place (0: never)")
       ->check(CLI::NonNegativeNumber);
-  cmd.add_flag("!--no-dispatch", s.dispatch, "Plan each mission with every robot, not the nearest one per senior");
+  cmd.add_option("--fleet", s.fleet,
+                 "allocate: a mission per robot, several at once, each goal to the robot with the least weighted "
+                 "lateness; dispatch: one mission at a time, new goals merged into it")
+      ->check(CLI::IsMember({"allocate", "dispatch"}));
+  cmd.add_option_function<std::vector<double>>(
+         "--urgency-weights",
+         [&s](const std::vector<double>& w) {
+           s.terrified_weight = w.at(0);
+           s.sad_weight = w.at(1);
+           s.bored_weight = w.at(2);
+         },
+         "Lateness weights of terrified, sad and bored seniors for the allocation (default 3 2 1)")
+      ->expected(3)
+      ->check(CLI::NonNegativeNumber);
+  cmd.add_flag("!--hard-windows", s.soft_windows,
+               "Comfort windows as hard deadlines that close (a goal no plan meets in time is dropped), not as "
+               "PDDL 3 preferences weighted by urgency");
+  cmd.add_option("--window-cost", s.window_cost_s,
+                 "A window missed costs its urgency weight times this many seconds of the plan's metric")
+      ->check(CLI::NonNegativeNumber);
+  cmd.add_option("--failure-kinds", s.failure_kinds,
+                 "Kinds of the failures drawn against new plans: the repair study's (sibling arrival iot moves "
+                 "overrun emotion two) and robot_down")
+      ->expected(1, 16);
+  cmd.add_option("--robot-repair", s.robot_repair_s,
+                 "Seconds a broken-down robot (failure kind robot_down) is out of service")
+      ->check(CLI::NonNegativeNumber);
+  cmd.add_flag("!--no-dispatch", s.dispatch,
+               "With --fleet dispatch: plan each mission with every robot, not the nearest one per senior");
   add_battery_options(cmd, s);
 }
 

@@ -25,6 +25,11 @@ struct PerceivedGoal {
   double time = 0.0, window_end = 0.0;
   // HomeSettings::score_meetable: one idle robot could have met the window.
   bool meetable_alone = false;
+  // With soft windows: the window passed and the goal is still served (late).
+  bool overdue = false;
+  // With soft windows: no robot has a plan that meets the window, so it is
+  // planned with the window as a preference, to be served late.
+  bool serve_late = false;
 };
 
 // Perception scored against a simulation's truth, which only a simulated

@@ -12,9 +12,9 @@
 
 #include "domains/battery_home.h"
 #include "domains/emotion_goals.h"
-#include "domains/home_generator.h"
-#include "domains/mission_run.h"
+#include "home/goal_allocation.h"
 #include "home/home_perception.h"
+#include "home/home_problem.h"
 #include "home/object_returns.h"
 #include "home/robot_dispatch.h"
 #include "pddl_parser/writer.h"
@@ -28,150 +28,82 @@
 namespace alplan::home {
 namespace {
 
-struct LoadedRun {
-  domains::LoadedHome home;
-  HomeMap map;
+// The world's atom that a robot is out of service (its fault report).
+repair::AtomKey out_of_order(const std::string& robot) { return {"out_of_order", robot}; }
+
+// One mission in course: its robots (one with the allocation), the goals
+// it serves, its execution under the monitor, and what the home has for it
+// at its next look.
+struct FleetMission {
+  int id = 0;
+  std::vector<std::string> robots;
+  std::vector<PerceivedGoal> goals;     // served by its plan
+  std::vector<PerceivedGoal> incoming;  // given to it, merged at its next look
+  std::vector<PerceivedGoal> merging;   // handed over, the merge's outcome not yet told
+  std::vector<pddl::TimedInitialLiteral> withdrawn;  // windows settled since its last arrival
+  std::set<std::string> seniors;  // whose goals it serves, for explanations
+  std::string motivation;
+  std::unique_ptr<repair::MonitoredExecution> execution;
+  double next_look = 0.0;
+  int current_plan = 0;
+  bool merge_blocked = false;  // a merge found no plan: no more goals for it
+  // Soft windows: planned with the windows as preferences (a goal in it is
+  // served late); otherwise they are deadlines in its problem.
+  bool preferred = false;
 };
 
-// The domain the run plans with: the paper's, or its battery variant.
-std::string domain_file(const HomeSettings& s) {
-  return s.domains_dir + (s.battery ? "/battery/domain.pddl" : "/domain.pddl");
-}
-
-// With batteries, the home's problem gains what it lacks of them.
-domains::LoadedHome with_batteries(domains::LoadedHome home, const HomeSettings& s) {
-  if (!s.battery) return home;
-  pddl::Problem problem = *home.files.problem;
-  domains::add_batteries(problem, s.battery_options);
-  home.files.problem = std::make_shared<const pddl::Problem>(std::move(problem));
-  return home;
-}
-
-domains::LoadedHome load_files(const HomeSettings& s) {
-  const std::string ontology = s.domains_dir + "/types.ttl";
-  if (s.generate_seniors > 0) {
-    domains::HomeOptions options;
-    options.seniors = s.generate_seniors;
-    options.robots = s.generate_robots;
-    if (s.generate_rooms > 0) options.rooms = s.generate_rooms;
-    if (s.generate_objects > 0) options.objects = s.generate_objects;
-    options.stressed = 1;  // the generator wants one; calm_problem takes every emotion away
-    options.seed = s.seed;
-    const domains::GeneratedHome generated = domains::generate_home(options);
-    domains::LoadedHome paper = domains::load_home_files(domain_file(s), s.domains_dir + "/home.pddl", ontology);
-    domains::LoadedFiles files = domains::load_pddl_text(pddl::write_domain(*paper.files.domain), "domain.pddl",
-                                                         generated.problem, "generated-home.pddl");
-    return {std::move(files), std::move(paper.ontology), std::move(paper.domain)};
-  }
-  const std::string file = s.home_file.empty() ? s.domains_dir + "/home.pddl" : s.home_file;
-  return domains::load_home_files(domain_file(s), file, ontology);
-}
-
-LoadedRun load(const HomeSettings& s) {
-  domains::LoadedHome home = with_batteries(load_files(s), s);
-  HomeMap map = read_home_map(*home.files.problem);
-  return {std::move(home), std::move(map)};
-}
-
-// The home's problem with nothing to do: no emotion, window or goal yet.
-pddl::Problem calm_problem(const pddl::Problem& problem) {
-  pddl::Problem out = problem;
-  const auto about_moods = [](const pddl::Atom& a) {
-    for (const char* p : {"terrified", "sad", "bored", "hydration_time", "comfort_time", "soothed", "cheerful",
-                          "entertained"}) {
-      if (a.name == p) return true;
-    }
-    return false;
-  };
-  out.init.erase(std::remove_if(out.init.begin(), out.init.end(), about_moods), out.init.end());
-  out.timed_literals.clear();
-  pddl::Condition none;
-  none.kind = pddl::Condition::Kind::And;
-  out.goal = none;
-  return out;
-}
-
-std::string robot_of(const std::string& action, const HomeMap& map) {
-  std::istringstream words(action.size() > 2 ? action.substr(1, action.size() - 2) : action);
-  for (std::string w; words >> w;) {
-    if (map.has_robot(w)) return w;
-  }
-  return {};
-}
-
-nlohmann::json steps_json(const repair::ExecutingPlan& plan, const HomeMap& map) {
-  nlohmann::json steps = nlohmann::json::array();
-  for (const repair::ScheduledAction& s : plan.steps) {
-    steps.push_back({{"start", s.start}, {"duration", s.duration}, {"action", s.name}, {"robot", robot_of(s.name, map)}});
-  }
-  return steps;
-}
-
-// Thrown through the monitor when the clock stops the run mid-plan (the
-// monitor has no other way out); caught by HomeRun::run.
-struct ClockStopped {};
+// Soft windows: a goal whose window no plan can meet any more.
+bool late(const PerceivedGoal& g, double t) { return g.serve_late || g.window_end <= t; }
 
 class HomeRun {
  public:
   HomeRun(const HomeSettings& settings, EventLog& log, const GoalSourceMaker& goals, RunClock& clock)
-      : settings_(settings), log_(log), clock_(clock), loaded_(load(settings)),
+      : settings_(settings), log_(log), clock_(clock), loaded_(load_run(settings)),
         base_(calm_problem(*loaded_.home.files.problem)), perception_(goals(loaded_.map, log)),
         world_(repair::initial_world(base_), {}),
         belief_(base_, observation_options()),
         events_(event_options()),
         returns_(base_, settings.object_return_s),
         return_levels_(settings.battery ? domains::return_levels(base_) : std::map<std::string, double>{}) {
-    // One evaluation per expansion, not one per child: the anytime
-    // weights cost a sixth of the time with the same outcomes (1 h of the
-    // large home, home/README.md). EHC's own budget counts expansions; EHC
-    // stores about two nodes per expansion on the home's relevant actions
-    // (~16 children each), so a fifth of the node limit leaves the fallback
-    // searches room.
-    SearchShorthands search;
-    search.knobs.deferred = true;
-    search.knobs.ehc_expansions = std::min<std::uint64_t>(search.knobs.ehc_expansions, settings.planner_node_limit / 5);
-    search.anytime = settings.planner_expansions > 0;
-    search.anytime_min_weight = 3.0;
-    search.anytime_expansions = settings.planner_expansions;
-    planner_.search = configuration_from(search);
-    planner_.time_limit = settings.planning_time;
-    planner_.node_limit = settings.planner_node_limit;
-    planner_.epsilon = 0.002;
-    // In real time the world goes on while the planner thinks: no step
-    // starts before the planning budget has passed.
-    planner_.reserve_planning_time = settings.live;
-    // Repairs and merges answer a world that has changed under a running
-    // plan: their first plan goes out, improved only as far as this allows.
-    replanner_ = planner_;
-    search.anytime = settings.replan_expansions > 0;
-    search.anytime_expansions = settings.replan_expansions;
-    replanner_.search = configuration_from(search);
+    if (settings.fleet != "allocate" && settings.fleet != "dispatch") {
+      throw std::invalid_argument("--fleet " + settings.fleet + ": not allocate or dispatch");
+    }
+    for (const Placed& r : loaded_.map.robots) robots_.push_back(r.name);
+    for (const ScriptedBreakdown& b : settings.breakdowns) {
+      if (!loaded_.map.has_robot(b.robot)) throw std::invalid_argument("breakdown of " + b.robot + ": no such robot");
+      out_of_service_until_[b.robot] = std::max(out_of_service_until_[b.robot], b.time + settings.robot_repair_s);
+      schedule_breakdown(b.robot, b.time);
+    }
+    planner_ = home_planner_options(settings);
+    replanner_ = home_replanner_options(settings);
     repair::StrategyOptions strategy;
     strategy.planner = replanner_;
     strategy_ = repair::make_strategy(settings.strategy, strategy);
   }
 
+  // The home's clock: it looks every step while the robots are idle, and
+  // whenever a mission asks to be looked at; at each look it senses, hears
+  // the robots' fault reports, settles goals, gives new goals to robots and
+  // steps every mission due.
   HomeSummary run(const std::function<void(double)>& on_time) {
     LogEvent home{"observation", 0.0, {}, {}, {}};
     home.payload = {{"what", "home"}, {"home", loaded_.map.json()}, {"settings", settings_.json()}};
     log_.write(home);
     double t = 0.0;
-    for (; t <= settings_.until + 1e-9;) {
+    while (t <= settings_.until + 1e-9) {
       if (on_time) on_time(std::min(t, settings_.until));
       if (!clock_.wait_until(t)) break;
       world_.advance(t);
       belief_.observe(world_.observe());
       for (PerceivedGoal& g : perception_->sense(t)) pending_.push_back(std::move(g));
+      notice_faults(t);
       settle(t, belief_.state());
-      if (!pending_.empty() || replan_) {
-        try {
-          t = std::max(t, mission(t));
-        } catch (const ClockStopped&) {
-          break;
-        }
-        continue;
-      }
-      t += settings_.step_s;
+      receive(t);
+      place_goals(t);
+      step_missions(t);
+      double next = t + settings_.step_s;
+      for (const auto& m : missions_) next = std::min(next, m->next_look);
+      t = std::max(next, t + 1e-6);
     }
     if (const std::optional<PerceptionScore> score = perception_->score(settings_.until)) {
       summary_.episodes = score->episodes;
@@ -179,6 +111,8 @@ class HomeRun {
       summary_.false_alarms = score->false_alarms;
     }
     summary_.end_time = std::min(t, settings_.until);
+    for (const auto& m : missions_) summary_.in_course_at_end += m->goals.size() + m->incoming.size();
+    summary_.in_course_at_end += waiting_.size() + unplannable_.size();
     report_batteries(summary_.end_time);
     return summary_;
   }
@@ -216,8 +150,9 @@ class HomeRun {
     o.seed = settings_.seed * 7919 + 17;
     o.kinds.clear();
     for (const std::string& k : settings_.failure_kinds) {
+      if (k == "robot_down") continue;  // the home's own: draw_breakdown
       const auto kind = repair::random_event_kind(k);
-      if (!kind) throw std::invalid_argument("failure kind " + k + ": not one of the repair study's kinds");
+      if (!kind) throw std::invalid_argument("failure kind " + k + ": not one of the repair study's kinds nor robot_down");
       o.kinds.push_back(*kind);
     }
     return o;
@@ -225,56 +160,52 @@ class HomeRun {
 
   double coin() { return static_cast<double>(events_random_() >> 11) * 0x1.0p-53; }
 
-  // The facts a new goal tells the world and the robot: the emotion read,
-  // the goal not yet reached, the window open until its literal closes it.
-  void tell(const PerceivedGoal& g, double t, repair::GoalArrival& arrival) {
+  // The facts a new goal tells the world, the belief and the home's
+  // problem: the emotion read, the goal not yet reached, the window open
+  // until its literal closes it.
+  void tell(const PerceivedGoal& g, double t) {
     std::vector<repair::ExogenousEvent> now;
-    const auto set = [&](const std::string& predicate, bool value) {
+    for (const auto& [atom, value] : told_facts(g)) {
       repair::ExogenousEvent e;
       e.time = t;
-      e.atom = {predicate, g.senior};
+      e.atom = atom;
       e.value = value;
-      e.description = g.senior + ": " + predicate + (value ? "" : " no more");
+      e.description = g.senior + ": " + atom.front() + (value ? "" : " no more");
       now.push_back(e);
-      arrival.facts.push_back({e.atom, value});
-      belief_.told(e.atom, value);
-    };
-    for (const char* e : {"terrified", "sad", "bored"}) set(e, g.emotion == e);
-    for (const char* p : {"soothed", "cheerful", "entertained"}) set(p, false);
-    set(g.window, true);
-    repair::ExogenousEvent close;
-    close.time = g.window_end;
-    close.atom = {g.window, g.senior};
-    close.value = false;
-    close.description = g.senior + "'s window closes";
-    now.push_back(close);
+      belief_.told(atom, value);
+    }
+    if (!settings_.soft_windows) {  // soft: the window is a preference, it closes nowhere
+      repair::ExogenousEvent close;
+      close.time = g.window_end;
+      close.atom = {g.window, g.senior};
+      close.value = false;
+      close.description = g.senior + "'s window closes";
+      now.push_back(close);
+      // The home's own problem and belief keep the window for later missions.
+      base_.timed_literals.push_back(window_close(g));
+      belief_.expect(window_close(g));
+    }
     world_.schedule(now);
-    pddl::TimedInitialLiteral til;
-    til.time = g.window_end;
-    til.positive = false;
-    til.atom = domains::senior_atom(g.window, g.senior);
-    arrival.timed_literals.push_back(til);
-    // The home's own problem and belief keep the window for later missions
-    // (a goal merged into a running plan is planned again after it).
-    base_.timed_literals.push_back(til);
-    belief_.expect(til);
-    arrival.goals.push_back(g.goal);
-    arrival.motivation += (arrival.motivation.empty() ? "" : "; ") + g.motivation;
   }
 
-  repair::GoalArrival take_pending(double t) {
-    repair::GoalArrival arrival;
-    arrival.withdrawn = std::move(withdrawn_);
-    withdrawn_.clear();
+  // New goals: told, scored, and waiting for a robot.
+  void receive(double t) {
     for (PerceivedGoal& g : pending_) {
-      mission_seniors_.insert(g.senior);
-      tell(g, t, arrival);
+      tell(g, t);
       score_meetable(g, t);
-      active_.push_back(std::move(g));
       ++summary_.goals;
+      waiting_.push_back(std::move(g));
     }
     pending_.clear();
-    return arrival;
+  }
+
+  // Robots in service: not broken down.
+  std::vector<std::string> live_robots() const {
+    std::vector<std::string> live;
+    for (const std::string& r : robots_) {
+      if (!down_.count(r)) live.push_back(r);
+    }
+    return live;
   }
 
   // Whether one robot, idle where the home believes it stands, could meet
@@ -284,16 +215,15 @@ class HomeRun {
   // if it had not been asked.
   void score_meetable(PerceivedGoal& g, double t) {
     if (!settings_.score_meetable) return;
-    std::vector<std::string> all;
-    for (const Placed& r : loaded_.map.robots) all.push_back(r.name);
     pddl::Problem goal_problem = base_;
     goal_problem.goal = g.goal;
+    if (settings_.soft_windows) goal_problem.timed_literals.push_back(window_close(g));  // meetable: within it
     const pddl::Problem from_now = repair::reformulate(loaded_.home.domain, goal_problem, belief_.state(), {}, t, 0.0);
     PlannerOptions scoring = replanner_;  // the first plan: feasibility is the question
     scoring.node_limit = std::max<std::size_t>(1, settings_.planner_node_limit / 4);
-    for (const std::string& robot : all) {
-      pddl::Problem alone = with_robots_only(from_now, all, {robot});
-      require_return(alone, {robot});
+    for (const std::string& robot : live_robots()) {
+      pddl::Problem alone = with_robots_only(from_now, robots_, {robot});
+      if (settings_.battery) require_return(alone, {robot}, return_levels_);
       if (repair::plan_in_process(loaded_.home.domain, alone, t, scoring).plan) {
         g.meetable_alone = true;
         ++summary_.meetable;
@@ -302,13 +232,20 @@ class HomeRun {
     }
   }
 
-  // Goals reached or out of time, as the robot believes.
+  // Goals reached or out of time, as the robots believe, wherever they are.
   void settle(double t, const repair::WorldState& believed) {
-    settle(t, believed, active_);
-    settle(t, believed, unplannable_);
+    const bool served_late = settings_.soft_windows;
+    for (const auto& m : missions_) {
+      settle(t, believed, m->goals, served_late);
+      settle(t, believed, m->incoming, served_late);
+      settle(t, believed, m->merging, served_late);
+    }
+    settle(t, believed, waiting_, served_late);
+    settle(t, believed, unplannable_, false);  // no robot has a plan: dropped when the window ends
   }
 
-  void settle(double t, const repair::WorldState& believed, std::vector<PerceivedGoal>& goals) {
+  // `served_late`: a goal whose window passes stays in course (soft windows).
+  void settle(double t, const repair::WorldState& believed, std::vector<PerceivedGoal>& goals, bool served_late) {
     for (auto g = goals.begin(); g != goals.end();) {
       if (believed.holds({g->predicate, g->senior})) {
         const bool within = t <= g->window_end + 1e-6;
@@ -319,17 +256,30 @@ class HomeRun {
         ++summary_.comforted;
         summary_.within_window += within;
         summary_.meetable_within_window += within && g->meetable_alone;
+        if (!within) summary_.weighted_lateness += settings_.weight_of(g->emotion) * (t - g->window_end);
         perception_->comforted(*g, t);
         collect_from(g->senior, t);
         withdraw_window(*g, t);
+        refused_.erase(g->senior);
         g = goals.erase(g);
+      } else if (t > g->window_end + 1e-6 && served_late) {
+        if (!g->overdue) {
+          LogEvent e{"window_passed", t, g->senior, {}, {}};
+          e.payload = {{"goal", "(" + g->predicate + " " + g->senior + ")"}, {"window_end", g->window_end}};
+          log_.write(e);
+          g->overdue = true;
+          refused_.erase(g->senior);  // refused as a deadline: late, any robot may take it
+        }
+        ++g;
       } else if (t > g->window_end + 1e-6) {
         LogEvent e{"window_missed", t, g->senior, {}, {}};
         e.payload = {{"goal", "(" + g->predicate + " " + g->senior + ")"}, {"window_end", g->window_end}};
         log_.write(e);
         ++summary_.windows_missed;
+        ++summary_.never_served;
         perception_->missed(*g, t);
         collect_from(g->senior, t);  // what was handed over in vain
+        refused_.erase(g->senior);
         g = goals.erase(g);
       } else {
         ++g;
@@ -338,19 +288,16 @@ class HomeRun {
   }
 
   // A settled goal's window closes for nobody: its closing literal leaves
-  // the world, the belief and the home's problem at once, and the running
-  // mission's at the next arrival, so that it cannot end a later window of
+  // the world, the belief and the home's problem at once, and each running
+  // mission's at its next arrival, so that it cannot end a later window of
   // the same senior early.
   void withdraw_window(const PerceivedGoal& g, double t) {
-    if (g.window_end <= t) return;  // closed already
-    pddl::TimedInitialLiteral close;
-    close.time = g.window_end;
-    close.positive = false;
-    close.atom = domains::senior_atom(g.window, g.senior);
+    if (settings_.soft_windows || g.window_end <= t) return;  // none, or closed already
+    const pddl::TimedInitialLiteral close = window_close(g);
     std::erase_if(base_.timed_literals, [&](const pddl::TimedInitialLiteral& l) { return repair::same_literal(l, close); });
     belief_.withdraw(close);
     world_.cancel({g.window, g.senior}, false, g.window_end);
-    withdrawn_.push_back(close);
+    for (const auto& m : missions_) m->withdrawn.push_back(close);
   }
 
   // Objects the mission's repairs recognised join the home's problem, so
@@ -373,14 +320,21 @@ class HomeRun {
     if (settings_.object_return_s > 0) world_.schedule(returns_.collect_from(world_.observe(), senior, t));
   }
 
-  void log_plan(double t, const repair::ExecutingPlan& plan, const std::string& reason, double seconds) {
+  // Every planner call, plan found or not, by why it was made.
+  void record_planning(const std::string& reason, double seconds) {
+    summary_.planning_seconds.push_back(seconds);
+    summary_.planning_by_reason[reason].push_back(seconds);
+  }
+
+  void log_plan(FleetMission& m, double t, const repair::ExecutingPlan& plan, const std::string& reason,
+                double seconds, const pddl::Problem& problem) {
     LogEvent e{"plan", t, {}, {}, {}};
     const int id = ++plans_;
     e.payload = {{"plan_id", id}, {"reason", reason}, {"plan", repair::plan_text(plan)},
-                 {"steps", steps_json(plan, loaded_.map)}, {"planning_seconds", seconds}};
-    e.payload["supersedes"] = current_plan_ ? nlohmann::json(current_plan_) : nlohmann::json(nullptr);
+                 {"steps", steps_json(plan, loaded_.map)}, {"planning_seconds", seconds}, {"mission", m.id}};
+    e.payload["supersedes"] = m.current_plan ? nlohmann::json(m.current_plan) : nlohmann::json(nullptr);
     log_.write(e);
-    current_plan_ = id;
+    m.current_plan = id;
     ++summary_.plans;
     summary_.merges += reason == "merge";
     record_planning(reason, seconds);
@@ -388,32 +342,64 @@ class HomeRun {
     // goals; a repair's plan meets what the world does next, not a draw of
     // its own (else failures would beget failures without end).
     if (reason != "repair" && settings_.failure_chance > 0 && coin() < settings_.failure_chance) {
+      if (draw_breakdown(plan)) return;
       const std::vector<repair::ExogenousEvent> failure =
-          events_.draw(plan, current_problem_, &loaded_.home.ontology, ++serial_);
+          events_.draw(plan, problem, &loaded_.home.ontology, ++serial_);
       world_.schedule(failure);
       if (settings_.object_return_s > 0) world_.schedule(returns_.after_failure(failure));
     }
   }
 
-  // Every planner call, plan found or not, by why it was made.
-  void record_planning(const std::string& reason, double seconds) {
-    summary_.planning_seconds.push_back(seconds);
-    summary_.planning_by_reason[reason].push_back(seconds);
+  // With "robot_down" among the failure kinds, it is drawn as often as each
+  // other kind: the plan's first robot breaks down at a time drawn over the
+  // plan's span and stands again robot_repair_s later. Returns whether it
+  // was drawn (no other failure then).
+  bool draw_breakdown(const repair::ExecutingPlan& plan) {
+    const auto& kinds = settings_.failure_kinds;
+    if (std::find(kinds.begin(), kinds.end(), "robot_down") == kinds.end() || plan.steps.empty()) return false;
+    if (coin() * static_cast<double>(kinds.size()) >= 1.0) return false;
+    const std::string robot = robot_of(plan.steps.front().name, loaded_.map);
+    if (robot.empty()) return false;
+    double begin = plan.steps.front().start, end = begin;
+    for (const repair::ScheduledAction& s : plan.steps) end = std::max(end, s.end());
+    const double at = begin + coin() * (end - begin);
+    // One breakdown at a time: a robot down already does not break again.
+    double& out_until = out_of_service_until_[robot];
+    if (at < out_until) return false;
+    out_until = at + settings_.robot_repair_s;
+    schedule_breakdown(robot, at);
+    return true;
   }
 
-  void on_monitor_event(const repair::MonitorEvent& m) {
+  void schedule_breakdown(const std::string& robot, double at) {
+    repair::ExogenousEvent down, up;
+    down.time = at;
+    down.atom = out_of_order(robot);
+    down.description = robot + " breaks down";
+    up = down;
+    up.time = at + settings_.robot_repair_s;
+    up.value = false;
+    up.description = robot + " is back in service";
+    world_.schedule({down, up});
+  }
+
+  void on_monitor_event(FleetMission& mission, const repair::MonitorEvent& m) {
     using Kind = repair::MonitorEvent::Kind;
     switch (m.kind) {
-      case Kind::Plan: log_plan(m.time, *m.plan, m.reason, m.planning_seconds); return;
+      case Kind::Plan:
+        if (m.reason == "merge") mission.merging.clear();  // taken in
+        log_plan(mission, m.time, *m.plan, m.reason, m.planning_seconds, mission.execution->problem());
+        return;
       case Kind::ActionStart:
       case Kind::ActionEnd: {
         LogEvent e{m.kind == Kind::ActionStart ? "action_start" : "action_end", m.time, {},
                    robot_of(m.action, loaded_.map), {}};
-        e.payload = {{"action", m.action}, {"plan_id", current_plan_}};
+        e.payload = {{"action", m.action}, {"plan_id", mission.current_plan}};
         if (m.kind == Kind::ActionEnd && settings_.battery && !e.robot.empty()) {
           e.payload["battery"] = world_.value({"battery", e.robot}).value_or(0.0);
         }
         log_.write(e);
+        busy_time(m, e.robot);
         return;
       }
       case Kind::Failure: {
@@ -436,156 +422,362 @@ class HomeRun {
         else if (!r.deferred) ++summary_.repairs_failed;
         // A call that found no plan took its time too: latency counts it.
         if (!r.repaired && r.planner_calls > 0) record_planning("repair_failed", r.seconds);
-        explain(m.time, r.explanation.why, r.explanation.what, r.explanation.how);
+        explain(mission.seniors, m.time, r.explanation.why, r.explanation.what, r.explanation.how);
         return;
       }
       case Kind::MergeFailed:
         record_planning("merge_failed", m.planning_seconds);
-        explain(m.time, "new goals arrived while a plan ran", "no plan serves them with the goals in force",
-                m.reason + "; they wait until the plan in force ends");
-        merge_blocked_ = true;
+        explain(mission.seniors, m.time, "new goals arrived while a plan ran",
+                "no plan serves them with the goals in force",
+                m.reason + (settings_.fleet == "allocate" ? "; they go to another robot, or wait for one"
+                                                           : "; they wait until the plan in force ends"));
+        // The robot keeps its goals; the new ones go back to the home.
+        mission.merge_blocked = true;
+        for (PerceivedGoal& g : mission.merging) {
+          std::erase_if(mission.goals, [&](const PerceivedGoal& h) { return h.senior == g.senior; });
+          mission.seniors.erase(g.senior);
+          for (const std::string& r : mission.robots) refused_[g.senior].insert(r);
+          waiting_.push_back(std::move(g));
+        }
+        mission.merging.clear();
         return;
     }
   }
 
+  // Each robot's time at work, from its actions' starts and ends.
+  void busy_time(const repair::MonitorEvent& m, const std::string& robot) {
+    if (robot.empty()) return;
+    if (m.kind == repair::MonitorEvent::Kind::ActionStart) {
+      started_at_[m.action] = m.time;
+      return;
+    }
+    const auto s = started_at_.find(m.action);
+    if (s == started_at_.end()) return;
+    summary_.robot_busy_s[robot] += m.time - s->second;
+    started_at_.erase(s);
+  }
+
   // An explanation names the seniors of the mission it explains.
-  void explain(double t, const std::string& why, const std::string& what, const std::string& how) {
+  void explain(const std::set<std::string>& about, double t, const std::string& why, const std::string& what,
+               const std::string& how) {
     std::string seniors;
-    for (const std::string& s : mission_seniors_) seniors += (seniors.empty() ? "" : ", ") + s;
+    for (const std::string& s : about) seniors += (seniors.empty() ? "" : ", ") + s;
     LogEvent e{"explanation", t, seniors, {}, {}};
     e.payload = {{"why", why}, {"what", what}, {"how", how}};
     log_.write(e);
   }
 
-  // What the monitor asks at every observation while a plan runs.
-  std::optional<repair::GoalArrival> arrivals(double t, const repair::WorldState& believed) {
-    if (!clock_.wait_until(t)) throw ClockStopped{};
-    for (PerceivedGoal& g : perception_->sense(t)) pending_.push_back(std::move(g));
-    settle(t, believed);
-    if (pending_.empty() || merge_blocked_) return std::nullopt;
-    return take_pending(t);
-  }
-
-  // The problem as an external planner would get it: time 0 is `now`
-  // (the home plans from now in the task's own time), so that `alplan
-  // plan` on the file meets the same deadlines.
-  void keep_unplanned(double now) {
-    if (settings_.unplanned_dir.empty()) return;
-    std::filesystem::create_directories(settings_.unplanned_dir);
-    const std::string stem = settings_.unplanned_dir + "/unplanned-" + std::to_string(++unplanned_);
-    pddl::Problem from_now = current_problem_;
-    for (pddl::TimedInitialLiteral& til : from_now.timed_literals) til.time -= now;
-    std::erase_if(from_now.timed_literals, [](const pddl::TimedInitialLiteral& til) { return til.time <= 0.0; });
-    std::ofstream(stem + ".pddl") << "; planned at " << now << " s of the run; times below are from then\n"
-                                  << pddl::write_problem(from_now);
-    if (unplanned_ == 1) std::ofstream(settings_.unplanned_dir + "/domain.pddl") << pddl::write_domain(*loaded_.home.files.domain);
-  }
-
-  // The robots this mission plans with (robot_dispatch.h), the others
-  // taken out of `problem`; all of them when dispatching is off.
-  std::vector<std::string> dispatch(pddl::Problem& problem) const {
-    std::vector<std::string> all;
-    for (const Placed& r : loaded_.map.robots) all.push_back(r.name);
-    if (!settings_.dispatch) return all;
-    std::vector<Call> calls;
-    for (const PerceivedGoal& g : active_) calls.push_back({g.senior, g.window_end});
-    std::vector<std::string> chosen = dispatch_robots(problem, all, calls);
-    if (chosen.empty()) return all;
-    problem = with_robots_only(problem, all, chosen);
-    return chosen;
-  }
-
-  // With batteries, each robot of a mission must end it able to reach a
-  // dock (domains::return_levels): the domain's reserve keeps plans safe,
-  // this keeps a robot from being left at its reserve far from the dock,
-  // where it could not move at all (home/README.md, Batteries).
-  void require_return(pddl::Problem& problem, const std::vector<std::string>& robots) const {
-    if (!settings_.battery) return;
-    pddl::Condition all;
-    all.kind = pddl::Condition::Kind::And;
-    if (problem.goal) all.children.push_back(*problem.goal);
-    for (const std::string& r : robots) {
-      pddl::Condition enough;
-      enough.kind = pddl::Condition::Kind::Comparison;
-      enough.comparison = pddl::Comparison::GreaterEqual;
-      pddl::NumericExpression level, at_least;
-      level.kind = pddl::NumericExpression::Kind::Function;
-      level.function.name = "battery";
-      level.function.args.resize(1);
-      level.function.args[0].name = r;
-      at_least.value = return_levels_.at(r);
-      enough.expressions = {level, at_least};
-      all.children.push_back(enough);
+  // What a mission's monitor asks at every observation: the goals the home
+  // gave it since, and the windows settled since.
+  std::optional<repair::GoalArrival> arrivals(FleetMission& m, double t) {
+    if (m.incoming.empty() || m.merge_blocked) return std::nullopt;
+    repair::GoalArrival arrival;
+    arrival.withdrawn = std::move(m.withdrawn);
+    m.withdrawn.clear();
+    for (PerceivedGoal& g : m.incoming) {
+      for (const auto& fact : told_facts(g)) arrival.facts.push_back(fact);
+      if (!m.preferred && !late(g, t)) arrival.timed_literals.push_back(window_close(g));
+      arrival.goals.push_back(g.goal);
+      arrival.motivation += (arrival.motivation.empty() ? "" : "; ") + g.motivation;
+      m.seniors.insert(g.senior);
+      m.goals.push_back(g);
+      m.merging.push_back(std::move(g));
     }
-    problem.goal = all;
+    m.incoming.clear();
+    if (m.preferred) {
+      pddl::Problem preferred;
+      prefer_windows(preferred, base_.metric, m.goals, t, settings_);
+      arrival.preferences = repair::GoalArrival::Preferences{preferred.constraints, preferred.metric};
+    }
+    return arrival;
   }
 
-  // Plans every goal in course from what the robots believe at t, then
-  // executes under the monitor until the plan ends; returns the time then.
-  double mission(double t) {
-    replan_ = false;
-    mission_seniors_.clear();
-    for (const PerceivedGoal& g : active_) mission_seniors_.insert(g.senior);
-    repair::GoalArrival arrival = take_pending(t);
-    std::string motivation;
-    for (const PerceivedGoal& g : active_) motivation += (motivation.empty() ? "" : "; ") + g.motivation;
-    world_.advance(t);
-    belief_.observe(world_.observe());
+  // A robot reports its own fault (the robot's status, not the world's
+  // truth about anything else): its actions stop where they are, its
+  // mission is given up and its goals go back to the home for the others.
+  // Back in service, it stands where it broke down.
+  void notice_faults(double t) {
+    for (const std::string& r : robots_) {
+      const bool out = world_.holds(out_of_order(r));
+      if (out == down_.count(r)) continue;
+      LogEvent e{out ? "robot_down" : "robot_up", t, {}, r, {}};
+      log_.write(e);
+      if (!out) {
+        down_.erase(r);
+        if (const auto room = down_at_.find(r); room != down_at_.end()) {
+          world_.schedule({place_robot(r, room->second, t)});
+          world_.advance(t);
+          belief_.observe(world_.observe());
+        }
+        continue;
+      }
+      down_.insert(r);
+      ++summary_.robots_down;
+      down_at_[r] = last_room(r);
+      for (const repair::ActionInProgress& a : world_.in_progress()) {
+        if (robot_of(a.name, loaded_.map) == r) world_.halt(a.name);
+      }
+      for (auto m = missions_.begin(); m != missions_.end(); ++m) {
+        if (std::find((*m)->robots.begin(), (*m)->robots.end(), r) == (*m)->robots.end()) continue;
+        explain((*m)->seniors, t, (*m)->motivation, r + " broke down",
+                "its mission is given up; its goals go to the robots in service");
+        give_up(**m, t);
+        missions_.erase(m);
+        break;
+      }
+    }
+  }
+
+  // Where a robot stands, or the room its halted move left.
+  std::string last_room(const std::string& robot) const {
+    if (const auto room = TravelTimes(believed_places(belief_.state())).room_of(robot)) return *room;
+    for (const repair::ActionInProgress& a : world_.in_progress()) {
+      std::istringstream words(a.name.substr(1));
+      std::string schema, who, from;
+      if (words >> schema >> who >> from && schema == "move" && who == robot) return from;
+    }
+    return {};
+  }
+
+  static repair::ExogenousEvent place_robot(const std::string& robot, const std::string& room, double t) {
+    repair::ExogenousEvent e;
+    e.time = t;
+    e.atom = {"be", robot, room};
+    e.description = robot + " stands in " + room + " again";
+    return e;
+  }
+
+  // A mission ended or given up: the goals it did not reach go back to the
+  // home, and what its robots still do goes on to its end (a robot
+  // mid-move arrives).
+  void give_up(FleetMission& m, double t) {
+    settle(t, belief_.state());
+    for (auto* list : {&m.goals, &m.incoming, &m.merging}) {
+      for (PerceivedGoal& g : *list) {
+        if (std::none_of(waiting_.begin(), waiting_.end(), [&](const PerceivedGoal& w) { return w.senior == g.senior; })) {
+          waiting_.push_back(std::move(g));
+        }
+      }
+      list->clear();
+    }
+    for (const repair::ActionInProgress& a : m.execution->running()) world_.release(a.name);
+    // A robot refused goals as a merge into this mission: idle, it may take them.
+    for (auto& [senior, robots] : refused_) {
+      for (const std::string& r : m.robots) robots.erase(r);
+    }
+  }
+
+  // Whether a robot is free: in service, in no mission, and not finishing
+  // an action a mission left.
+  bool idle(const std::string& robot) const {
+    if (down_.count(robot)) return false;
+    for (const auto& m : missions_) {
+      if (std::find(m->robots.begin(), m->robots.end(), robot) != m->robots.end()) return false;
+    }
+    const std::vector<repair::ActionInProgress> running = world_.in_progress();
+    return std::none_of(running.begin(), running.end(),
+                        [&](const repair::ActionInProgress& a) { return robot_of(a.name, loaded_.map) == robot; });
+  }
+
+  void place_goals(double t) {
+    if (waiting_.empty()) return;
+    if (settings_.fleet == "dispatch") {
+      place_by_dispatch(t);
+    } else {
+      place_by_allocation(t);
+    }
+  }
+
+  // The home before issue 31: one mission at a time; goals that come while
+  // it runs are merged into it, or wait for its end when a merge failed.
+  void place_by_dispatch(double t) {
+    if (!missions_.empty()) {
+      FleetMission& m = *missions_.front();
+      if (m.merge_blocked) return;
+      for (PerceivedGoal& g : waiting_) m.incoming.push_back(std::move(g));
+      waiting_.clear();
+      return;
+    }
+    std::vector<std::string> free;
+    for (const std::string& r : robots_) {
+      if (idle(r)) free.push_back(r);
+    }
+    if (free.empty()) return;
+    std::vector<PerceivedGoal> goals = std::move(waiting_);
+    waiting_.clear();
+    start_mission(free, std::move(goals), t, settings_.dispatch);
+  }
+
+  // Each waiting goal to the robot with the least weighted lateness
+  // (home/goal_allocation.h): an idle robot starts a mission, a busy one
+  // merges the goal into its plan at its next look.
+  void place_by_allocation(double t) {
+    const TravelTimes travel(believed_places(belief_.state()));
+    std::vector<RobotLoad> loads;
+    std::map<std::string, FleetMission*> mission_of;
+    for (const auto& m : missions_) {
+      if (m->merge_blocked || m->robots.size() != 1) continue;
+      RobotLoad load{m->robots.front(), {}, t, false};
+      const std::vector<PerceivedGoal>& served = m->incoming.empty() ? m->goals : m->incoming;
+      if (!served.empty()) load.room = travel.room_of(served.back().senior).value_or("");
+      for (const repair::ScheduledAction& s : m->execution->plan().steps) load.free_at = std::max(load.free_at, s.end());
+      if (load.room.empty()) continue;
+      loads.push_back(load);
+      mission_of[load.robot] = m.get();
+    }
+    for (const std::string& r : robots_) {
+      const std::optional<std::string> room = travel.room_of(r);
+      if (idle(r) && room) loads.push_back({r, *room, t, true});
+    }
+    std::vector<GoalRequest> requests;
+    for (const PerceivedGoal& g : waiting_) {
+      GoalRequest request{g.senior, g.window_end, settings_.weight_of(g.emotion), {}};
+      if (const auto refused = refused_.find(g.senior); refused != refused_.end()) {
+        request.refused_by.assign(refused->second.begin(), refused->second.end());
+      }
+      requests.push_back(std::move(request));
+    }
+    AllocationOptions options;
+    options.now = t;
+    options.service_s = settings_.service_estimate_s;
+    std::map<std::string, std::vector<PerceivedGoal>> to_idle;
+    std::vector<bool> placed(waiting_.size(), false);
+    for (const Assignment& a : allocate_goals(travel, loads, requests, options)) {
+      placed[a.goal] = true;
+      if (a.to_idle) {
+        to_idle[a.robot].push_back(std::move(waiting_[a.goal]));
+      } else {
+        mission_of.at(a.robot)->incoming.push_back(std::move(waiting_[a.goal]));
+      }
+    }
+    std::vector<PerceivedGoal> still;
+    for (std::size_t i = 0; i < waiting_.size(); ++i) {
+      if (!placed[i]) still.push_back(std::move(waiting_[i]));
+    }
+    waiting_ = std::move(still);
+    for (auto& [robot, goals] : to_idle) start_mission({robot}, std::move(goals), t, false);
+  }
+
+  // Plans the goals with the robots from what the home believes at t and,
+  // with a plan, starts their mission under the monitor; without one, the
+  // goals wait until their windows close (the seniors are then looked at
+  // again). `nearest`: the nearest of the robots per senior
+  // (home/robot_dispatch.h) rather than all of them.
+  void start_mission(std::vector<std::string> robots, std::vector<PerceivedGoal> goals, double t, bool nearest) {
+    auto m = std::make_unique<FleetMission>();
+    m->id = ++missions_started_;
+    for (const PerceivedGoal& g : goals) {
+      m->seniors.insert(g.senior);
+      m->motivation += (m->motivation.empty() ? "" : "; ") + g.motivation;
+    }
     pddl::Condition all;
     all.kind = pddl::Condition::Kind::And;
-    for (const PerceivedGoal& g : active_) all.children.push_back(g.goal);
+    for (const PerceivedGoal& g : goals) all.children.push_back(g.goal);
     pddl::Problem goal_problem = base_;
     goal_problem.goal = all;
-    current_problem_ = repair::reformulate(loaded_.home.domain, goal_problem, belief_.state(), {}, t, 0.0);
-    const std::vector<std::string> robots = dispatch(current_problem_);
-    require_return(current_problem_, robots);
-    const repair::PlanningOutcome planned =
-        repair::plan_in_process(loaded_.home.domain, current_problem_, t, planner_);
-    if (!planned.plan) {
-      keep_unplanned(t);
-      explain(t, motivation, "no plan reaches the goals in course in time",
-              planned.message + "; the seniors are looked at again when their windows close");
-      record_planning("none", planned.seconds);
-      for (PerceivedGoal& g : active_) unplannable_.push_back(std::move(g));
-      active_.clear();
-      return t + settings_.step_s;
+    // Soft windows: the windows are deadlines of the plan while a plan can
+    // meet them all (the world does not close them); a goal no robot can
+    // serve in time makes them preferences, weighted by urgency.
+    m->preferred = settings_.soft_windows && std::any_of(goals.begin(), goals.end(), [t](const PerceivedGoal& g) {
+      return late(g, t);
+    });
+    if (settings_.soft_windows && !m->preferred) {
+      for (const PerceivedGoal& g : goals) goal_problem.timed_literals.push_back(window_close(g));
     }
-    current_plan_ = 0;
-    log_plan(t, *planned.plan, "initial", planned.seconds);
-    repair::Mission m;
-    m.domain = &loaded_.home.domain;
-    m.problem = current_problem_;
-    m.motivation = motivation;
-    m.robot = robots.empty() ? loaded_.map.robots.front().name : robots.front();
-    m.exogenous_predicates = domains::exogenous_predicates();
-    m.start_time = t;
-    m.on_event = [this](const repair::MonitorEvent& e) { on_monitor_event(e); };
-    m.arrivals = [this](double now, const repair::WorldState& b) { return arrivals(now, b); };
-    m.belief = &belief_;  // one belief: what this mission learns, the next knows
+    pddl::Problem problem = repair::reformulate(loaded_.home.domain, goal_problem, belief_.state(), {}, t, 0.0);
+    if (m->preferred) prefer_windows(problem, base_.metric, goals, t, settings_);
+    if (nearest) {
+      std::vector<Call> calls;
+      for (const PerceivedGoal& g : goals) calls.push_back({g.senior, g.window_end});
+      std::vector<std::string> chosen = dispatch_robots(problem, robots, calls);
+      if (!chosen.empty()) robots = std::move(chosen);
+    }
+    problem = with_robots_only(problem, robots_, robots);
+    if (settings_.battery) require_return(problem, robots, return_levels_);
+    const repair::PlanningOutcome planned = repair::plan_in_process(loaded_.home.domain, problem, t, planner_);
+    if (!planned.plan) {
+      if (!settings_.unplanned_dir.empty()) {
+        write_unplanned(settings_.unplanned_dir, ++unplanned_, problem, *loaded_.home.files.domain, t);
+      }
+      record_planning("none", planned.seconds);
+      if (goals.size() > 1) {
+        // No goal is dropped because another is impossible: the most
+        // urgent alone now, the others placed again at the next look.
+        std::stable_sort(goals.begin(), goals.end(), [&](const PerceivedGoal& a, const PerceivedGoal& b) {
+          return settings_.weight_of(a.emotion) > settings_.weight_of(b.emotion);
+        });
+        explain(m->seniors, t, m->motivation, "no plan reaches the goals in course together in time",
+                planned.message + "; the most urgent is planned alone, the others are placed again");
+        for (std::size_t i = 1; i < goals.size(); ++i) waiting_.push_back(std::move(goals[i]));
+        goals.resize(1);
+        start_mission(std::move(robots), std::move(goals), t, nearest);
+        return;
+      }
+      PerceivedGoal& g = goals.front();
+      for (const std::string& r : robots) refused_[g.senior].insert(r);
+      const std::vector<std::string> live = live_robots();
+      bool others = settings_.fleet == "allocate" && std::any_of(live.begin(), live.end(), [&](const std::string& r) {
+        return !refused_[g.senior].count(r);
+      });
+      const bool made_late = !others && settings_.soft_windows && !late(g, t);
+      if (made_late) {  // no robot meets the window: every robot may serve it late
+        g.serve_late = true;
+        refused_.erase(g.senior);
+        others = true;
+      }
+      explain(m->seniors, t, m->motivation, "no plan reaches the goals in course in time",
+              planned.message + (made_late ? "; no robot meets the window: it is planned to be served late"
+                                 : others  ? "; another robot is asked"
+                                           : "; the seniors are looked at again when their windows close"));
+      (others ? waiting_ : unplannable_).push_back(std::move(g));
+      return;
+    }
+    m->robots = robots;
+    m->goals = std::move(goals);
+    log_plan(*m, t, *planned.plan, "initial", planned.seconds, problem);
+    repair::Mission mission;
+    mission.domain = &loaded_.home.domain;
+    mission.problem = problem;
+    mission.motivation = m->motivation;
+    mission.robot = robots.front();
+    mission.exogenous_predicates = domains::exogenous_predicates();
+    mission.start_time = t;
+    FleetMission* self = m.get();  // owned by missions_ for the execution's whole life
+    mission.on_event = [this, self](const repair::MonitorEvent& e) { on_monitor_event(*self, e); };
+    mission.arrivals = [this, self](double now, const repair::WorldState&) { return arrivals(*self, now); };
+    mission.belief = &belief_;  // one belief: what one robot learns, all know
     repair::MonitorOptions options;
     options.step_size = settings_.step_s;
     // A home's plan runs long and meets many changes; a repair each is fine.
     options.max_repairs = 50;
     options.planner = replanner_;
     options.observation = observation_options();
-    merge_blocked_ = false;
-    const repair::Monitor monitor(options);
-    const repair::ExecutionReport report =
-        monitor.run(m, *planned.plan, world_, *strategy_, &world_, &loaded_.home.ontology);
-    const double end = world_.finish_running(std::max(t + settings_.step_s, report.end_time));
-    world_.advance(end);
-    belief_.observe(world_.observe());
-    keep_recognized(report);
-    // Settled on what the robots believe, as during the mission.
-    settle(end, belief_.state());
-    if (!report.goal_reached) {
-      explain(end, m.motivation, report.outcome, "the goals not reached are planned again while their windows last");
+    m->execution = std::make_unique<repair::MonitoredExecution>(options, mission, *planned.plan, world_, *strategy_,
+                                                                &world_, &loaded_.home.ontology);
+    m->next_look = std::max(t, m->execution->first_look());
+    missions_.push_back(std::move(m));
+  }
+
+  // Every mission due looks now, in the order they started; those that
+  // end hand back what they did not reach.
+  void step_missions(double t) {
+    for (std::size_t i = 0; i < missions_.size(); ++i) {
+      FleetMission& m = *missions_[i];
+      if (m.next_look > t + 1e-9) continue;
+      const std::optional<double> next = m.execution->step(t);
+      if (next) {
+        m.next_look = *next;
+        continue;
+      }
+      const repair::ExecutionReport& report = m.execution->report();
+      keep_recognized(report);
+      if (!report.goal_reached) {
+        explain(m.seniors, t, m.motivation, report.outcome,
+                "the goals not reached are planned again while their windows last");
+      }
+      give_up(m, t);
     }
-    merge_blocked_ = false;
-    // Goals still in course (a failed repair, a merge that found no plan)
-    // are planned again from here.
-    replan_ = !active_.empty();
-    return end;
+    std::erase_if(missions_, [](const std::unique_ptr<FleetMission>& m) { return m->execution->ended(); });
   }
 
   const HomeSettings& settings_;
@@ -603,40 +795,21 @@ class HomeRun {
   PlannerOptions planner_ = repair::executing_planner_options();
   PlannerOptions replanner_;
   std::unique_ptr<repair::RepairStrategy> strategy_;
-  std::vector<PerceivedGoal> pending_, active_;
+  std::vector<std::string> robots_;
+  std::vector<PerceivedGoal> pending_;  // sensed, not yet told
+  std::vector<PerceivedGoal> waiting_;  // told, no robot yet
   std::vector<PerceivedGoal> unplannable_;  // no plan found: they wait for their windows to close
-  std::vector<pddl::TimedInitialLiteral> withdrawn_;  // windows of settled goals, for the running mission
-  std::set<std::string> mission_seniors_;  // whose goals the mission in course serves
-  bool replan_ = false;
-  pddl::Problem current_problem_;
-  bool merge_blocked_ = false;
-  int plans_ = 0, current_plan_ = 0, serial_ = 0, unplanned_ = 0;
+  std::vector<std::unique_ptr<FleetMission>> missions_;
+  std::map<std::string, std::set<std::string>> refused_;  // senior -> robots whose merge found no plan
+  std::set<std::string> down_;                            // robots out of service
+  std::map<std::string, std::string> down_at_;            // where each broke down
+  std::map<std::string, double> started_at_;              // actions under way, for busy times
+  std::map<std::string, double> out_of_service_until_;    // the simulation's: breakdowns drawn
+  int plans_ = 0, serial_ = 0, unplanned_ = 0, missions_started_ = 0;
   HomeSummary summary_;
 };
 
 }  // namespace
-
-double quantile(std::vector<double> values, double q) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  const auto at = static_cast<std::size_t>(q * static_cast<double>(values.size() - 1) + 0.5);
-  return values[std::min(at, values.size() - 1)];
-}
-
-nlohmann::json HomeSummary::json() const {
-  nlohmann::json j = {{"goals", goals},         {"comforted", comforted},     {"within_window", within_window},
-          {"windows_missed", windows_missed}, {"failures", failures}, {"plans", plans},
-          {"merges", merges},       {"repairs", repairs},         {"repairs_failed", repairs_failed},
-          {"objects_recognized", objects_recognized},
-          {"planning_p50_s", quantile(planning_seconds, 0.5)}, {"planning_p95_s", quantile(planning_seconds, 0.95)},
-          {"episodes", episodes},   {"episodes_detected", episodes_detected}, {"false_alarms", false_alarms}, {"end_time", end_time}};
-  if (batteries.empty()) return j;  // runs without batteries: as before
-  nlohmann::json& b = j["batteries"];
-  for (const auto& [robot, r] : batteries) {
-    b[robot] = {{"level", r.level}, {"lowest", r.lowest}, {"reserve", r.reserve}, {"below_reserve", r.below_reserve}};
-  }
-  return j;
-}
 
 HomeSummary run_home(const HomeSettings& settings, EventLog& log, const std::function<void(double)>& on_time) {
   SimulatedClock clock;

@@ -38,6 +38,13 @@ struct HomeSummary {
   // With score_meetable: goals one idle robot could have met alone, and of
   // those, the ones comforted within their windows.
   std::size_t meetable = 0, meetable_within_window = 0;
+  // Goals whose windows closed before anyone comforted them (dropped), and
+  // goals still in course when the run ended.
+  std::size_t never_served = 0, in_course_at_end = 0;
+  // Over goals comforted after their windows: urgency weight times lateness.
+  double weighted_lateness = 0.0;
+  std::size_t robots_down = 0;  // breakdowns (failure kind robot_down)
+  std::map<std::string, double> robot_busy_s;  // each robot's time in actions
   // Every planner call, a plan found or not (a survivor statistic otherwise).
   std::vector<double> planning_seconds;
   // initial, merge, repair, proactive; none (no initial plan), merge_failed,

@@ -9,6 +9,8 @@ nlohmann::json HomeSettings::json() const {
   for (const ScriptedEpisode& e : script) {
     script_json.push_back({{"senior", e.senior}, {"start", e.start}, {"emotion", e.emotion}});
   }
+  nlohmann::json breakdowns_json = nlohmann::json::array();
+  for (const ScriptedBreakdown& b : breakdowns) breakdowns_json.push_back({{"robot", b.robot}, {"time", b.time}});
   nlohmann::json j = {{"log_version", kHomeLogVersion},
                       {"domains_dir", domains_dir},
                       {"home_file", home_file},
@@ -24,6 +26,7 @@ nlohmann::json HomeSettings::json() const {
                          {"drift_bpm", seniors.drift_bpm},
                         {"terrified_share", seniors.terrified_share}, {"sad_share", seniors.sad_share}}},
                       {"script", script_json},
+                      {"breakdowns", breakdowns_json},
                       {"failure_chance", failure_chance},
                       {"failure_kinds", failure_kinds},
                       {"step_s", step_s},
@@ -32,6 +35,12 @@ nlohmann::json HomeSettings::json() const {
                       {"windows", {{"terrified_s", terrified_window_s}, {"other_s", other_window_s}}},
                       {"planner_expansions", planner_expansions},
                       {"planner_node_limit", planner_node_limit},
+                      {"fleet", fleet},
+                      {"urgency_weights", {{"terrified", terrified_weight}, {"sad", sad_weight}, {"bored", bored_weight}}},
+                      {"service_estimate_s", service_estimate_s},
+                      {"soft_windows", soft_windows},
+                      {"window_cost_s", window_cost_s},
+                      {"robot_repair_s", robot_repair_s},
                       {"dispatch", dispatch},
                       {"replan_expansions", replan_expansions},
                       {"object_return_s", object_return_s},
@@ -86,6 +95,9 @@ HomeSettings HomeSettings::from_json(const nlohmann::json& j) {
       s.script.push_back({e.at("senior").get<std::string>(), e.at("start").get<double>(),
                           e.at("emotion").get<std::string>()});
     }
+    for (const nlohmann::json& b : j.at("breakdowns")) {
+      s.breakdowns.push_back({b.at("robot").get<std::string>(), b.at("time").get<double>()});
+    }
     s.failure_chance = j.at("failure_chance").get<double>();
     s.failure_kinds = j.at("failure_kinds").get<std::vector<std::string>>();
     s.step_s = j.at("step_s").get<double>();
@@ -95,6 +107,15 @@ HomeSettings HomeSettings::from_json(const nlohmann::json& j) {
     s.other_window_s = j.at("windows").at("other_s").get<double>();
     s.planner_expansions = j.at("planner_expansions").get<std::uint64_t>();
     s.planner_node_limit = j.at("planner_node_limit").get<std::size_t>();
+    s.fleet = j.at("fleet").get<std::string>();
+    const nlohmann::json& w = j.at("urgency_weights");
+    s.terrified_weight = w.at("terrified").get<double>();
+    s.sad_weight = w.at("sad").get<double>();
+    s.bored_weight = w.at("bored").get<double>();
+    s.service_estimate_s = j.at("service_estimate_s").get<double>();
+    s.soft_windows = j.at("soft_windows").get<bool>();
+    s.window_cost_s = j.at("window_cost_s").get<double>();
+    s.robot_repair_s = j.at("robot_repair_s").get<double>();
     s.dispatch = j.at("dispatch").get<bool>();
     s.replan_expansions = j.at("replan_expansions").get<std::uint64_t>();
     s.object_return_s = j.at("object_return_s").get<double>();
@@ -104,6 +125,12 @@ HomeSettings HomeSettings::from_json(const nlohmann::json& j) {
     throw std::invalid_argument(std::string("the run's settings: ") + e.what());
   }
   return s;
+}
+
+double HomeSettings::weight_of(const std::string& emotion) const {
+  if (emotion == "terrified") return terrified_weight;
+  if (emotion == "sad") return sad_weight;
+  return bored_weight;
 }
 
 HomeSettings default_home_settings(const std::string& domains_dir) {
@@ -116,6 +143,9 @@ HomeSettings default_home_settings(const std::string& domains_dir) {
               {"senior5", 1260.0, "bored"},
               {"senior7", 2400.0, "sad"},
               {"senior2", 2460.0, "terrified"}};
+  // robot2 breaks down on its way to senior7, while robot1 serves senior2:
+  // senior7's goal goes to robot1 (issue 31's fleet).
+  s.breakdowns = {{"robot2", 2500.0}};
   s.failure_chance = 0.8;
   s.failure_kinds = {"sibling", "arrival", "moves"};
   return s;

@@ -21,12 +21,21 @@ struct ScriptedEpisode {
   std::string emotion;  // terrified, sad, bored
 };
 
+// A robot told to break down at a time (a scripted failure of kind
+// robot_down); it stands again robot_repair_s later.
+struct ScriptedBreakdown {
+  std::string robot;
+  double time = 0.0;
+};
+
 // What a log's settings mean: one more whenever the same settings would make
 // a run behave differently (the planner's search, the simulation's models),
 // so that replay refuses a log it cannot reproduce instead of reporting a
 // difference. 2: relevance analysis, deferred anytime, dispatch, objects
-// that come back, drifting seniors (2026-11-25).
-inline constexpr int kHomeLogVersion = 3;
+// that come back, drifting seniors (2026-11-25). 3: settled windows
+// withdrawn, one belief, overruns seen to end. 4: the fleet (missions at
+// once, goals allocated to robots), robots that break down (2026-11-28).
+inline constexpr int kHomeLogVersion = 4;
 
 struct HomeSettings {
   std::string domains_dir;  // domain.pddl and types.ttl
@@ -43,9 +52,13 @@ struct HomeSettings {
   std::uint64_t seed = 1;
   SeniorModelOptions seniors;
   std::vector<ScriptedEpisode> script;  // with these, no episode is drawn
+  std::vector<ScriptedBreakdown> breakdowns;  // besides those drawn
   // Each new plan meets, with this chance, one failure of the repair
   // study's kinds drawn against it (repair/random_events.h).
   double failure_chance = 0.5;
+  // Also "robot_down", the home's own (not the repair study's): the plan's
+  // robot breaks down at a time drawn within the plan, its actions stop
+  // where they are, and its goals go to other robots.
   std::vector<std::string> failure_kinds{"sibling", "arrival", "iot", "moves", "overrun"};
   // Objects taken away or handed to a senior are back in their place after
   // this long (home/object_returns.h); 0: never.
@@ -75,8 +88,32 @@ struct HomeSettings {
   // A search that finds nothing stops after this many nodes, the same in
   // every run, not at the time limit, which depends on the machine.
   std::size_t planner_node_limit = 20000;
-  // Each mission plans with the nearest free robot per senior in need
-  // (home/robot_dispatch.h); off: with every robot.
+  // How goals reach robots. "allocate": one mission per robot, several at
+  // once; each new goal goes to the robot, idle or busy, that reaches the
+  // senior with the least weighted lateness (home/goal_allocation.h), a
+  // busy robot merging it into its plan. "dispatch" (the home before issue
+  // 31): one mission at a time, new goals merged into it.
+  std::string fleet = "allocate";
+  // Lateness weights by emotion, for the allocation (and the summary's
+  // weighted lateness): the terrified first.
+  double terrified_weight = 3.0, sad_weight = 2.0, bored_weight = 1.0;
+  // The allocation's estimate of serving a goal beyond reaching the senior
+  // (fetching the remedy, handing it over).
+  double service_estimate_s = 120.0;
+  // Urgency as PDDL 3 preferences: a goal's window is no longer a hard
+  // deadline that closes in the world and the problem; each mission's
+  // problem prefers (within END goal) for every goal, each broken
+  // preference costing its urgency weight times window_cost_s in the
+  // metric, so the planner orders seniors by urgency and serves late rather
+  // than never. Off: the window closes, and a goal no plan meets in it is
+  // dropped until then.
+  bool soft_windows = true;
+  double window_cost_s = 1000.0;
+  // With the failure kind "robot_down": how long a broken-down robot is out
+  // of service before it stands again where it broke down.
+  double robot_repair_s = 1800.0;
+  // With "dispatch": each mission plans with the nearest free robot per
+  // senior in need (home/robot_dispatch.h); off: with every robot.
   bool dispatch = true;
   double planning_time = 10.0;
   // Robots with batteries (`alplan home --battery`, issue 15): the home runs
@@ -94,6 +131,8 @@ struct HomeSettings {
   // is unchanged. Not in the log's settings: it changes no event.
   bool score_meetable = false;
 
+  double weight_of(const std::string& emotion) const;
+
   nlohmann::json json() const;
   // Throws std::invalid_argument naming a field of the wrong kind.
   static HomeSettings from_json(const nlohmann::json& json);
@@ -103,7 +142,8 @@ struct HomeSettings {
 // Section 4 with its eight seniors and a second robot, the paper's three
 // emotions arriving over an hour (senior1 terrified as in Scenario 1, a
 // sad and a bored senior, and two at once), and the paper's exogenous
-// events (the carried glass gone, a mug of a sibling type nearby).
+// events (the carried glass gone, a mug of a sibling type nearby), and
+// robot2 breaking down while both robots are at work.
 HomeSettings default_home_settings(const std::string& domains_dir);
 
 }  // namespace alplan::home

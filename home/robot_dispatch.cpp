@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <optional>
 #include <queue>
 #include <set>
 
@@ -15,71 +16,69 @@ bool names(const pddl::Atom& atom, const std::set<std::string>& objects) {
   return std::any_of(atom.args.begin(), atom.args.end(), [&](const pddl::Term& t) { return objects.count(t.name); });
 }
 
-struct Travel {
-  // Edges into each room, for times to a room from everywhere.
-  std::map<std::string, std::vector<std::pair<std::string, double>>> into;
-  std::map<std::string, std::string> room_of;  // from (be x room)
-
-  explicit Travel(const pddl::Problem& problem) {
-    std::map<std::pair<std::string, std::string>, double> time;
-    for (const pddl::NumericFact& f : problem.numeric_init) {
-      if (f.function.name == "moving_time" && f.function.args.size() == 2) {
-        time[{f.function.args[0].name, f.function.args[1].name}] = f.value;
-      }
-    }
-    for (const pddl::Atom& a : problem.init) {
-      if (a.name == "path" && a.args.size() == 2) {
-        const auto t = time.find({a.args[0].name, a.args[1].name});
-        into[a.args[1].name].emplace_back(a.args[0].name, t == time.end() ? 1.0 : t->second);
-      }
-      if (a.name == "be" && a.args.size() == 2) room_of[a.args[0].name] = a.args[1].name;
-    }
-  }
-
-  // Dijkstra backwards from `room`: the time from each room to it.
-  std::map<std::string, double> times_to(const std::string& room) const {
-    std::map<std::string, double> best{{room, 0.0}};
-    using Item = std::pair<double, std::string>;
-    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-    queue.push({0.0, room});
-    while (!queue.empty()) {
-      const auto [d, r] = queue.top();
-      queue.pop();
-      if (d > best[r]) continue;
-      const auto edges = into.find(r);
-      if (edges == into.end()) continue;
-      for (const auto& [from, t] : edges->second) {
-        const auto known = best.find(from);
-        if (known == best.end() || d + t < known->second) {
-          best[from] = d + t;
-          queue.push({d + t, from});
-        }
-      }
-    }
-    return best;
-  }
-};
-
 }  // namespace
+
+TravelTimes::TravelTimes(const pddl::Problem& problem) {
+  std::map<std::pair<std::string, std::string>, double> time;
+  for (const pddl::NumericFact& f : problem.numeric_init) {
+    if (f.function.name == "moving_time" && f.function.args.size() == 2) {
+      time[{f.function.args[0].name, f.function.args[1].name}] = f.value;
+    }
+  }
+  for (const pddl::Atom& a : problem.init) {
+    if (a.name == "path" && a.args.size() == 2) {
+      const auto t = time.find({a.args[0].name, a.args[1].name});
+      into_[a.args[1].name].emplace_back(a.args[0].name, t == time.end() ? 1.0 : t->second);
+    }
+    if (a.name == "be" && a.args.size() == 2) room_of_[a.args[0].name] = a.args[1].name;
+  }
+}
+
+std::optional<std::string> TravelTimes::room_of(const std::string& thing) const {
+  const auto it = room_of_.find(thing);
+  return it == room_of_.end() ? std::nullopt : std::optional<std::string>(it->second);
+}
+
+std::map<std::string, double> TravelTimes::times_to(const std::string& room) const {
+  std::map<std::string, double> best{{room, 0.0}};
+  using Item = std::pair<double, std::string>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+  queue.push({0.0, room});
+  while (!queue.empty()) {
+    const auto [d, r] = queue.top();
+    queue.pop();
+    if (d > best[r]) continue;
+    const auto edges = into_.find(r);
+    if (edges == into_.end()) continue;
+    for (const auto& [from, t] : edges->second) {
+      const auto known = best.find(from);
+      if (known == best.end() || d + t < known->second) {
+        best[from] = d + t;
+        queue.push({d + t, from});
+      }
+    }
+  }
+  return best;
+}
 
 std::vector<std::string> dispatch_robots(const pddl::Problem& problem, const std::vector<std::string>& robots,
                                          std::vector<Call> calls) {
-  const Travel travel(problem);
+  const TravelTimes travel(problem);
   std::stable_sort(calls.begin(), calls.end(), [](const Call& a, const Call& b) { return a.window_end < b.window_end; });
   std::vector<std::string> free;
   for (const std::string& r : robots) {
-    if (travel.room_of.count(r)) free.push_back(r);
+    if (travel.room_of(r)) free.push_back(r);
   }
   std::vector<std::string> chosen;
   std::set<std::string> seen_seniors;
   for (const Call& call : calls) {
     if (free.empty()) break;
     if (!seen_seniors.insert(call.senior).second) continue;
-    const auto room = travel.room_of.find(call.senior);
-    if (room == travel.room_of.end()) continue;
-    const std::map<std::string, double> to_senior = travel.times_to(room->second);
+    const std::optional<std::string> room = travel.room_of(call.senior);
+    if (!room) continue;
+    const std::map<std::string, double> to_senior = travel.times_to(*room);
     const auto time_of = [&](const std::string& robot) {
-      const auto t = to_senior.find(travel.room_of.at(robot));
+      const auto t = to_senior.find(*travel.room_of(robot));
       return t == to_senior.end() ? kUnreachable : t->second;
     };
     // The nearest; ties to the robot named first, so that runs repeat.

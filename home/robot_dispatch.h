@@ -12,12 +12,29 @@
 // their places in the world and serve the next mission).
 #pragma once
 
+#include <map>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pddl_parser/ast.h"
 
 namespace alplan::home {
+
+// Travelling times over the problem's `path` facts and `moving_time`
+// values (1 where a path has none), and where things are by `(be x room)`.
+class TravelTimes {
+ public:
+  explicit TravelTimes(const pddl::Problem& problem);
+  std::optional<std::string> room_of(const std::string& thing) const;
+  // The shortest time from each room that can reach `room` to it.
+  std::map<std::string, double> times_to(const std::string& room) const;
+
+ private:
+  std::map<std::string, std::vector<std::pair<std::string, double>>> into_;  // edges into each room
+  std::map<std::string, std::string> room_of_;
+};
 
 // A senior to serve, most urgent first.
 struct Call {

@@ -127,12 +127,10 @@ nlohmann::json ExecutionReport::json() const {
           {"observation", to_string(observation)}, {"sightings", sightings}};
 }
 
-namespace {
-
 // One execution: the plan in force, what has been dispatched, the report.
-class Execution {
+class MonitoredExecution::Impl {
  public:
-  Execution(const MonitorOptions& options, const Mission& mission, ExecutingPlan plan, World& world,
+  Impl(const MonitorOptions& options, const Mission& mission, ExecutingPlan plan, World& world,
             RepairStrategy& strategy, ObjectRecognizer* recognizer, const TypeOntology* ontology)
       : options_(options), mission_(mission), world_(world), strategy_(strategy), recognizer_(recognizer),
         ontology_(ontology), problem_(mission.problem), motivation_(mission.motivation),
@@ -144,11 +142,19 @@ class Execution {
     if (options_.reuse_grounding) prepare_grounding();
   }
 
-  ExecutionReport run() {
-    double t = plan_.steps.empty() ? mission_.start_time : std::min(mission_.start_time, plan_.steps.front().start);
-    for (int guard = 0; guard < 1000000; ++guard) {
+  double first_look() const {
+    return plan_.steps.empty() ? mission_.start_time : std::min(mission_.start_time, plan_.steps.front().start);
+  }
+
+  // Looks at t until it has nothing more to do at t (a repaired or merged
+  // plan is looked at again at once); returns the next look, or nothing
+  // once the run has ended.
+  std::optional<double> step(double t) {
+    if (ended_) return std::nullopt;
+    for (int same_time = 0; same_time < 1000; ++same_time) {
+      if (++looks_ > 1000000) break;
       world_.advance(t);
-      if (belief_.observe(world_.observe())) ++news_;
+      belief_.observe(world_.observe());
       if (take_arrivals(t)) continue;  // look again at the same time, with the merged plan
       const WorldState observed = belief_.state();
       remember(observed, t);
@@ -164,7 +170,10 @@ class Execution {
       }
       if (!failure && finished() && t + tolerance() >= timeline_->end_time()) {
         failure = timeline_->check_goal(t, state);
-        if (!failure) return done(true, "the goal " + goal_ + " holds at " + time_text(t), t);
+        if (!failure) {
+          done(true, "the goal " + goal_ + " holds at " + time_text(t), t);
+          return std::nullopt;
+        }
       }
       if (failure && foreseen && waiting_for_news(*failure)) failure.reset();
       if (failure && awaiting_overrun(*failure)) awaited_ = std::exchange(failure, std::nullopt);
@@ -172,8 +181,7 @@ class Execution {
         if (awaiting_overrun(*awaited_)) {
           // Nothing is dispatched meanwhile (the plan's next steps need the
           // action's end), and the plan's own times are stale: look again soon.
-          t += options_.step_size;
-          continue;
+          return t + options_.step_size;
         }
         // Seen to end: the steps that waited on it are late, plan again now
         // (the failure keeps its time: the condition failed then).
@@ -182,15 +190,28 @@ class Execution {
       awaited_.reset();
       if (failure) {
         const Attempt attempt = repair(*failure, foreseen, observed, t);
-        if (attempt == Attempt::Ended) return report_;
+        if (attempt == Attempt::Ended) return std::nullopt;
         if (attempt == Attempt::Repaired) continue;  // look again at the same time, with the new plan
       }
       if (options_.proactive && look_for_alternative(observed, t)) continue;
       dispatch(t);
       // Once the last end is dispatched, judge the goal at once, not a step later.
-      if (!finished() || t + tolerance() < timeline_->end_time()) t = next_time(t);
+      if (!finished() || t + tolerance() < timeline_->end_time()) return next_time(t);
     }
-    return done(false, "the monitor stopped: too many observations", 0.0);
+    done(false, "the monitor stopped: too many observations", t);
+    return std::nullopt;
+  }
+
+  bool ended() const { return ended_; }
+  const ExecutionReport& report() const { return report_; }
+  const ExecutingPlan& plan() const { return plan_; }
+  const pddl::Problem& problem() const { return problem_; }
+
+  // The actions this execution started that the world still runs.
+  std::vector<ActionInProgress> running() const {
+    std::vector<ActionInProgress> own = world_.in_progress();
+    std::erase_if(own, [&](const ActionInProgress& a) { return !started_.count(a.name); });
+    return own;
   }
 
  private:
@@ -200,6 +221,7 @@ class Execution {
   }
 
   ExecutionReport done(bool reached, const std::string& outcome, double t) {
+    ended_ = true;
     report_.sightings = belief_.sightings().size();
     report_.goal_reached = reached;
     report_.end_time = t;
@@ -314,7 +336,7 @@ class Execution {
   // ends change, and when they end as planned; an action seen to overrun
   // ends, as far as it knows, no earlier than its next look.
   std::vector<ActionInProgress> known_in_progress(double t) const {
-    std::vector<ActionInProgress> known = world_.in_progress();
+    std::vector<ActionInProgress> known = running();
     for (ActionInProgress& a : known) {
       if (overrunning_.count(a.name)) a.expected_end = t + options_.step_size;
     }
@@ -324,7 +346,7 @@ class Execution {
   // A foreseen failure tried before, with nothing new seen since.
   bool waiting_for_news(const Violation& failure) const {
     return deferred_ && deferred_->action == failure.action && deferred_->condition == failure.condition &&
-           deferred_->news == news_;
+           deferred_->news == belief_.news();
   }
 
   std::size_t final_repairs() const {
@@ -356,7 +378,7 @@ class Execution {
       record.deferred = true;
       record.explanation.how += "; the failure is not due yet, so the robot carries on and the monitor will try "
                                 "again when it sees something new";
-      deferred_ = DeferredFailure{failure.action, failure.condition, news_};
+      deferred_ = DeferredFailure{failure.action, failure.condition, belief_.news()};
       report_.events.push_back(time_text(t) + ": " + strategy_.name() + " cannot repair yet: " + result.how +
                                "; carrying on");
       return Attempt::Deferred;
@@ -438,7 +460,7 @@ class Execution {
     const std::optional<GoalArrival> arrival = mission_.arrivals(t, belief_.state());
     if (!arrival) return false;
     world_.advance(t);  // what the deliberation scheduled for now
-    if (belief_.observe(world_.observe())) ++news_;
+    belief_.observe(world_.observe());
     for (const auto& [fact, value] : arrival->facts) belief_.told(fact, value);
     for (const pddl::TimedInitialLiteral& gone : arrival->withdrawn) {
       belief_.withdraw(gone);
@@ -453,6 +475,10 @@ class Execution {
     merged.goal = all;
     merged.timed_literals.insert(merged.timed_literals.end(), arrival->timed_literals.begin(),
                                  arrival->timed_literals.end());
+    if (arrival->preferences) {
+      merged.constraints = arrival->preferences->constraints;
+      merged.metric = arrival->preferences->metric;
+    }
     Violation none;
     none.kind = Violation::Kind::Unsupported;
     none.time = t;
@@ -509,6 +535,7 @@ class Execution {
       const ScheduledAction& a = plan_.steps[s];
       if (progress_.started[s] || std::abs(a.start - t) > tolerance()) continue;
       world_.start_action(*plan_.task, a.action, t, a.duration);
+      started_.insert(a.name);
       belief_.act(*plan_.task, a.action, true, a.duration);
       progress_.started[s] = true;
       if (!plan_.task->actions[a.action].durative) progress_.ended[s] = true;
@@ -563,8 +590,8 @@ class Execution {
 
   double next_time(double t) const { return next_observation(*timeline_, committed_, t, options_.step_size); }
 
-  const MonitorOptions& options_;
-  const Mission& mission_;
+  const MonitorOptions options_;  // copies: the caller may step it long after it made it
+  const Mission mission_;
   World& world_;
   RepairStrategy& strategy_;
   ObjectRecognizer* recognizer_;
@@ -585,16 +612,30 @@ class Execution {
   std::optional<Belief> own_belief_;  // when the mission brings none
   Belief& belief_;
   std::vector<WorldState> history_;
-  std::size_t news_ = 0;  // observations that showed something new
+  std::set<std::string> started_;  // names of the actions it started: the others are other robots'
+  bool ended_ = false;
+  long looks_ = 0;
   std::optional<DeferredFailure> deferred_;
 };
 
-}  // namespace
+MonitoredExecution::MonitoredExecution(const MonitorOptions& options, const Mission& mission, ExecutingPlan plan,
+                                       World& world, RepairStrategy& strategy, ObjectRecognizer* recognizer,
+                                       const TypeOntology* ontology)
+    : impl_(std::make_unique<Impl>(options, mission, std::move(plan), world, strategy, recognizer, ontology)) {}
+MonitoredExecution::~MonitoredExecution() = default;
+double MonitoredExecution::first_look() const { return impl_->first_look(); }
+std::optional<double> MonitoredExecution::step(double t) { return impl_->step(t); }
+bool MonitoredExecution::ended() const { return impl_->ended(); }
+const ExecutionReport& MonitoredExecution::report() const { return impl_->report(); }
+const ExecutingPlan& MonitoredExecution::plan() const { return impl_->plan(); }
+const pddl::Problem& MonitoredExecution::problem() const { return impl_->problem(); }
+std::vector<ActionInProgress> MonitoredExecution::running() const { return impl_->running(); }
 
 ExecutionReport Monitor::run(const Mission& mission, ExecutingPlan plan, World& world, RepairStrategy& strategy,
                              ObjectRecognizer* recognizer, const TypeOntology* ontology) const {
-  Execution execution(options_, mission, std::move(plan), world, strategy, recognizer, ontology);
-  return execution.run();
+  MonitoredExecution execution(options_, mission, std::move(plan), world, strategy, recognizer, ontology);
+  for (std::optional<double> t = execution.first_look(); t;) t = execution.step(*t);
+  return execution.report();
 }
 
 }  // namespace alplan::repair

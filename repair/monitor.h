@@ -8,6 +8,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -78,6 +79,13 @@ struct GoalArrival {
   // Literals no longer to come: the windows of goals settled since the last
   // arrival, which must not close a new window early.
   std::vector<pddl::TimedInitialLiteral> withdrawn;
+  // PDDL 3 soft goals (a home's windows as preferences): when set, the
+  // merged problem's constraints and metric become these.
+  struct Preferences {
+    std::optional<pddl::Condition> constraints;
+    std::optional<pddl::Metric> metric;
+  };
+  std::optional<Preferences> preferences;
   std::string motivation;
 };
 
@@ -141,6 +149,39 @@ struct ExecutionReport {
   std::vector<std::string> events;  // what happened, in order, for people
 
   nlohmann::json json() const;
+};
+
+// One mission's execution, advanced by its caller one look at a time, so
+// that a home can run several on one world (one robot's mission each),
+// looking at each when it asks to be looked at. Monitor::run is the loop
+// over it. The world and the strategy must outlive it; the options and the
+// mission are copied (the mission's belief, when it brings one, is shared).
+class MonitoredExecution {
+ public:
+  MonitoredExecution(const MonitorOptions& options, const Mission& mission, ExecutingPlan plan, World& world,
+                     RepairStrategy& strategy, ObjectRecognizer* recognizer, const TypeOntology* ontology);
+  ~MonitoredExecution();
+  MonitoredExecution(const MonitoredExecution&) = delete;
+  MonitoredExecution& operator=(const MonitoredExecution&) = delete;
+
+  // When it first wants to look: the mission's start or the plan's first step.
+  double first_look() const;
+  // Observes at t (times never go back, across every execution on the
+  // world), checks, repairs, takes in arrivals and dispatches what falls
+  // due at t; returns when it wants to look next (after t), or nothing once
+  // the run has ended, with the goal reached or an explained failure.
+  std::optional<double> step(double t);
+  bool ended() const;
+  const ExecutionReport& report() const;
+  const ExecutingPlan& plan() const;       // in force
+  const pddl::Problem& problem() const;    // the plan's, as repairs and merges left it
+  // The actions it started that the world still runs (a robot mid-move
+  // when its mission is given up).
+  std::vector<ActionInProgress> running() const;
+
+ private:
+  class Impl;
+  std::unique_ptr<Impl> impl_;
 };
 
 class Monitor {

@@ -143,6 +143,7 @@ bool Belief::observe(const WorldState& truth) {
   }
   for (const auto& [key, value] : truth.values) state_.values[key] = value;
   state_.time = std::max(state_.time, truth.time);
+  news_ += changed;
   return changed;
 }
 

@@ -82,6 +82,10 @@ class Belief {
   void withdraw(const pddl::TimedInitialLiteral& literal);
 
   const WorldState& state() const { return state_; }
+  // How many observations so far showed something new (observe() true):
+  // several executions sharing one belief compare it, since only the first
+  // to observe a change is told so by observe().
+  std::size_t news() const { return news_; }
   // Things the problem does not name that the camera has seen, the latest
   // sighting of each, in the order first seen.
   const std::vector<Sighting>& sightings() const { return sightings_; }
@@ -108,6 +112,7 @@ class Belief {
   std::map<AtomKey, double> seen_at_;
   std::vector<pddl::TimedInitialLiteral> timed_literals_;  // not yet applied, by time
   std::vector<Sighting> sightings_;
+  std::size_t news_ = 0;
 };
 
 // Where each thing is, from the location predicate's atoms.

@@ -104,6 +104,24 @@ void WorldSimulator::cancel(const AtomKey& atom, bool value, double time) {
   });
 }
 
+void WorldSimulator::release(const std::string& action) {
+  const auto it = running_.find(action);
+  if (it == running_.end()) return;
+  const auto overrun = overruns_.find(action);
+  if (overrun != overruns_.end()) {  // it was to overrun when its end came: it still does
+    it->second.expected_end += overrun->second;
+    overruns_.erase(overrun);
+  }
+  overrunning_.insert(action);  // advance() ends it at its expected end
+}
+
+void WorldSimulator::halt(const std::string& action) {
+  running_.erase(action);
+  durations_.erase(action);
+  overrunning_.erase(action);
+  overruns_.erase(action);
+}
+
 double WorldSimulator::finish_running(double now) {
   double last = now;
   for (const ActionInProgress& a : by_end(running_)) {

@@ -57,6 +57,7 @@ class WorldSimulator : public World, public ObjectRecognizer {
     const auto it = world_.values.find(key);
     return it == world_.values.end() ? std::nullopt : std::optional<double>(it->second);
   }
+  bool holds(const AtomKey& key) const { return world_.holds(key); }
   void start_action(const GroundTask& task, ActionId action, double t, double duration) override;
   bool end_action(const GroundTask& task, ActionId action, double t) override;
   std::vector<ActionInProgress> in_progress() const override;
@@ -71,6 +72,14 @@ class WorldSimulator : public World, public ObjectRecognizer {
   // Events still to come that set `atom` to `value` at `time`, dropped (a
   // window closing for a goal already settled).
   void cancel(const AtomKey& atom, bool value, double time);
+
+  // A running action no one will dispatch the end of (its mission was
+  // given up or moved to another robot) ends on its own when expected,
+  // late if it overruns: the robot mid-move still arrives.
+  void release(const std::string& action);
+  // A running action stops where it is and never ends (a robot broken
+  // down mid-move): its start's effects stay, its end's never come.
+  void halt(const std::string& action);
 
   // Lets every running action end as expected (a mission given up leaves
   // a robot mid-move, and it still arrives); returns when the last ends,

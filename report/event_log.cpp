@@ -22,7 +22,8 @@ constexpr TypeRule kTypes[] = {
     {"plan", "plan_id"},           {"action_start", "action"}, {"action_end", "action"},
     {"observation", ""},           {"failure", ""},            {"repair", ""},
     {"explanation", ""},           {"comforted", "senior"},    {"window_missed", "senior"},
-    {"battery", "robot"},
+    {"battery", "robot"},          {"robot_down", "robot"},    {"robot_up", "robot"},
+    {"window_passed", "senior"},
 };
 
 const TypeRule* rule_for(const std::string& type) {

@@ -172,9 +172,11 @@ TEST_CASE("replay refuses settings of another log version, naming both", "[home]
 }
 
 TEST_CASE("every planner call counts in the latency figures, those that found no plan too", "[home]") {
-  // A drawn home where a repair finds no plan (seed 1: one of nine), as
-  // `alplan bench home --seniors 12 --robots 2 --rooms 12 --objects 60
-  // --hours 1 --episodes-per-hour 2 --failure-chance 1 --strategy replan`.
+  // A drawn home where a repair and a merge find no plan (seed 5, two
+  // robots at work at once, windows that close), as `alplan bench home
+  // --seniors 12 --robots 2 --rooms 12 --objects 60 --hours 1
+  // --episodes-per-hour 2 --failure-chance 1 --strategy replan --seed 5
+  // --hard-windows`.
   HomeSettings s;
   s.domains_dir = kAssistedLiving;
   s.until = 3600.0;
@@ -185,7 +187,8 @@ TEST_CASE("every planner call counts in the latency figures, those that found no
   s.seniors.episodes_per_hour = 2.0;
   s.failure_chance = 1.0;
   s.strategy = "replan";
-  s.seed = 1;
+  s.seed = 5;
+  s.soft_windows = false;
   EventLog log;
   const HomeSummary summary = run_home(s, log);
   std::size_t by_reason = 0;
@@ -199,6 +202,7 @@ TEST_CASE("every planner call counts in the latency figures, those that found no
   }
   CHECK(failed->second.size() == unrepaired);
   CHECK(summary.repairs_failed >= 1);
+  CHECK(summary.planning_by_reason.count("merge_failed") == 1);
 }
 
 TEST_CASE("a settled goal's window no longer closes a later one", "[home]") {

@@ -1,0 +1,32 @@
+// HomeSummary's figures (home_run.h).
+#include <algorithm>
+
+#include "home/home_run.h"
+
+namespace alplan::home {
+
+double quantile(std::vector<double> values, double q) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const auto at = static_cast<std::size_t>(q * static_cast<double>(values.size() - 1) + 0.5);
+  return values[std::min(at, values.size() - 1)];
+}
+
+nlohmann::json HomeSummary::json() const {
+  nlohmann::json j = {{"goals", goals},         {"comforted", comforted},     {"within_window", within_window},
+          {"windows_missed", windows_missed}, {"failures", failures}, {"plans", plans},
+          {"merges", merges},       {"repairs", repairs},         {"repairs_failed", repairs_failed},
+          {"objects_recognized", objects_recognized},
+          {"planning_p50_s", quantile(planning_seconds, 0.5)}, {"planning_p95_s", quantile(planning_seconds, 0.95)},
+          {"episodes", episodes},   {"episodes_detected", episodes_detected}, {"false_alarms", false_alarms}, {"end_time", end_time},
+          {"never_served", never_served}, {"in_course_at_end", in_course_at_end}, {"weighted_lateness", weighted_lateness},
+          {"robots_down", robots_down}, {"robot_busy_s", robot_busy_s}};
+  if (batteries.empty()) return j;  // runs without batteries: as before
+  nlohmann::json& b = j["batteries"];
+  for (const auto& [robot, r] : batteries) {
+    b[robot] = {{"level", r.level}, {"lowest", r.lowest}, {"reserve", r.reserve}, {"below_reserve", r.below_reserve}};
+  }
+  return j;
+}
+
+}  // namespace alplan::home
