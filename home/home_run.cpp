@@ -17,6 +17,7 @@
 #include "home/home_problem.h"
 #include "home/object_returns.h"
 #include "home/robot_dispatch.h"
+#include "home/robot_faults.h"
 #include "pddl_parser/writer.h"
 #include "planner/evaluation.h"
 #include "repair/monitor.h"
@@ -27,9 +28,6 @@
 
 namespace alplan::home {
 namespace {
-
-// The world's atom that a robot is out of service (its fault report).
-repair::AtomKey out_of_order(const std::string& robot) { return {"out_of_order", robot}; }
 
 // One mission in course: its robots (one with the allocation), the goals
 // it serves, its execution under the monitor, and what the home has for it
@@ -63,17 +61,13 @@ class HomeRun {
         world_(repair::initial_world(base_), {}),
         belief_(base_, observation_options()),
         events_(event_options()),
+        faults_(world_, loaded_.map, settings),
         returns_(base_, settings.object_return_s),
         return_levels_(settings.battery ? domains::return_levels(base_) : std::map<std::string, double>{}) {
     if (settings.fleet != "allocate" && settings.fleet != "dispatch") {
       throw std::invalid_argument("--fleet " + settings.fleet + ": not allocate or dispatch");
     }
     for (const Placed& r : loaded_.map.robots) robots_.push_back(r.name);
-    for (const ScriptedBreakdown& b : settings.breakdowns) {
-      if (!loaded_.map.has_robot(b.robot)) throw std::invalid_argument("breakdown of " + b.robot + ": no such robot");
-      out_of_service_until_[b.robot] = std::max(out_of_service_until_[b.robot], b.time + settings.robot_repair_s);
-      schedule_breakdown(b.robot, b.time);
-    }
     planner_ = home_planner_options(settings);
     replanner_ = home_replanner_options(settings);
     repair::StrategyOptions strategy;
@@ -203,7 +197,7 @@ class HomeRun {
   std::vector<std::string> live_robots() const {
     std::vector<std::string> live;
     for (const std::string& r : robots_) {
-      if (!down_.count(r)) live.push_back(r);
+      if (!faults_.down(r)) live.push_back(r);
     }
     return live;
   }
@@ -342,45 +336,12 @@ class HomeRun {
     // goals; a repair's plan meets what the world does next, not a draw of
     // its own (else failures would beget failures without end).
     if (reason != "repair" && settings_.failure_chance > 0 && coin() < settings_.failure_chance) {
-      if (draw_breakdown(plan)) return;
+      if (faults_.draw(plan, [this] { return coin(); })) return;
       const std::vector<repair::ExogenousEvent> failure =
           events_.draw(plan, problem, &loaded_.home.ontology, ++serial_);
       world_.schedule(failure);
       if (settings_.object_return_s > 0) world_.schedule(returns_.after_failure(failure));
     }
-  }
-
-  // With "robot_down" among the failure kinds, it is drawn as often as each
-  // other kind: the plan's first robot breaks down at a time drawn over the
-  // plan's span and stands again robot_repair_s later. Returns whether it
-  // was drawn (no other failure then).
-  bool draw_breakdown(const repair::ExecutingPlan& plan) {
-    const auto& kinds = settings_.failure_kinds;
-    if (std::find(kinds.begin(), kinds.end(), "robot_down") == kinds.end() || plan.steps.empty()) return false;
-    if (coin() * static_cast<double>(kinds.size()) >= 1.0) return false;
-    const std::string robot = robot_of(plan.steps.front().name, loaded_.map);
-    if (robot.empty()) return false;
-    double begin = plan.steps.front().start, end = begin;
-    for (const repair::ScheduledAction& s : plan.steps) end = std::max(end, s.end());
-    const double at = begin + coin() * (end - begin);
-    // One breakdown at a time: a robot down already does not break again.
-    double& out_until = out_of_service_until_[robot];
-    if (at < out_until) return false;
-    out_until = at + settings_.robot_repair_s;
-    schedule_breakdown(robot, at);
-    return true;
-  }
-
-  void schedule_breakdown(const std::string& robot, double at) {
-    repair::ExogenousEvent down, up;
-    down.time = at;
-    down.atom = out_of_order(robot);
-    down.description = robot + " breaks down";
-    up = down;
-    up.time = at + settings_.robot_repair_s;
-    up.value = false;
-    up.description = robot + " is back in service";
-    world_.schedule({down, up});
   }
 
   void on_monitor_event(FleetMission& mission, const repair::MonitorEvent& m) {
@@ -492,59 +453,26 @@ class HomeRun {
     return arrival;
   }
 
-  // A robot reports its own fault (the robot's status, not the world's
-  // truth about anything else): its actions stop where they are, its
-  // mission is given up and its goals go back to the home for the others.
-  // Back in service, it stands where it broke down.
+  // A robot reports its own fault (robot_faults.h): its mission is given
+  // up and its goals go back to the home for the robots in service.
   void notice_faults(double t) {
-    for (const std::string& r : robots_) {
-      const bool out = world_.holds(out_of_order(r));
-      if (out == down_.count(r)) continue;
-      LogEvent e{out ? "robot_down" : "robot_up", t, {}, r, {}};
+    for (const RobotFaults::Report& r : faults_.hear(t, belief_.state())) {
+      LogEvent e{r.down ? "robot_down" : "robot_up", t, {}, r.robot, {}};
       log_.write(e);
-      if (!out) {
-        down_.erase(r);
-        if (const auto room = down_at_.find(r); room != down_at_.end()) {
-          world_.schedule({place_robot(r, room->second, t)});
-          world_.advance(t);
-          belief_.observe(world_.observe());
-        }
+      if (!r.down) {
+        belief_.observe(world_.observe());  // where it stands again
         continue;
       }
-      down_.insert(r);
       ++summary_.robots_down;
-      down_at_[r] = last_room(r);
-      for (const repair::ActionInProgress& a : world_.in_progress()) {
-        if (robot_of(a.name, loaded_.map) == r) world_.halt(a.name);
-      }
       for (auto m = missions_.begin(); m != missions_.end(); ++m) {
-        if (std::find((*m)->robots.begin(), (*m)->robots.end(), r) == (*m)->robots.end()) continue;
-        explain((*m)->seniors, t, (*m)->motivation, r + " broke down",
+        if (std::find((*m)->robots.begin(), (*m)->robots.end(), r.robot) == (*m)->robots.end()) continue;
+        explain((*m)->seniors, t, (*m)->motivation, r.robot + " broke down",
                 "its mission is given up; its goals go to the robots in service");
         give_up(**m, t);
         missions_.erase(m);
         break;
       }
     }
-  }
-
-  // Where a robot stands, or the room its halted move left.
-  std::string last_room(const std::string& robot) const {
-    if (const auto room = TravelTimes(believed_places(belief_.state())).room_of(robot)) return *room;
-    for (const repair::ActionInProgress& a : world_.in_progress()) {
-      std::istringstream words(a.name.substr(1));
-      std::string schema, who, from;
-      if (words >> schema >> who >> from && schema == "move" && who == robot) return from;
-    }
-    return {};
-  }
-
-  static repair::ExogenousEvent place_robot(const std::string& robot, const std::string& room, double t) {
-    repair::ExogenousEvent e;
-    e.time = t;
-    e.atom = {"be", robot, room};
-    e.description = robot + " stands in " + room + " again";
-    return e;
   }
 
   // A mission ended or given up: the goals it did not reach go back to the
@@ -570,7 +498,7 @@ class HomeRun {
   // Whether a robot is free: in service, in no mission, and not finishing
   // an action a mission left.
   bool idle(const std::string& robot) const {
-    if (down_.count(robot)) return false;
+    if (faults_.down(robot)) return false;
     for (const auto& m : missions_) {
       if (std::find(m->robots.begin(), m->robots.end(), robot) != m->robots.end()) return false;
     }
@@ -659,79 +587,32 @@ class HomeRun {
   }
 
   // Plans the goals with the robots from what the home believes at t and,
-  // with a plan, starts their mission under the monitor; without one, the
-  // goals wait until their windows close (the seniors are then looked at
-  // again). `nearest`: the nearest of the robots per senior
+  // with a plan, starts their mission under the monitor; without one, see
+  // unplanned(). `nearest`: the nearest of the robots per senior
   // (home/robot_dispatch.h) rather than all of them.
   void start_mission(std::vector<std::string> robots, std::vector<PerceivedGoal> goals, double t, bool nearest) {
     auto m = std::make_unique<FleetMission>();
-    m->id = ++missions_started_;
     for (const PerceivedGoal& g : goals) {
       m->seniors.insert(g.senior);
       m->motivation += (m->motivation.empty() ? "" : "; ") + g.motivation;
     }
-    pddl::Condition all;
-    all.kind = pddl::Condition::Kind::And;
-    for (const PerceivedGoal& g : goals) all.children.push_back(g.goal);
-    pddl::Problem goal_problem = base_;
-    goal_problem.goal = all;
     // Soft windows: the windows are deadlines of the plan while a plan can
     // meet them all (the world does not close them); a goal no robot can
     // serve in time makes them preferences, weighted by urgency.
     m->preferred = settings_.soft_windows && std::any_of(goals.begin(), goals.end(), [t](const PerceivedGoal& g) {
       return late(g, t);
     });
-    if (settings_.soft_windows && !m->preferred) {
-      for (const PerceivedGoal& g : goals) goal_problem.timed_literals.push_back(window_close(g));
-    }
-    pddl::Problem problem = repair::reformulate(loaded_.home.domain, goal_problem, belief_.state(), {}, t, 0.0);
-    if (m->preferred) prefer_windows(problem, base_.metric, goals, t, settings_);
-    if (nearest) {
-      std::vector<Call> calls;
-      for (const PerceivedGoal& g : goals) calls.push_back({g.senior, g.window_end});
-      std::vector<std::string> chosen = dispatch_robots(problem, robots, calls);
-      if (!chosen.empty()) robots = std::move(chosen);
-    }
-    problem = with_robots_only(problem, robots_, robots);
-    if (settings_.battery) require_return(problem, robots, return_levels_);
+    const pddl::Problem problem = mission_problem(robots, goals, t, nearest, m->preferred);
     const repair::PlanningOutcome planned = repair::plan_in_process(loaded_.home.domain, problem, t, planner_);
     if (!planned.plan) {
       if (!settings_.unplanned_dir.empty()) {
         write_unplanned(settings_.unplanned_dir, ++unplanned_, problem, *loaded_.home.files.domain, t);
       }
       record_planning("none", planned.seconds);
-      if (goals.size() > 1) {
-        // No goal is dropped because another is impossible: the most
-        // urgent alone now, the others placed again at the next look.
-        std::stable_sort(goals.begin(), goals.end(), [&](const PerceivedGoal& a, const PerceivedGoal& b) {
-          return settings_.weight_of(a.emotion) > settings_.weight_of(b.emotion);
-        });
-        explain(m->seniors, t, m->motivation, "no plan reaches the goals in course together in time",
-                planned.message + "; the most urgent is planned alone, the others are placed again");
-        for (std::size_t i = 1; i < goals.size(); ++i) waiting_.push_back(std::move(goals[i]));
-        goals.resize(1);
-        start_mission(std::move(robots), std::move(goals), t, nearest);
-        return;
-      }
-      PerceivedGoal& g = goals.front();
-      for (const std::string& r : robots) refused_[g.senior].insert(r);
-      const std::vector<std::string> live = live_robots();
-      bool others = settings_.fleet == "allocate" && std::any_of(live.begin(), live.end(), [&](const std::string& r) {
-        return !refused_[g.senior].count(r);
-      });
-      const bool made_late = !others && settings_.soft_windows && !late(g, t);
-      if (made_late) {  // no robot meets the window: every robot may serve it late
-        g.serve_late = true;
-        refused_.erase(g.senior);
-        others = true;
-      }
-      explain(m->seniors, t, m->motivation, "no plan reaches the goals in course in time",
-              planned.message + (made_late ? "; no robot meets the window: it is planned to be served late"
-                                 : others  ? "; another robot is asked"
-                                           : "; the seniors are looked at again when their windows close"));
-      (others ? waiting_ : unplannable_).push_back(std::move(g));
+      unplanned(std::move(robots), std::move(goals), t, nearest, planned, *m);
       return;
     }
+    m->id = ++missions_started_;
     m->robots = robots;
     m->goals = std::move(goals);
     log_plan(*m, t, *planned.plan, "initial", planned.seconds, problem);
@@ -756,6 +637,69 @@ class HomeRun {
                                                                 &world_, &loaded_.home.ontology);
     m->next_look = std::max(t, m->execution->first_look());
     missions_.push_back(std::move(m));
+  }
+
+  // The goals' problem from what the home believes at t, with the robots
+  // only (narrowed to the nearest per senior when asked); the windows as
+  // deadlines, or with `preferred` as weighted preferences.
+  pddl::Problem mission_problem(std::vector<std::string>& robots, const std::vector<PerceivedGoal>& goals, double t,
+                                bool nearest, bool preferred) {
+    pddl::Condition all;
+    all.kind = pddl::Condition::Kind::And;
+    for (const PerceivedGoal& g : goals) all.children.push_back(g.goal);
+    pddl::Problem goal_problem = base_;
+    goal_problem.goal = all;
+    if (settings_.soft_windows && !preferred) {
+      for (const PerceivedGoal& g : goals) goal_problem.timed_literals.push_back(window_close(g));
+    }
+    pddl::Problem problem = repair::reformulate(loaded_.home.domain, goal_problem, belief_.state(), {}, t, 0.0);
+    if (preferred) prefer_windows(problem, base_.metric, goals, t, settings_);
+    if (nearest) {
+      std::vector<Call> calls;
+      for (const PerceivedGoal& g : goals) calls.push_back({g.senior, g.window_end});
+      std::vector<std::string> chosen = dispatch_robots(problem, robots, calls);
+      if (!chosen.empty()) robots = std::move(chosen);
+    }
+    problem = with_robots_only(problem, robots_, robots);
+    if (settings_.battery) require_return(problem, robots, return_levels_);
+    return problem;
+  }
+
+  // No plan for the goals with these robots. Several goals: the most
+  // urgent alone now, the others placed again at the next look (no goal is
+  // dropped because another is impossible). One goal: another robot is
+  // asked; when none is left, soft windows serve it late, hard ones drop it
+  // until its window closes (its senior is then looked at again).
+  void unplanned(std::vector<std::string> robots, std::vector<PerceivedGoal> goals, double t, bool nearest,
+                 const repair::PlanningOutcome& planned, const FleetMission& m) {
+    if (goals.size() > 1) {
+      std::stable_sort(goals.begin(), goals.end(), [&](const PerceivedGoal& a, const PerceivedGoal& b) {
+        return settings_.weight_of(a.emotion) > settings_.weight_of(b.emotion);
+      });
+      explain(m.seniors, t, m.motivation, "no plan reaches the goals in course together in time",
+              planned.message + "; the most urgent is planned alone, the others are placed again");
+      for (std::size_t i = 1; i < goals.size(); ++i) waiting_.push_back(std::move(goals[i]));
+      goals.resize(1);
+      start_mission(std::move(robots), std::move(goals), t, nearest);
+      return;
+    }
+    PerceivedGoal& g = goals.front();
+    for (const std::string& r : robots) refused_[g.senior].insert(r);
+    const std::vector<std::string> live = live_robots();
+    bool others = settings_.fleet == "allocate" && std::any_of(live.begin(), live.end(), [&](const std::string& r) {
+      return !refused_[g.senior].count(r);
+    });
+    const bool made_late = !others && settings_.soft_windows && !late(g, t);
+    if (made_late) {  // no robot meets the window: every robot may serve it late
+      g.serve_late = true;
+      refused_.erase(g.senior);
+      others = true;
+    }
+    explain(m.seniors, t, m.motivation, "no plan reaches the goals in course in time",
+            planned.message + (made_late ? "; no robot meets the window: it is planned to be served late"
+                               : others  ? "; another robot is asked"
+                                         : "; the seniors are looked at again when their windows close"));
+    (others ? waiting_ : unplannable_).push_back(std::move(g));
   }
 
   // Every mission due looks now, in the order they started; those that
@@ -789,6 +733,7 @@ class HomeRun {
   repair::WorldSimulator world_;
   repair::Belief belief_;
   repair::RandomEventGenerator events_;
+  RobotFaults faults_;
   ObjectReturns returns_;
   std::map<std::string, double> return_levels_;  // with batteries: per robot, enough to reach a dock
   std::mt19937_64 events_random_{settings_.seed * 104729 + 3};
@@ -801,10 +746,7 @@ class HomeRun {
   std::vector<PerceivedGoal> unplannable_;  // no plan found: they wait for their windows to close
   std::vector<std::unique_ptr<FleetMission>> missions_;
   std::map<std::string, std::set<std::string>> refused_;  // senior -> robots whose merge found no plan
-  std::set<std::string> down_;                            // robots out of service
-  std::map<std::string, std::string> down_at_;            // where each broke down
   std::map<std::string, double> started_at_;              // actions under way, for busy times
-  std::map<std::string, double> out_of_service_until_;    // the simulation's: breakdowns drawn
   int plans_ = 0, serial_ = 0, unplanned_ = 0, missions_started_ = 0;
   HomeSummary summary_;
 };
