@@ -32,22 +32,23 @@ void add_home_run_options(CLI::App& cmd, home::HomeSettings& s) {
            s.sad_weight = w.at(1);
            s.bored_weight = w.at(2);
          },
-         "Lateness weights of terrified, sad and bored seniors for the allocation (default 3 2 1)")
+         "Urgency weights of terrified, sad and bored seniors: of lateness in the allocation, of a window missed "
+         "in the plan's metric (default 3 2 1)")
       ->expected(3)
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0.0, 1e4));
   cmd.add_flag("!--hard-windows", s.soft_windows,
                "Comfort windows as hard deadlines that close (a goal no plan meets in time is dropped), not as "
                "PDDL 3 preferences weighted by urgency");
   cmd.add_option("--window-cost", s.window_cost_s,
                  "A window missed costs its urgency weight times this many seconds of the plan's metric")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0.0, 1e7));
   cmd.add_option("--failure-kinds", s.failure_kinds,
                  "Kinds of the failures drawn against new plans: the repair study's (sibling arrival iot moves "
                  "overrun emotion two) and robot_down")
       ->expected(1, 16);
   cmd.add_option("--robot-repair", s.robot_repair_s,
                  "Seconds a broken-down robot (failure kind robot_down) is out of service")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0.0, 1e7));
   cmd.add_flag("!--no-dispatch", s.dispatch,
                "With --fleet dispatch: plan each mission with every robot, not the nearest one per senior");
   add_battery_options(cmd, s);
