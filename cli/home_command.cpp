@@ -40,6 +40,7 @@ void make_live(HomeCommandOptions& o) {
   home::HomeSettings& s = o.settings;
   s.live = true;
   s.script.clear();
+  s.breakdowns.clear();  // a failure, scripted
   s.seniors.episodes_per_hour = 0.0;
   if (!o.failure_chance_given) s.failure_chance = 0.0;
   if (!o.until_given) s.until = 1e9;
@@ -115,11 +116,18 @@ void print_summary(const home::HomeSummary& s, bool live) {
 }
 
 int run_home_command(HomeCommandOptions& o) {
+  // The default home's script, breakdown and devices name its seniors,
+  // robots and rooms: another home has none of them.
+  const auto another_home = [&o] {
+    o.settings.script.clear();
+    o.settings.breakdowns.clear();
+    o.settings.devices.clear();
+  };
   if (!o.home_file.empty()) {
     o.settings.home_file = o.home_file;
-    o.settings.script.clear();  // the default home's script names its seniors
+    another_home();
   }
-  if (o.settings.generate_seniors > 0) o.settings.script.clear();
+  if (o.settings.generate_seniors > 0) another_home();
   check_live_flags(o.live);
   if (o.live.live) {
     make_live(o);

@@ -30,6 +30,9 @@ struct PerceivedGoal {
   // With soft windows: no robot has a plan that meets the window, so it is
   // planned with the window as a preference, to be served late.
   bool serve_late = false;
+  // The device of the senior's room that answers the emotion at once
+  // (HomeSettings::devices), asked for in the goal; empty: none.
+  std::string device;
 };
 
 // Perception scored against a simulation's truth, which only a simulated

@@ -4,9 +4,11 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include "domains/emotion_goals.h"
 #include "domains/home_generator.h"
+#include "home/robot_dispatch.h"
 #include "pddl_parser/writer.h"
 #include "repair/reformulation.h"
 
@@ -47,10 +49,57 @@ domains::LoadedHome load_files(const HomeSettings& s) {
   return domains::load_home_files(domain_file(s), file, ontology);
 }
 
+// Whether `type` is `ancestor` or declared below it in the domain.
+bool type_is_a(const pddl::Domain& domain, std::string type, const std::string& ancestor) {
+  for (std::size_t depth = 0; depth <= domain.types.size(); ++depth) {  // a cycle cannot loop for ever
+    if (type == ancestor) return true;
+    const auto d = std::find_if(domain.types.begin(), domain.types.end(),
+                                [&](const pddl::TypeDeclaration& t) { return t.name == type; });
+    if (d == domain.types.end() || d->parents.empty()) return false;
+    type = d->parents.front();
+  }
+  return false;
+}
+
+// The settings' devices join the home's problem, each where it stands.
+domains::LoadedHome with_devices(domains::LoadedHome home, const HomeSettings& s) {
+  if (s.devices.empty()) return home;
+  pddl::Problem problem = *home.files.problem;
+  for (const HomeDevice& d : s.devices) {
+    if (d.type != "speaker" && d.type != "lamp" && d.type != "tv") {
+      throw std::invalid_argument("device " + d.name + ": type " + d.type + " is not speaker, lamp or tv");
+    }
+    if (repair::object_type(problem, d.name)) throw std::invalid_argument("device " + d.name + ": the home has it already");
+    const std::optional<std::string> room = repair::object_type(problem, d.room);
+    if (!room || !type_is_a(home.domain, *room, "location")) {
+      throw std::invalid_argument("device " + d.name + ": " + d.room + " is not a room of the home");
+    }
+    pddl::TypedName object;
+    object.name = d.name;
+    object.types = {d.type};
+    problem.objects.push_back(object);
+    pddl::Atom at;
+    at.name = "be";
+    at.args.resize(2);
+    at.args[0].name = d.name;
+    at.args[1].name = d.room;
+    problem.init.push_back(at);
+  }
+  home.files.problem = std::make_shared<const pddl::Problem>(std::move(problem));
+  return home;
+}
+
+// What answers each emotion at once (the domain's device actions).
+const char* device_type_for(const std::string& emotion) {
+  if (emotion == "terrified") return "speaker";
+  if (emotion == "sad") return "lamp";
+  return "tv";
+}
+
 }  // namespace
 
 LoadedRun load_run(const HomeSettings& s) {
-  domains::LoadedHome home = with_batteries(load_files(s), s);
+  domains::LoadedHome home = with_devices(with_batteries(load_files(s), s), s);
   HomeMap map = read_home_map(*home.files.problem);
   return {std::move(home), std::move(map)};
 }
@@ -60,7 +109,7 @@ pddl::Problem calm_problem(const pddl::Problem& problem) {
   pddl::Problem out = problem;
   const auto about_moods = [](const pddl::Atom& a) {
     for (const char* p : {"terrified", "sad", "bored", "hydration_time", "comfort_time", "soothed", "cheerful",
-                          "entertained"}) {
+                          "entertained", "reassured"}) {
       if (a.name == p) return true;
     }
     return false;
@@ -81,10 +130,12 @@ std::string robot_of(const std::string& action, const HomeMap& map) {
   return {};
 }
 
-nlohmann::json steps_json(const repair::ExecutingPlan& plan, const HomeMap& map) {
+nlohmann::json steps_json(const repair::ExecutingPlan& plan, const HomeMap& map, const std::set<std::string>& devices) {
   nlohmann::json steps = nlohmann::json::array();
   for (const repair::ScheduledAction& s : plan.steps) {
-    steps.push_back({{"start", s.start}, {"duration", s.duration}, {"action", s.name}, {"robot", robot_of(s.name, map)}});
+    nlohmann::json step = {{"start", s.start}, {"duration", s.duration}, {"action", s.name}, {"robot", robot_of(s.name, map)}};
+    if (const std::string device = device_of(s.name, devices); !device.empty()) step["device"] = device;
+    steps.push_back(std::move(step));
   }
   return steps;
 }
@@ -163,9 +214,44 @@ void write_unplanned(const std::string& dir, int n, const pddl::Problem& problem
 std::vector<std::pair<repair::AtomKey, bool>> told_facts(const PerceivedGoal& g) {
   std::vector<std::pair<repair::AtomKey, bool>> facts;
   for (const char* e : {"terrified", "sad", "bored"}) facts.push_back({{e, g.senior}, g.emotion == e});
-  for (const char* p : {"soothed", "cheerful", "entertained"}) facts.push_back({{p, g.senior}, false});
+  for (const char* p : {"soothed", "cheerful", "entertained", "reassured"}) facts.push_back({{p, g.senior}, false});
   facts.push_back({{g.window, g.senior}, true});
   return facts;
+}
+
+std::optional<std::string> answering_device(const PerceivedGoal& g, const pddl::Problem& home,
+                                           const repair::WorldState& believed) {
+  const TravelTimes places(believed_places(believed));
+  const std::optional<std::string> room = places.room_of(g.senior);
+  if (!room) return std::nullopt;
+  const std::string wanted = device_type_for(g.emotion);
+  for (const pddl::TypedName& o : home.objects) {
+    if (o.types.empty() || o.types.front() != wanted || places.room_of(o.name) != room) continue;
+    if (wanted == "tv" && !believed.holds({"available", o.name})) continue;  // in use
+    return o.name;
+  }
+  return std::nullopt;
+}
+
+void ask_device_response(PerceivedGoal& g) {
+  pddl::Condition both;
+  both.kind = pddl::Condition::Kind::And;
+  both.children = {g.goal, domains::senior_condition("reassured", g.senior)};
+  g.goal = both;
+}
+
+void drop_device_response(PerceivedGoal& g) {
+  if (g.device.empty()) return;
+  pddl::Condition perceived = g.goal.children.front();
+  g.goal = std::move(perceived);
+  g.device.clear();
+}
+
+std::string device_of(const std::string& action, const std::set<std::string>& devices) {
+  std::istringstream words(action.size() > 2 ? action.substr(1, action.size() - 2) : action);
+  std::string schema, first;
+  if (!(words >> schema >> first) || !devices.count(first)) return {};
+  return first;
 }
 
 pddl::TimedInitialLiteral window_close(const PerceivedGoal& g) {

@@ -5,6 +5,7 @@
 
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,8 +38,9 @@ pddl::Problem calm_problem(const pddl::Problem& problem);
 // The robot a ground action names ("(move robot1 a b)"), or "".
 std::string robot_of(const std::string& action, const HomeMap& map);
 
-// A plan's steps for the log: start, duration, action and robot.
-nlohmann::json steps_json(const repair::ExecutingPlan& plan, const HomeMap& map);
+// A plan's steps for the log: start, duration, action and robot, and the
+// device for a device's action.
+nlohmann::json steps_json(const repair::ExecutingPlan& plan, const HomeMap& map, const std::set<std::string>& devices);
 
 // With batteries, each robot of a mission must end it able to reach a
 // dock (domains::return_levels): the domain's reserve keeps plans safe,
@@ -61,6 +63,20 @@ void write_unplanned(const std::string& dir, int n, const pddl::Problem& problem
 // What a new goal tells the world and the robots: the emotion read, the
 // goal not yet reached, the window open.
 std::vector<std::pair<repair::AtomKey, bool>> told_facts(const PerceivedGoal& goal);
+// The device of the senior's believed room that answers their emotion (a
+// speaker for the terrified, a lamp for the sad, an available TV for the
+// bored), if any.
+std::optional<std::string> answering_device(const PerceivedGoal& goal, const pddl::Problem& home,
+                                           const repair::WorldState& believed);
+// The goal asks for the device's answer too: (and GOAL (reassured SENIOR)).
+void ask_device_response(PerceivedGoal& goal);
+// And no longer (the senior left the device's room, or its answer was
+// given): the goal as perceived. Nothing when it asked for none.
+void drop_device_response(PerceivedGoal& goal);
+// The device a ground action is done by, "(play_calming_music speaker1 ...)"
+// -> "speaker1"; "" for the robots' actions.
+std::string device_of(const std::string& action, const std::set<std::string>& devices);
+
 // The literal that closes the goal's window (hard windows).
 pddl::TimedInitialLiteral window_close(const PerceivedGoal& goal);
 

@@ -68,6 +68,11 @@ class HomeRun {
       throw std::invalid_argument("--fleet " + settings.fleet + ": not allocate or dispatch");
     }
     for (const Placed& r : loaded_.map.robots) robots_.push_back(r.name);
+    for (const pddl::TypedName& o : base_.objects) {
+      if (!o.types.empty() && (o.types.front() == "speaker" || o.types.front() == "lamp" || o.types.front() == "tv")) {
+        devices_.insert(o.name);
+      }
+    }
     planner_ = home_planner_options(settings);
     replanner_ = home_replanner_options(settings);
     repair::StrategyOptions strategy;
@@ -186,6 +191,11 @@ class HomeRun {
   void receive(double t) {
     for (PerceivedGoal& g : pending_) {
       tell(g, t);
+      // A device where the senior is answers at once, in the same plan.
+      if (const auto device = answering_device(g, base_, belief_.state())) {
+        g.device = *device;
+        ask_device_response(g);
+      }
       score_meetable(g, t);
       ++summary_.goals;
       waiting_.push_back(std::move(g));
@@ -325,7 +335,7 @@ class HomeRun {
     LogEvent e{"plan", t, {}, {}, {}};
     const int id = ++plans_;
     e.payload = {{"plan_id", id}, {"reason", reason}, {"plan", repair::plan_text(plan)},
-                 {"steps", steps_json(plan, loaded_.map)}, {"planning_seconds", seconds}, {"mission", m.id}};
+                 {"steps", steps_json(plan, loaded_.map, devices_)}, {"planning_seconds", seconds}, {"mission", m.id}};
     e.payload["supersedes"] = m.current_plan ? nlohmann::json(m.current_plan) : nlohmann::json(nullptr);
     log_.write(e);
     m.current_plan = id;
@@ -356,6 +366,7 @@ class HomeRun {
         LogEvent e{m.kind == Kind::ActionStart ? "action_start" : "action_end", m.time, {},
                    robot_of(m.action, loaded_.map), {}};
         e.payload = {{"action", m.action}, {"plan_id", mission.current_plan}};
+        if (const std::string device = device_of(m.action, devices_); !device.empty()) e.payload["device"] = device;
         if (m.kind == Kind::ActionEnd && settings_.battery && !e.robot.empty()) {
           e.payload["battery"] = world_.value({"battery", e.robot}).value_or(0.0);
         }
@@ -482,6 +493,9 @@ class HomeRun {
     settle(t, belief_.state());
     for (auto* list : {&m.goals, &m.incoming, &m.merging}) {
       for (PerceivedGoal& g : *list) {
+        // A device answers once, where the senior was: given or no longer
+        // possible, it is not asked for again.
+        drop_device_response(g);
         if (std::none_of(waiting_.begin(), waiting_.end(), [&](const PerceivedGoal& w) { return w.senior == g.senior; })) {
           waiting_.push_back(std::move(g));
         }
@@ -616,6 +630,7 @@ class HomeRun {
     m->robots = robots;
     m->goals = std::move(goals);
     log_plan(*m, t, *planned.plan, "initial", planned.seconds, problem);
+    explain_devices(*m, *planned.plan, t);
     repair::Mission mission;
     mission.domain = &loaded_.home.domain;
     mission.problem = problem;
@@ -684,6 +699,13 @@ class HomeRun {
       return;
     }
     PerceivedGoal& g = goals.front();
+    if (!g.device.empty()) {  // the device's answer may be what cannot be: the robot's remedy alone
+      explain(m.seniors, t, m.motivation, "no plan reaches the goal with " + g.device + "'s answer",
+              planned.message + "; planned again without it");
+      drop_device_response(g);
+      waiting_.push_back(std::move(g));
+      return;
+    }
     for (const std::string& r : robots) refused_[g.senior].insert(r);
     const std::vector<std::string> live = live_robots();
     bool others = settings_.fleet == "allocate" && std::any_of(live.begin(), live.end(), [&](const std::string& r) {
@@ -700,6 +722,19 @@ class HomeRun {
                                : others  ? "; another robot is asked"
                                          : "; the seniors are looked at again when their windows close"));
     (others ? waiting_ : unplannable_).push_back(std::move(g));
+  }
+
+  // The paper's Discussion: devices answer at once beside the robots. Says
+  // which, and what the robots do meanwhile.
+  void explain_devices(const FleetMission& m, const repair::ExecutingPlan& plan, double t) {
+    std::string devices, robots;
+    for (const repair::ScheduledAction& s : plan.steps) {
+      if (!device_of(s.name, devices_).empty()) devices += (devices.empty() ? "" : "; ") + s.name;
+    }
+    if (devices.empty()) return;
+    for (const std::string& r : m.robots) robots += (robots.empty() ? "" : ", ") + r;
+    explain(m.seniors, t, m.motivation, "the home's devices can answer at once, before a robot arrives",
+            devices + " now, while " + robots + " brings the remedy (plan " + std::to_string(m.current_plan) + ")");
   }
 
   // Every mission due looks now, in the order they started; those that
@@ -741,6 +776,7 @@ class HomeRun {
   PlannerOptions replanner_;
   std::unique_ptr<repair::RepairStrategy> strategy_;
   std::vector<std::string> robots_;
+  std::set<std::string> devices_;  // speakers, lamps, TVs: their actions need no robot
   std::vector<PerceivedGoal> pending_;  // sensed, not yet told
   std::vector<PerceivedGoal> waiting_;  // told, no robot yet
   std::vector<PerceivedGoal> unplannable_;  // no plan found: they wait for their windows to close

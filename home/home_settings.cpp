@@ -11,6 +11,8 @@ nlohmann::json HomeSettings::json() const {
   }
   nlohmann::json breakdowns_json = nlohmann::json::array();
   for (const ScriptedBreakdown& b : breakdowns) breakdowns_json.push_back({{"robot", b.robot}, {"time", b.time}});
+  nlohmann::json devices_json = nlohmann::json::array();
+  for (const HomeDevice& d : devices) devices_json.push_back({{"name", d.name}, {"type", d.type}, {"room", d.room}});
   nlohmann::json j = {{"log_version", kHomeLogVersion},
                       {"domains_dir", domains_dir},
                       {"home_file", home_file},
@@ -27,6 +29,7 @@ nlohmann::json HomeSettings::json() const {
                         {"terrified_share", seniors.terrified_share}, {"sad_share", seniors.sad_share}}},
                       {"script", script_json},
                       {"breakdowns", breakdowns_json},
+                      {"devices", devices_json},
                       {"failure_chance", failure_chance},
                       {"failure_kinds", failure_kinds},
                       {"step_s", step_s},
@@ -98,6 +101,10 @@ HomeSettings HomeSettings::from_json(const nlohmann::json& j) {
     for (const nlohmann::json& b : j.at("breakdowns")) {
       s.breakdowns.push_back({b.at("robot").get<std::string>(), b.at("time").get<double>()});
     }
+    for (const nlohmann::json& d : j.at("devices")) {
+      s.devices.push_back({d.at("name").get<std::string>(), d.at("type").get<std::string>(),
+                           d.at("room").get<std::string>()});
+    }
     s.failure_chance = j.at("failure_chance").get<double>();
     s.failure_kinds = j.at("failure_kinds").get<std::vector<std::string>>();
     s.step_s = j.at("step_s").get<double>();
@@ -146,6 +153,10 @@ HomeSettings default_home_settings(const std::string& domains_dir) {
   // robot2 breaks down on its way to senior7, while robot1 serves senior2:
   // senior7's goal goes to robot1 (issue 31's fleet).
   s.breakdowns = {{"robot2", 2500.0}};
+  // Speakers where the terrified seniors of the script are, lamps where the
+  // sad ones are (the library's TV is the problem's own).
+  s.devices = {{"speaker1", "speaker", "bedroom1"}, {"speaker2", "speaker", "bedroom2"},
+               {"lamp1", "lamp", "bedroom3"}, {"lamp2", "lamp", "library1"}};
   s.failure_chance = 0.8;
   s.failure_kinds = {"sibling", "arrival", "moves"};
   return s;

@@ -28,6 +28,13 @@ struct ScriptedBreakdown {
   double time = 0.0;
 };
 
+// A device of the home that answers an emotion at once (a speaker, a lamp,
+// a TV), where it stands: the domain's play_calming_music, warm_the_lights
+// and put_on_a_programme.
+struct HomeDevice {
+  std::string name, type, room;  // type: speaker, lamp or tv
+};
+
 // What a log's settings mean: one more whenever the same settings would make
 // a run behave differently (the planner's search, the simulation's models),
 // so that replay refuses a log it cannot reproduce instead of reporting a
@@ -53,6 +60,10 @@ struct HomeSettings {
   SeniorModelOptions seniors;
   std::vector<ScriptedEpisode> script;  // with these, no episode is drawn
   std::vector<ScriptedBreakdown> breakdowns;  // besides those drawn
+  // Added to the home's problem (a TV may be one of its objects already).
+  // A goal for a senior in a room with a device that answers their emotion
+  // asks for that answer too, in the same plan as the robot's remedy.
+  std::vector<HomeDevice> devices;
   // Each new plan meets, with this chance, one failure of the repair
   // study's kinds drawn against it (repair/random_events.h).
   double failure_chance = 0.5;

@@ -65,7 +65,9 @@ std::vector<RandomEventKind> study_event_kinds() {
 // The steps of the plan each kind of event can hit.
 struct RandomEventGenerator::PlanSteps {
   std::vector<const ScheduledAction*> carries, handovers, moves;
-  double end = 0.0;
+  // When the plan runs: events are drawn within it, not before it began (a
+  // home plans at any time of its day; the study's plans start at 0).
+  double begin = 0.0, end = 0.0;
 };
 
 RandomEventGenerator::RandomEventGenerator(RandomEventOptions options)
@@ -88,7 +90,9 @@ std::vector<ExogenousEvent> RandomEventGenerator::draw(const ExecutingPlan& plan
 std::optional<RandomFailure> RandomEventGenerator::draw_failure(const ExecutingPlan& plan, const pddl::Problem& problem,
                                                                 const TypeOntology* ontology, int serial) {
   PlanSteps steps;
+  steps.begin = plan.steps.empty() ? 0.0 : plan.steps.front().start;
   for (const ScheduledAction& s : plan.steps) {
+    steps.begin = std::min(steps.begin, s.start);
     const std::string schema = word(s.name, 0);
     if (schema == options_.carry_schema) steps.carries.push_back(&s);
     if (options_.handover_schemas.count(schema)) steps.handovers.push_back(&s);
@@ -182,7 +186,7 @@ std::vector<ExogenousEvent> RandomEventGenerator::fails(const PlanSteps& steps, 
   const std::vector<const ScheduledAction*> candidates = carries(steps, problem, iot);
   if (candidates.empty()) return {};
   const ScheduledAction& carry = *candidates[index(candidates.size())];
-  return {becomes_unavailable(uniform(0.0, std::max(0.0, carry.start - 0.001)), word(carry.name, 2))};
+  return {becomes_unavailable(uniform(steps.begin, std::max(steps.begin, carry.start - 0.001)), word(carry.name, 2))};
 }
 
 // An untagged carried object fails; an object of a sibling type stands
@@ -205,7 +209,7 @@ std::vector<ExogenousEvent> RandomEventGenerator::sibling_present(const PlanStep
   const std::vector<std::string> types = siblings(problem, ontology, object);
   const std::string type = types[index(types.size())];
   const std::string room = uniform(0.0, 1.0) < 0.5 ? rooms.front() : rooms[index(rooms.size())];
-  const double at = uniform(0.0, std::max(0.0, carry.start - 0.001));
+  const double at = uniform(steps.begin, std::max(steps.begin, carry.start - 0.001));
   // As in the paper's Scenarios 1 and 2: every object of that category in
   // the pickup room is taken, not only the one the plan needs.
   const std::optional<std::string> category = ontology.parent(object_type(problem, object).value_or(""));
@@ -245,7 +249,7 @@ std::vector<ExogenousEvent> RandomEventGenerator::unavailable(const PlanSteps& s
   if (steps.carries.empty()) return {};
   const ScheduledAction& carry = *steps.carries[index(steps.carries.size())];
   const std::string object = word(carry.name, 2), room = word(carry.name, 3);
-  const double at = uniform(0.0, std::max(0.0, carry.start - 0.001));
+  const double at = uniform(steps.begin, std::max(steps.begin, carry.start - 0.001));
   std::vector<ExogenousEvent> events{becomes_unavailable(at, object)};
   if (!ontology) return events;
   const std::vector<std::string> types = siblings(problem, *ontology, object);
@@ -267,7 +271,7 @@ std::vector<ExogenousEvent> RandomEventGenerator::new_object(const PlanSteps& st
   if (room.empty()) return {};
   const std::vector<std::string> types(ontology->augmented().begin(), ontology->augmented().end());
   const std::string type = types[index(types.size())];
-  const double at = uniform(0.0, steps.end);
+  const double at = uniform(steps.begin, steps.end);
   return {object_appears(at, {type + "_new" + std::to_string(serial), type, room, 1.0})};
 }
 
@@ -285,7 +289,7 @@ std::vector<ExogenousEvent> RandomEventGenerator::senior_moves(const PlanSteps& 
   }
   if (rooms.empty()) return {};
   const std::string to = rooms[index(rooms.size())];
-  return repair::senior_moves(uniform(0.0, give.start), senior, from, to);
+  return repair::senior_moves(uniform(steps.begin, give.start), senior, from, to);
 }
 
 // The senior the plan comforts feels something else before the handover;
@@ -305,7 +309,7 @@ std::vector<ExogenousEvent> RandomEventGenerator::emotion_changes(const PlanStep
   }
   if (from.empty() || others.empty()) return {};
   const std::string to = others[index(others.size())];
-  const double at = uniform(0.0, give.start);
+  const double at = uniform(steps.begin, give.start);
   std::vector<ExogenousEvent> events = repair::emotion_changes(at, senior, from, to);
   const auto window = options_.emotion_windows.find(to);
   if (window != options_.emotion_windows.end() && !holds(problem, window->second, senior)) {

@@ -75,6 +75,25 @@ json bar_layer(const PlanHistory& h) {
                                  {{"field", "ended_at"}, {"title", "ended at"}}})}}}};
 }
 
+// Instantaneous steps (a device's answer) take no time: a bar would have no
+// width, so each is a point in its row, coloured by its plan.
+json instant_layer(const PlanHistory& h) {
+  json rows = json::array();
+  for (const json& row : step_rows(h)) {
+    if (row.at("duration").get<double>() == 0.0) rows.push_back(row);
+  }
+  if (rows.empty()) return nullptr;
+  return {{"data", {{"values", rows}}},
+          {"mark", {{"type", "point"}, {"shape", "triangle-right"}, {"filled", true}, {"size", 120}}},
+          {"encoding",
+           {{"x", {{"field", "start"}, {"type", "quantitative"}}},
+            {"y", {{"field", "robot"}, {"type", "nominal"}}},
+            {"color", {{"field", "colour"}, {"type", "nominal"}, {"scale", colour_scale(h)}}},
+            {"tooltip", json::array({{{"field", "action"}}, {{"field", "plan"}}, {{"field", "status"}},
+                                     {{"field", "start"}, {"title", "planned at"}},
+                                     {{"field", "started_at"}, {"title", "done at"}}})}}}};
+}
+
 json failure_layers(const EventLog& log, double tick_size) {
   json rows = json::array();
   for (const Event& e : log.events) {
@@ -172,6 +191,7 @@ json gantt_spec(const EventLog& log, const PlanHistory& history) {
   json layers = json::array({bar_layer(history)});
   layers[0]["encoding"]["x"]["scale"] = {{"domain", {0, end}}, {"nice", false}};
   const double row_height = static_cast<double>(height) / static_cast<double>(robots.size());
+  if (json instant = instant_layer(history); !instant.is_null()) layers.push_back(std::move(instant));
   for (json& l : failure_layers(log, 0.9 * row_height)) layers.push_back(std::move(l));
   for (json& l : repair_layers(log)) layers.push_back(std::move(l));
   return {{"$schema", kVegaLiteSchema},

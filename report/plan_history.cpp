@@ -15,6 +15,9 @@ constexpr double kEpsilon = 5e-4;
 std::string step_robot(const json& step, const std::string& action) {
   const std::string robot = text_field(step, "robot");
   if (!robot.empty()) return robot;
+  // A device's action (a speaker playing) has its own row.
+  const std::string device = text_field(step, "device");
+  if (!device.empty()) return device;
   // The domain's actions name their robot first: (move robot1 a b).
   const std::vector<std::string> terms = action_terms(action);
   return terms.size() > 1 ? terms[1] : "";

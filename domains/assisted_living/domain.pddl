@@ -24,6 +24,8 @@
   (:requirements :typing :durative-actions :fluents :timed-initial-literals :action-costs)
   (:types
     robot senior location drinking_vessel making_music - object
+    device - object
+    speaker lamp - device
     entertainment - object
     solving reading communication_device - entertainment
     drinking_glass glass_bottle - drinking_vessel
@@ -35,7 +37,7 @@
     corridor sunroom - location)
 
   (:predicates
-    (be ?locatable - (either robot senior drinking_vessel making_music entertainment) ?loc - location)
+    (be ?locatable - (either robot senior drinking_vessel making_music entertainment device) ?loc - location)
     (path ?loc1 - location ?loc2 - location)
     (hydration_time ?senior - senior)
     ;; ours: the time window for cheering or entertaining (the paper's
@@ -52,7 +54,9 @@
     (filled ?item - drinking_vessel)
     (holding ?robot - robot ?item - (either drinking_vessel making_music solving reading))
     (given ?item - (either drinking_vessel making_music solving reading) ?senior - senior)
-    (suggested ?item - (either tv desktop) ?senior - senior))
+    (suggested ?item - (either tv desktop) ?senior - senior)
+    ;; ours: a device of the senior's room has answered their emotion
+    (reassured ?senior - senior))
 
   (:functions
     (moving_time ?loc1 - location ?loc2 - location) - number
@@ -135,4 +139,25 @@
     :duration (= ?duration (receiving_time))
     :condition (and (at start (suggested ?item ?senior)) (at start (sad ?senior)) (over all (comfort_time ?senior)))
     :effect (and (at end (not (sad ?senior))) (at end (cheerful ?senior))))
+
+  ;; ours (the paper's Discussion: responses beyond objects): the home's
+  ;; devices answer at once, beside the robots, in the senior's room:
+  ;; calming music from a speaker for a terrified senior, warm light for a
+  ;; sad one, a programme on the TV for a bored one. Instantaneous: no robot
+  ;; and no time taken; the home asks for (reassured ?senior) beside the
+  ;; comfort goal when such a device stands where the senior is.
+  (:action play_calming_music
+    :parameters (?speaker - speaker ?senior - senior ?location - location)
+    :precondition (and (be ?speaker ?location) (be ?senior ?location) (terrified ?senior))
+    :effect (reassured ?senior))
+
+  (:action warm_the_lights
+    :parameters (?lamp - lamp ?senior - senior ?location - location)
+    :precondition (and (be ?lamp ?location) (be ?senior ?location) (sad ?senior))
+    :effect (reassured ?senior))
+
+  (:action put_on_a_programme
+    :parameters (?tv - tv ?senior - senior ?location - location)
+    :precondition (and (be ?tv ?location) (be ?senior ?location) (bored ?senior) (available ?tv))
+    :effect (reassured ?senior))
 )

@@ -222,6 +222,33 @@ TEST_CASE("a goal merged into the busy robot's plan, and an impossible goal leav
   CHECK(late.weighted_lateness >= s.terrified_weight * (served->time - served->payload.at("window_end").get<double>()));
 }
 
+TEST_CASE("a device answers at once, in the same plan as the robot's remedy", "[home][fleet]") {
+  // The default home's speaker in senior1's bedroom.
+  const HomeSettings s = scripted({{"senior1", 300.0, "terrified"}}, 900.0);
+  REQUIRE_FALSE(s.devices.empty());
+  EventLog log;
+  run_home(s, log);
+  const auto plan = first(log.events(), "plan", [](const LogEvent&) { return true; });
+  REQUIRE(plan);
+  bool device_step = false, robot_step = false;
+  for (const auto& step : plan->payload.at("steps")) {
+    if (step.value("device", "") == "speaker1") {
+      device_step = true;
+      CHECK(step.at("duration").get<double>() == 0.0);
+      CHECK(step.at("start").get<double>() == Approx(plan->time).margin(0.01));  // at once
+      CHECK(step.at("action").get<std::string>().rfind("(play_calming_music speaker1 senior1", 0) == 0);
+    }
+    robot_step = robot_step || step.at("robot") == "robot1" || step.at("robot") == "robot2";
+  }
+  CHECK(device_step);
+  CHECK(robot_step);
+  CHECK(first(log.events(), "action_start", [](const LogEvent& e) { return e.payload.value("device", "") == "speaker1"; }));
+  CHECK(first(log.events(), "explanation", [](const LogEvent& e) {
+    return e.payload.at("how").get<std::string>().find("speaker1") != std::string::npos;
+  }));
+  CHECK(comforted(log.events(), "senior1"));
+}
+
 TEST_CASE("windows as preferences: the planner serves first the senior whose window weighs more", "[home][fleet]") {
   // robot1 alone in bedroom1; senior2 terrified in bedroom2 (water from the
   // kitchen: about 300 s), senior7 sad in the library (the guitar from the
