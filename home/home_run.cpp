@@ -1,13 +1,9 @@
 #include "home/home_run.h"
 
 #include <algorithm>
-#include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <memory>
 #include <optional>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 
 #include "domains/battery_home.h"
@@ -18,7 +14,6 @@
 #include "home/object_returns.h"
 #include "home/robot_dispatch.h"
 #include "home/robot_faults.h"
-#include "pddl_parser/writer.h"
 #include "planner/evaluation.h"
 #include "repair/monitor.h"
 #include "repair/observation.h"

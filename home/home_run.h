@@ -1,11 +1,13 @@
 // The running home (issue 16; the paper's Fig. 3 over a whole home): the
 // seniors' stress and emotions come in over simulated time, goals are
 // generated, the robots plan, act under the monitor and repair, and every
-// step is written to the event log. Several seniors at once: each goal has
-// its window by urgency; a goal arriving while a plan runs is merged by
-// planning from the current state, committed to what is underway; a senior
-// not comforted by the end of their window is seen as stressed again and
-// the process restarts for them.
+// step is written to the event log. Several seniors at once, and the
+// robots as a fleet (issue 31): each goal has its window by urgency and goes
+// to the robot with the least weighted lateness; several missions run at
+// once, a busy robot merging a goal into its plan, committed to what is
+// underway; a robot that breaks down hands its goals to the others; a window
+// no plan can meet is served late (soft windows) or, with hard windows,
+// dropped and its senior seen as stressed again.
 #pragma once
 
 #include <functional>
