@@ -8,6 +8,7 @@
 # quotes, made from the runs' bench-home.json files.
 # Usage: benchmarks/home_fleet.sh OUT_DIR [ALPLAN]   (about 10 minutes)
 #        benchmarks/home_fleet.sh --table OUT_DIR    (the table again)
+#        RUNS="allocate-soft" benchmarks/home_fleet.sh OUT_DIR   (some of the settings)
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 table_only=0
@@ -15,7 +16,7 @@ if [ "${1:-}" = --table ]; then table_only=1; shift; fi
 out=${1:?usage: home_fleet.sh [--table] OUT_DIR [ALPLAN]}
 alplan=${2:-$here/../build/cli/alplan}
 if [ "$table_only" = 0 ]; then
-  for run in dispatch-hard allocate-hard allocate-soft; do
+  for run in ${RUNS:-dispatch-hard allocate-hard allocate-soft}; do
     flags=(--fleet "${run%-*}")
     [ "${run#*-}" = hard ] && flags+=(--hard-windows)
     for seed in 1 2 3; do

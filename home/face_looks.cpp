@@ -9,6 +9,7 @@ std::optional<PerceivedGoal> FaceLooks::look(const std::string& senior, const pe
   if (!stress.stressed) {
     // Looks are taken only while stressed: calm again is where the episode ends.
     generator_.episode_ended(senior);
+    if (checking_.erase(senior)) busy_.insert(senior);  // the overdue goal stays in course
     return std::nullopt;
   }
   if (busy_.count(senior)) return std::nullopt;
@@ -25,10 +26,22 @@ std::optional<PerceivedGoal> FaceLooks::look(const std::string& senior, const pe
   if (!made) return std::nullopt;
   PerceivedGoal goal = goal_of(senior, *made, t);
   busy_.insert(senior);
+  if (const auto checked = checking_.find(senior); checked != checking_.end()) {
+    const std::string in_course = checked->second;
+    checking_.erase(checked);
+    if (in_course == goal.predicate) {  // confirmed: the goal in course stays, late
+      LogEvent confirmed{"goal_confirmed", t, senior, {}, {}};
+      confirmed.payload = {{"goal", "(" + goal.predicate + " " + senior + ")"}};
+      log_.write(confirmed);
+      return std::nullopt;
+    }
+    goal.supersedes = in_course;
+  }
   LogEvent event{"goal", t, senior, {}, {}};
   event.payload = {{"goal", "(" + goal.predicate + " " + senior + ")"}, {"emotion", goal.emotion},
                    {"motivation", goal.motivation}, {"decided_by", goal.decided_by},
                    {"window_end", goal.window_end}};
+  if (!goal.supersedes.empty()) event.payload["supersedes"] = "(" + goal.supersedes + " " + senior + ")";
   log_.write(event);
   return goal;
 }
@@ -49,13 +62,21 @@ PerceivedGoal FaceLooks::goal_of(const std::string& senior, const perception::Ge
 
 void FaceLooks::comforted(const std::string& senior, double t) {
   busy_.erase(senior);
+  checking_.erase(senior);
   generator_.episode_ended(senior);
   next_look_[senior] = t + settings_.grace_s;
 }
 
 void FaceLooks::missed(const std::string& senior, double t) {
   busy_.erase(senior);
+  checking_.erase(senior);
   next_look_[senior] = t;
+}
+
+void FaceLooks::overdue(const PerceivedGoal& goal, double t) {
+  busy_.erase(goal.senior);
+  checking_[goal.senior] = goal.predicate;
+  next_look_[goal.senior] = t;
 }
 
 }  // namespace alplan::home

@@ -42,6 +42,9 @@ class FaceLooks {
   void comforted(const std::string& senior, double t);
   // The window closed first: looked at again at once.
   void missed(const std::string& senior, double t);
+  // The window passed with the goal in course: looked at again at once, to
+  // confirm the goal or supersede it (GoalSource::overdue).
+  void overdue(const PerceivedGoal& goal, double t);
 
  private:
   PerceivedGoal goal_of(const std::string& senior, const perception::GeneratedGoal& made, double t) const;
@@ -52,6 +55,7 @@ class FaceLooks {
   std::map<std::string, double> next_look_;
   std::map<std::string, int> looks_;
   std::set<std::string> busy_;
+  std::map<std::string, std::string> checking_;  // senior -> predicate of the overdue goal a look checks
 };
 
 }  // namespace alplan::home

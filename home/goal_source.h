@@ -30,6 +30,9 @@ struct PerceivedGoal {
   // With soft windows: no robot has a plan that meets the window, so it is
   // planned with the window as a preference, to be served late.
   bool serve_late = false;
+  // A look at window's end read another emotion: this goal replaces the
+  // one in course for the senior, whose goal predicate this is.
+  std::string supersedes;
   // The device of the senior's room that answers the emotion at once
   // (HomeSettings::devices), asked for in the goal; empty: none.
   std::string device;
@@ -51,6 +54,11 @@ class GoalSource {
   virtual void comforted(const PerceivedGoal& goal, double t) = 0;
   // The window closed first: the senior is looked at again.
   virtual void missed(const PerceivedGoal& goal, double t) = 0;
+  // The window passed with the goal still in course (soft windows): the
+  // senior is looked at again at once. A reading that calls for the same
+  // goal confirms it (no new goal); one that calls for another makes a goal
+  // that supersedes it (PerceivedGoal::supersedes).
+  virtual void overdue(const PerceivedGoal& goal, double t) = 0;
   // Episodes begun by `until`, detected, and false alarms; nothing when the
   // source knows no truth to score against.
   virtual std::optional<PerceptionScore> score(double until) const = 0;

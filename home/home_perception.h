@@ -35,6 +35,7 @@ class HomePerception final : public GoalSource {
   void comforted(const PerceivedGoal& goal, double t) override;
   // The window closed first: the senior is looked at again at once.
   void missed(const PerceivedGoal& goal, double t) override;
+  void overdue(const PerceivedGoal& goal, double t) override { looks_.overdue(goal, t); }
   std::optional<PerceptionScore> score(double until) const override;
 
   // Scoring against the simulation's truth (never read by the deliberation):

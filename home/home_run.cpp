@@ -185,6 +185,7 @@ class HomeRun {
   // New goals: told, scored, and waiting for a robot.
   void receive(double t) {
     for (PerceivedGoal& g : pending_) {
+      if (!g.supersedes.empty()) retire(g.senior, g.supersedes, t);
       tell(g, t);
       // A device where the senior is answers at once, in the same plan.
       if (const auto device = answering_device(g, base_, belief_.state())) {
@@ -196,6 +197,32 @@ class HomeRun {
       waiting_.push_back(std::move(g));
     }
     pending_.clear();
+  }
+
+  // A look at an overdue goal's senior read another emotion: the goal in
+  // course gives way to the new one. A mission left with nothing to serve
+  // is given up (its robot free for the new goal).
+  void retire(const std::string& senior, const std::string& predicate, double t) {
+    const auto retired = [&](const PerceivedGoal& g) { return g.senior == senior && g.predicate == predicate; };
+    std::size_t found = std::erase_if(waiting_, retired) + std::erase_if(unplannable_, retired);
+    for (auto m = missions_.begin(); m != missions_.end();) {
+      FleetMission& mission = **m;
+      const std::size_t here = std::erase_if(mission.goals, retired) + std::erase_if(mission.incoming, retired) +
+                               std::erase_if(mission.merging, retired);
+      found += here;
+      if (here > 0 && mission.goals.empty() && mission.incoming.empty() && mission.merging.empty()) {
+        give_up(mission, t);
+        m = missions_.erase(m);
+      } else {
+        ++m;
+      }
+    }
+    if (found == 0) return;
+    refused_.erase(senior);
+    LogEvent e{"goal_superseded", t, senior, {}, {}};
+    e.payload = {{"goal", "(" + predicate + " " + senior + ")"}};
+    log_.write(e);
+    ++summary_.superseded;
   }
 
   // Robots in service: not broken down.
@@ -267,6 +294,7 @@ class HomeRun {
           e.payload = {{"goal", "(" + g->predicate + " " + g->senior + ")"}, {"window_end", g->window_end}};
           log_.write(e);
           g->overdue = true;
+          perception_->overdue(*g, t);  // looked at again: the goal confirmed or superseded
           refused_.erase(g->senior);  // refused as a deadline: late, any robot may take it
         }
         ++g;

@@ -46,6 +46,9 @@ struct HomeSummary {
   // Over goals comforted after their windows: urgency weight times lateness.
   double weighted_lateness = 0.0;
   std::size_t robots_down = 0;  // breakdowns (failure kind robot_down)
+  // Soft windows: goals whose senior, looked at again when the window
+  // passed, called for another goal.
+  std::size_t superseded = 0;
   std::map<std::string, double> robot_busy_s;  // each robot's time in actions
   // Every planner call, a plan found or not (a survivor statistic otherwise).
   std::vector<double> planning_seconds;

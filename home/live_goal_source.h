@@ -35,6 +35,7 @@ class LiveGoalSource final : public GoalSource {
   std::vector<PerceivedGoal> sense(double t) override;
   void comforted(const PerceivedGoal& goal, double t) override { looks_.comforted(goal.senior, t); }
   void missed(const PerceivedGoal& goal, double t) override { looks_.missed(goal.senior, t); }
+  void overdue(const PerceivedGoal& goal, double t) override { looks_.overdue(goal, t); }
   // Wristbands know no truth to score against.
   std::optional<PerceptionScore> score(double) const override { return std::nullopt; }
 

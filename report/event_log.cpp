@@ -23,7 +23,7 @@ constexpr TypeRule kTypes[] = {
     {"observation", ""},           {"failure", ""},            {"repair", ""},
     {"explanation", ""},           {"comforted", "senior"},    {"window_missed", "senior"},
     {"battery", "robot"},          {"robot_down", "robot"},    {"robot_up", "robot"},
-    {"window_passed", "senior"},
+    {"window_passed", "senior"},   {"goal_confirmed", "senior"}, {"goal_superseded", "senior"},
 };
 
 const TypeRule* rule_for(const std::string& type) {

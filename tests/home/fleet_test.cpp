@@ -217,7 +217,17 @@ TEST_CASE("a goal merged into the busy robot's plan, and an impossible goal leav
   const auto served = first(soft.events(), "comforted", [](const LogEvent& e) { return e.senior == "senior1"; });
   REQUIRE(served);
   CHECK_FALSE(served->payload.at("within_window").get<bool>());
-  CHECK(first(soft.events(), "window_passed", [](const LogEvent& e) { return e.senior == "senior1"; }));
+  const auto passed = first(soft.events(), "window_passed", [](const LogEvent& e) { return e.senior == "senior1"; });
+  REQUIRE(passed);
+  // Looked at again when the window passed: the reading confirms the goal
+  // in course (or would supersede it), and no second goal is made for it.
+  CHECK(first(soft.events(), "emotion", [&](const LogEvent& e) { return e.senior == "senior1" && e.time >= passed->time; }));
+  const auto confirmed = first(soft.events(), "goal_confirmed", [](const LogEvent& e) { return e.senior == "senior1"; });
+  REQUIRE(confirmed);
+  CHECK(confirmed->time < served->time);
+  CHECK(std::count_if(soft.events().begin(), soft.events().end(), [&](const LogEvent& e) {
+          return e.type == "goal" && e.senior == "senior1" && e.time < served->time;
+        }) == 1);
   CHECK(late.never_served == 0);
   CHECK(late.weighted_lateness >= s.terrified_weight * (served->time - served->payload.at("window_end").get<double>()));
 }
@@ -247,6 +257,37 @@ TEST_CASE("a device answers at once, in the same plan as the robot's remedy", "[
     return e.payload.at("how").get<std::string>().find("speaker1") != std::string::npos;
   }));
   CHECK(comforted(log.events(), "senior1"));
+}
+
+TEST_CASE("looked at again when the window passes, a senior whose face says otherwise gets the goal it calls for", "[home][fleet]") {
+  // A face reader right 40% of the time and windows no robot can meet:
+  // seed 6 reads senior1 again when the window passes and reads another
+  // emotion, so the new goal supersedes the one in course.
+  HomeSettings s = scripted({{"senior1", 300.0, "terrified"}}, 1500.0);
+  s.terrified_window_s = 15.0;
+  s.other_window_s = 15.0;
+  s.seniors.face_accuracy = 0.4;
+  s.seed = 6;
+  EventLog log;
+  const HomeSummary summary = run_home(s, log);
+  const std::vector<LogEvent>& events = log.events();
+  CHECK(summary.superseded >= 1);
+  const auto successor = first(events, "goal", [](const LogEvent& e) { return e.payload.contains("supersedes"); });
+  REQUIRE(successor);
+  const std::string old_goal = successor->payload.at("supersedes");
+  CHECK(old_goal != successor->payload.at("goal").get<std::string>());
+  const auto retired = first(events, "goal_superseded", [&](const LogEvent& e) { return e.time >= successor->time; });
+  REQUIRE(retired);
+  CHECK(retired->payload.at("goal") == old_goal);
+  // The goal it replaced was looked at again after its window passed, and is
+  // not settled afterwards unless a later look calls for it anew.
+  CHECK(first(events, "window_passed", [&](const LogEvent& e) { return e.payload.at("goal") == old_goal && e.time <= successor->time; }));
+  const auto anew = first(events, "goal", [&](const LogEvent& e) { return e.time > retired->time && e.payload.at("goal") == old_goal; });
+  const auto settled = first(events, "comforted", [&](const LogEvent& e) { return e.time > retired->time && e.payload.at("goal") == old_goal; });
+  if (settled) {
+    REQUIRE(anew);
+    CHECK(anew->time <= settled->time);
+  }
 }
 
 TEST_CASE("windows as preferences: the planner serves first the senior whose window weighs more", "[home][fleet]") {
