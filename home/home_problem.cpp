@@ -161,6 +161,27 @@ void require_return(pddl::Problem& problem, const std::vector<std::string>& robo
   problem.goal = all;
 }
 
+repair::ObservationOptions home_observation_options(const HomeSettings& settings) {
+  repair::ObservationOptions o;
+  const auto model = repair::observation_model(settings.observe);
+  if (!model) throw std::invalid_argument("--observe " + settings.observe + ": not full, iot or camera");
+  o.model = *model;
+  return o;
+}
+
+repair::RandomEventOptions home_event_options(const HomeSettings& settings) {
+  repair::RandomEventOptions o;
+  o.seed = settings.seed * 7919 + 17;
+  o.kinds.clear();
+  for (const std::string& k : settings.failure_kinds) {
+    if (k == "robot_down") continue;  // the home's own (robot_faults.h)
+    const auto kind = repair::random_event_kind(k);
+    if (!kind) throw std::invalid_argument("failure kind " + k + ": not one of the repair study's kinds nor robot_down");
+    o.kinds.push_back(*kind);
+  }
+  return o;
+}
+
 PlannerOptions home_planner_options(const HomeSettings& settings) {
   PlannerOptions planner = repair::executing_planner_options();
   // One evaluation per expansion, not one per child: the anytime weights

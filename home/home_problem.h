@@ -20,6 +20,8 @@
 #include "pddl_parser/ast.h"
 #include "planner/planner.h"
 #include "repair/executing_plan.h"
+#include "repair/observation.h"
+#include "repair/random_events.h"
 #include "repair/world_state.h"
 
 namespace alplan::home {
@@ -48,6 +50,14 @@ nlohmann::json steps_json(const repair::ExecutingPlan& plan, const HomeMap& map,
 // where it could not move at all (home/README.md, Batteries).
 void require_return(pddl::Problem& problem, const std::vector<std::string>& robots,
                     const std::map<std::string, double>& return_levels);
+
+// What the robots see (--observe); throws std::invalid_argument naming a
+// model that is not full, iot or camera.
+repair::ObservationOptions home_observation_options(const HomeSettings& settings);
+// The failures drawn against new plans: the repair study's kinds among
+// settings.failure_kinds (robot_down is the home's own, robot_faults.h);
+// throws std::invalid_argument naming a kind that is neither.
+repair::RandomEventOptions home_event_options(const HomeSettings& settings);
 
 // How the home plans a mission's first plan, and its repairs and merges.
 PlannerOptions home_planner_options(const HomeSettings& settings);

@@ -54,8 +54,8 @@ class HomeRun {
       : settings_(settings), log_(log), clock_(clock), loaded_(load_run(settings)),
         base_(calm_problem(*loaded_.home.files.problem)), perception_(goals(loaded_.map, log)),
         world_(repair::initial_world(base_), {}),
-        belief_(base_, observation_options()),
-        events_(event_options()),
+        belief_(base_, home_observation_options(settings_)),
+        events_(home_event_options(settings)),
         faults_(world_, loaded_.map, settings),
         returns_(base_, settings.object_return_s),
         return_levels_(settings.battery ? domains::return_levels(base_) : std::map<std::string, double>{}) {
@@ -129,27 +129,6 @@ class HomeRun {
                    {"below_reserve", b.below_reserve}};
       log_.write(e);
     }
-  }
-
-  repair::ObservationOptions observation_options() const {
-    repair::ObservationOptions o;
-    const auto model = repair::observation_model(settings_.observe);
-    if (!model) throw std::invalid_argument("--observe " + settings_.observe + ": not full, iot or camera");
-    o.model = *model;
-    return o;
-  }
-
-  repair::RandomEventOptions event_options() const {
-    repair::RandomEventOptions o;
-    o.seed = settings_.seed * 7919 + 17;
-    o.kinds.clear();
-    for (const std::string& k : settings_.failure_kinds) {
-      if (k == "robot_down") continue;  // the home's own: draw_breakdown
-      const auto kind = repair::random_event_kind(k);
-      if (!kind) throw std::invalid_argument("failure kind " + k + ": not one of the repair study's kinds nor robot_down");
-      o.kinds.push_back(*kind);
-    }
-    return o;
   }
 
   double coin() { return static_cast<double>(events_random_() >> 11) * 0x1.0p-53; }
@@ -670,7 +649,7 @@ class HomeRun {
     // A home's plan runs long and meets many changes; a repair each is fine.
     options.max_repairs = 50;
     options.planner = replanner_;
-    options.observation = observation_options();
+    options.observation = home_observation_options(settings_);
     m->execution = std::make_unique<repair::MonitoredExecution>(options, mission, *planned.plan, world_, *strategy_,
                                                                 &world_, &loaded_.home.ontology);
     m->next_look = std::max(t, m->execution->first_look());
