@@ -47,14 +47,10 @@ std::string reason_label(const std::string& reason) {
 }
 
 // The robots' mean share of the run spent in actions.
-double utilisation(const HomeSummary& s, std::size_t robots) {
+double utilisation(const HomeSummary& s) {
   double busy = 0.0;
   for (const auto& [robot, seconds] : s.robot_busy_s) busy += seconds;
-  return busy / std::max(1e-9, static_cast<double>(std::max<std::size_t>(1, robots)) * s.end_time);
-}
-
-std::size_t robot_count(const HomeSettings& settings, const HomeSummary& s) {
-  return settings.generate_seniors > 0 ? static_cast<std::size_t>(settings.generate_robots) : s.robot_busy_s.size();
+  return busy / std::max(1e-9, static_cast<double>(std::max<std::size_t>(1, s.robots)) * s.end_time);
 }
 
 }  // namespace
@@ -74,7 +70,7 @@ nlohmann::json HomeBenchResult::json(const HomeSettings& settings) const {
           {"never_served", summary.never_served},
           {"in_course_at_end", summary.in_course_at_end},
           {"weighted_lateness_s", summary.weighted_lateness},
-          {"robot_utilisation", utilisation(summary, robot_count(settings, summary))},
+          {"robot_utilisation", utilisation(summary)},
           {"wall_seconds", wall_seconds},
           {"simulated_per_wall_second", settings.until / std::max(1e-9, wall_seconds)},
           {"events", events}};
@@ -115,7 +111,7 @@ void print_home_bench(std::ostream& out, const HomeSettings& settings, const Hom
                 "%zu goals never served (their windows closed first), %zu in course at the end; weighted lateness "
                 "%.0f s; robots at work %.1f%% of the time (%s fleet), %zu breakdowns\n",
                 s.never_served, s.in_course_at_end, s.weighted_lateness,
-                100.0 * utilisation(s, robot_count(settings, s)), settings.fleet.c_str(), s.robots_down);
+                100.0 * utilisation(s), settings.fleet.c_str(), s.robots_down);
   out << line;
 }
 

@@ -66,7 +66,7 @@ domains::LoadedHome with_devices(domains::LoadedHome home, const HomeSettings& s
   if (s.devices.empty()) return home;
   pddl::Problem problem = *home.files.problem;
   for (const HomeDevice& d : s.devices) {
-    if (d.type != "speaker" && d.type != "lamp" && d.type != "tv") {
+    if (!is_device_type(d.type)) {
       throw std::invalid_argument("device " + d.name + ": type " + d.type + " is not speaker, lamp or tv");
     }
     if (repair::object_type(problem, d.name)) throw std::invalid_argument("device " + d.name + ": the home has it already");
@@ -97,6 +97,8 @@ const char* device_type_for(const std::string& emotion) {
 }
 
 }  // namespace
+
+bool is_device_type(const std::string& type) { return type == "speaker" || type == "lamp" || type == "tv"; }
 
 LoadedRun load_run(const HomeSettings& s) {
   domains::LoadedHome home = with_devices(with_batteries(load_files(s), s), s);
@@ -218,14 +220,7 @@ void write_unplanned(const std::string& dir, int n, const pddl::Problem& problem
   std::filesystem::create_directories(dir);
   pddl::Problem from_now = problem;
   for (pddl::TimedInitialLiteral& til : from_now.timed_literals) til.time -= now;
-  // Preferred windows' deadlines too (soft windows): within's number is a time.
-  const auto shift = [now](auto& self, pddl::Condition& c) -> void {
-    if (c.kind == pddl::Condition::Kind::Within) {
-      for (double& t : c.numbers) t -= now;
-    }
-    for (pddl::Condition& child : c.children) self(self, child);
-  };
-  if (from_now.constraints) shift(shift, *from_now.constraints);
+  if (from_now.constraints) repair::shift_constraint_times(*from_now.constraints, now);  // preferred windows
   std::erase_if(from_now.timed_literals, [](const pddl::TimedInitialLiteral& til) { return til.time <= 0.0; });
   std::ofstream(dir + "/unplanned-" + std::to_string(n) + ".pddl")
       << "; planned at " << now << " s of the run; times below are from then\n" << pddl::write_problem(from_now);

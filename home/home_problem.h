@@ -73,6 +73,10 @@ void write_unplanned(const std::string& dir, int n, const pddl::Problem& problem
 // What a new goal tells the world and the robots: the emotion read, the
 // goal not yet reached, the window open.
 std::vector<std::pair<repair::AtomKey, bool>> told_facts(const PerceivedGoal& goal);
+// A type of the home's devices, whose actions need no robot: speaker,
+// lamp, tv.
+bool is_device_type(const std::string& type);
+
 // The device of the senior's believed room that answers their emotion (a
 // speaker for the terrified, a lamp for the sad, an available TV for the
 // bored), if any.

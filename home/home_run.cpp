@@ -58,18 +58,16 @@ class HomeRun {
         events_(home_event_options(settings)),
         faults_(world_, loaded_.map, settings),
         returns_(base_, settings.object_return_s),
-        return_levels_(settings.battery ? domains::return_levels(base_) : std::map<std::string, double>{}) {
+        return_levels_(settings.battery ? domains::return_levels(base_) : std::map<std::string, double>{}),
+        planner_(home_planner_options(settings)), replanner_(home_replanner_options(settings)) {
     if (settings.fleet != "allocate" && settings.fleet != "dispatch") {
       throw std::invalid_argument("--fleet " + settings.fleet + ": not allocate or dispatch");
     }
     for (const Placed& r : loaded_.map.robots) robots_.push_back(r.name);
     for (const pddl::TypedName& o : base_.objects) {
-      if (!o.types.empty() && (o.types.front() == "speaker" || o.types.front() == "lamp" || o.types.front() == "tv")) {
-        devices_.insert(o.name);
-      }
+      if (!o.types.empty() && is_device_type(o.types.front())) devices_.insert(o.name);
     }
-    planner_ = home_planner_options(settings);
-    replanner_ = home_replanner_options(settings);
+    summary_.robots = robots_.size();
     repair::StrategyOptions strategy;
     strategy.planner = replanner_;
     strategy_ = repair::make_strategy(settings.strategy, strategy);
@@ -774,8 +772,7 @@ class HomeRun {
   ObjectReturns returns_;
   std::map<std::string, double> return_levels_;  // with batteries: per robot, enough to reach a dock
   std::mt19937_64 events_random_{settings_.seed * 104729 + 3};
-  PlannerOptions planner_ = repair::executing_planner_options();
-  PlannerOptions replanner_;
+  PlannerOptions planner_, replanner_;
   std::unique_ptr<repair::RepairStrategy> strategy_;
   std::vector<std::string> robots_;
   std::set<std::string> devices_;  // speakers, lamps, TVs: their actions need no robot

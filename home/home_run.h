@@ -49,7 +49,8 @@ struct HomeSummary {
   // Soft windows: goals whose senior, looked at again when the window
   // passed, called for another goal.
   std::size_t superseded = 0;
-  std::map<std::string, double> robot_busy_s;  // each robot's time in actions
+  std::size_t robots = 0;                     // of the home
+  std::map<std::string, double> robot_busy_s;  // each robot's time in actions it was told ended
   // Every planner call, a plan found or not (a survivor statistic otherwise).
   std::vector<double> planning_seconds;
   // initial, merge, repair, proactive; none (no initial plan), merge_failed,

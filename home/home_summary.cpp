@@ -20,7 +20,7 @@ nlohmann::json HomeSummary::json() const {
           {"planning_p50_s", quantile(planning_seconds, 0.5)}, {"planning_p95_s", quantile(planning_seconds, 0.95)},
           {"episodes", episodes},   {"episodes_detected", episodes_detected}, {"false_alarms", false_alarms}, {"end_time", end_time},
           {"never_served", never_served}, {"in_course_at_end", in_course_at_end}, {"weighted_lateness", weighted_lateness},
-          {"robots_down", robots_down}, {"robot_busy_s", robot_busy_s}, {"superseded", superseded}};
+          {"robots_down", robots_down}, {"robots", robots}, {"robot_busy_s", robot_busy_s}, {"superseded", superseded}};
   if (batteries.empty()) return j;  // runs without batteries: as before
   nlohmann::json& b = j["batteries"];
   for (const auto& [robot, r] : batteries) {

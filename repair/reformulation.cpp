@@ -18,16 +18,6 @@ std::optional<std::string> object_type(const pddl::Problem& problem, const std::
 
 namespace {
 
-// The absolute times of PDDL 3 constraints, moved to a plan that starts
-// `shift` later; always-within's number is a span and stays.
-void shift_constraint_times(pddl::Condition& c, double shift) {
-  using Kind = pddl::Condition::Kind;
-  if (c.kind == Kind::Within || c.kind == Kind::HoldDuring || c.kind == Kind::HoldAfter) {
-    for (double& t : c.numbers) t -= shift;
-  }
-  for (pddl::Condition& child : c.children) shift_constraint_times(child, shift);
-}
-
 // The believed states as the planner's, on the task's ids.
 std::vector<ObservedState> observed_history(const GroundTask& task, const std::vector<WorldState>& history) {
   const StateMapping mapping(task);
@@ -46,6 +36,14 @@ std::vector<ObservedState> observed_history(const GroundTask& task, const std::v
 }
 
 }  // namespace
+
+void shift_constraint_times(pddl::Condition& c, double shift) {
+  using Kind = pddl::Condition::Kind;
+  if (c.kind == Kind::Within || c.kind == Kind::HoldDuring || c.kind == Kind::HoldAfter) {
+    for (double& t : c.numbers) t -= shift;
+  }
+  for (pddl::Condition& child : c.children) shift_constraint_times(child, shift);
+}
 
 pddl::Problem reformulate(const pddl::Domain& domain, const pddl::Problem& base, const WorldState& observed,
                           const std::vector<ActionInProgress>& in_progress, double now, double shift) {

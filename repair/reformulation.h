@@ -32,6 +32,10 @@ namespace alplan::repair {
 pddl::Problem reformulate(const pddl::Domain& domain, const pddl::Problem& base, const WorldState& observed,
                           const std::vector<ActionInProgress>& in_progress, double now, double shift = 0.0);
 
+// The same shift on PDDL 3 constraints alone: within's, hold-during's and
+// hold-after's times move back by `shift`; always-within's span stays.
+void shift_constraint_times(pddl::Condition& constraints, double shift);
+
 struct PlanningOutcome {
   std::optional<ExecutingPlan> plan;
   PlannerResult::Status status = PlannerResult::Status::LimitReached;

@@ -122,20 +122,6 @@ void WorldSimulator::halt(const std::string& action) {
   overruns_.erase(action);
 }
 
-double WorldSimulator::finish_running(double now) {
-  double last = now;
-  for (const ActionInProgress& a : by_end(running_)) {
-    last = std::max(last, a.expected_end);
-    finish(a);
-  }
-  running_.clear();
-  durations_.clear();
-  overrunning_.clear();
-  flow_until(last);
-  world_.time = std::max(world_.time, last);
-  return last;
-}
-
 void WorldSimulator::finish(const ActionInProgress& a) {
   flow_until(a.expected_end);
   for (const AtomKey& d : a.dels) world_.set(d, false);

@@ -81,11 +81,6 @@ class WorldSimulator : public World, public ObjectRecognizer {
   // down mid-move): its start's effects stay, its end's never come.
   void halt(const std::string& action);
 
-  // Lets every running action end as expected (a mission given up leaves
-  // a robot mid-move, and it still arrives); returns when the last ends,
-  // or `now` when none runs.
-  double finish_running(double now);
-
   // The lowest value each value changed continuously has had so far (a
   // robot's battery at its emptiest), exact: change is linear between the
   // times the world flows to, so the lowest is at one of them.

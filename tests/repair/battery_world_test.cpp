@@ -83,7 +83,11 @@ MonitoredRun run_plan(std::vector<ExogenousEvent> events) {
   const Monitor monitor(options);
   MonitoredRun run;
   run.report = monitor.run(mission, bind_plan(l.task, read.plan, 0.001), world, strategy, &world, nullptr);
-  world.finish_running(run.report.end_time);  // what is underway ends, as a home lets it
+  // What is underway ends on its own, as a home lets it (release).
+  double last = run.report.end_time;
+  for (const ActionInProgress& a : world.in_progress()) world.release(a.name);
+  for (const ActionInProgress& a : world.in_progress()) last = std::max(last, a.expected_end);
+  world.advance(last);
   run.lowest = world.lowest_values().at({"battery", "robot1"});
   return run;
 }
