@@ -135,6 +135,7 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   p->callback([planners, &exit_code] { exit_code = run_planners(*planners); });
 
   add_bench_repair_command(bench, exit_code);
+  add_bench_stability_command(bench, exit_code);
   add_bench_merge_command(bench, exit_code);
 }
 

@@ -30,6 +30,7 @@ void add_fuzz_command(CLI::App& app, int& exit_code);
 void add_perceive_command(CLI::App& app, int& exit_code);
 void add_deliberate_command(CLI::App& app, int& exit_code);
 void add_bench_repair_command(CLI::App* bench, int& exit_code);
+void add_bench_stability_command(CLI::App* bench, int& exit_code);
 void add_bench_service_command(CLI::App* bench, int& exit_code);
 void add_bench_soak_command(CLI::App* bench, int& exit_code);
 void add_bench_home_command(CLI::App* bench, int& exit_code);

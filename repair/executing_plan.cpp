@@ -77,7 +77,7 @@ ExecutingPlan bind_plan(std::shared_ptr<const GroundTask> task, const Plan& plan
   return bound;
 }
 
-ExecutingPlan with_all_conditions(const ExecutingPlan& plan) {
+Plan steps_of(const ExecutingPlan& plan) {
   Plan steps;
   for (const ScheduledAction& s : plan.steps) {
     PlanStep step;
@@ -89,6 +89,11 @@ ExecutingPlan with_all_conditions(const ExecutingPlan& plan) {
     if (a.durative) step.duration = s.duration;
     steps.steps.push_back(std::move(step));
   }
+  return steps;
+}
+
+ExecutingPlan with_all_conditions(const ExecutingPlan& plan) {
+  const Plan steps = steps_of(plan);
   // Validation from the task's initial state says nothing about a plan made
   // from a later state; it is run only to ground the plan's steps in full.
   PlanValidator validator(plan.task->lifted, ValidatorOptions{plan.epsilon, false});

@@ -31,6 +31,10 @@ struct ExecutingPlan {
 // std::invalid_argument naming the first step the task has no action for.
 ExecutingPlan bind_plan(std::shared_ptr<const GroundTask> task, const Plan& plan, double epsilon);
 
+// The plan's steps as the parser's plan (names, arguments, times), to
+// validate or print against another task.
+Plan steps_of(const ExecutingPlan& plan);
+
 // The same plan bound to a grounding that keeps every condition: the
 // planner's task drops conditions on facts no action changes (availability,
 // paths), but the world can change them, so the monitor must check them.

@@ -1,0 +1,188 @@
+// The tables and files of `alplan bench stability` (stability_bench.h).
+// Distances, makespans and times are compared on the perturbations every
+// strategy repaired validly (the paired set): a strategy that fails where
+// another succeeds would otherwise look stable by leaving out its hardest
+// cases. Success is counted over all of them.
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "benchmarks/harness/paired_statistics.h"
+#include "benchmarks/harness/repair_study.h"
+#include "benchmarks/harness/stability_bench.h"
+#include "benchmarks/harness/table.h"
+
+namespace alplan::bench {
+namespace {
+
+// One perturbation: its domain, problem, kind and number.
+std::string run_key(const StabilityRun& r) {
+  return r.domain + "/" + std::to_string(r.problem) + "/" + r.kind + "/" + std::to_string(r.perturbation);
+}
+
+// The perturbations every strategy repaired with a valid plan.
+std::set<std::string> paired_set(const std::vector<StabilityRun>& runs, std::size_t strategies) {
+  std::map<std::string, std::size_t> valid;
+  for (const StabilityRun& r : runs) valid[run_key(r)] += r.valid ? 1 : 0;
+  std::set<std::string> paired;
+  for (const auto& [key, count] : valid) {
+    if (count == strategies) paired.insert(key);
+  }
+  return paired;
+}
+
+double mean(const std::vector<double>& values) {
+  if (values.empty()) return 0.0;
+  double sum = 0.0;
+  for (double v : values) sum += v;
+  return sum / static_cast<double>(values.size());
+}
+
+struct Aggregate {
+  std::size_t runs = 0, valid = 0, same_first = 0, fallbacks = 0;
+  std::vector<double> distance, added, removed, makespan, seconds;  // paired set
+};
+
+std::map<std::string, Aggregate> aggregate(const std::vector<StabilityRun>& runs, const std::set<std::string>& paired,
+                                           const std::string& domain) {
+  std::map<std::string, Aggregate> by_strategy;
+  for (const StabilityRun& r : runs) {
+    if (!domain.empty() && r.domain != domain) continue;
+    Aggregate& a = by_strategy[r.strategy];
+    ++a.runs;
+    a.valid += r.valid ? 1 : 0;
+    a.fallbacks += r.fallback.empty() ? 0 : 1;
+    if (!paired.count(run_key(r))) continue;
+    a.same_first += r.same_first ? 1 : 0;
+    a.distance.push_back(static_cast<double>(r.distance));
+    a.added.push_back(static_cast<double>(r.added));
+    a.removed.push_back(static_cast<double>(r.removed));
+    a.makespan.push_back(r.makespan);
+    a.seconds.push_back(r.seconds);
+  }
+  return by_strategy;
+}
+
+void strategy_table(std::ostream& out, const std::map<std::string, Aggregate>& by_strategy,
+                    const std::vector<std::string>& strategies) {
+  Table table({"strategy", "valid / runs", "fallbacks", "paired", "distance mean", "added", "removed",
+               "same first step", "makespan mean", "seconds median", "seconds p95"});
+  for (const std::string& s : strategies) {
+    const auto it = by_strategy.find(s);
+    if (it == by_strategy.end()) continue;
+    const Aggregate& a = it->second;
+    const double paired = static_cast<double>(a.distance.size());
+    table.add({s, std::to_string(a.valid) + " / " + std::to_string(a.runs), std::to_string(a.fallbacks),
+               std::to_string(a.distance.size()), fixed(mean(a.distance), 2), fixed(mean(a.added), 2),
+               fixed(mean(a.removed), 2),
+               paired > 0 ? fixed(100.0 * static_cast<double>(a.same_first) / paired, 1) + "%" : "-",
+               fixed(mean(a.makespan), 1), fixed(percentile(a.seconds, 0.5), 3), fixed(percentile(a.seconds, 0.95), 3)});
+  }
+  table.print_markdown(out);
+}
+
+// Paired differences against the reference on the paired set, one row per
+// strategy and measure.
+void comparison_table(std::ostream& out, const std::vector<StabilityRun>& runs, const std::set<std::string>& paired,
+                      const std::vector<std::string>& strategies, const std::string& reference) {
+  std::map<std::string, std::map<std::string, const StabilityRun*>> by_key;  // key -> strategy -> run
+  for (const StabilityRun& r : runs) {
+    if (paired.count(run_key(r))) by_key[run_key(r)][r.strategy] = &r;
+  }
+  Table table({"strategy", "measure", "pairs", "mean difference", "95% CI", "Wilcoxon p", "fewer / more"});
+  const std::vector<std::pair<std::string, double (*)(const StabilityRun&)>> measures{
+      {"distance", [](const StabilityRun& r) { return static_cast<double>(r.distance); }},
+      {"makespan", [](const StabilityRun& r) { return r.makespan; }},
+      {"seconds", [](const StabilityRun& r) { return r.seconds; }}};
+  for (const std::string& s : strategies) {
+    if (s == reference) continue;
+    for (const auto& [name, value] : measures) {
+      std::vector<double> ref, other;
+      for (const auto& [key, runs_of] : by_key) {
+        if (!runs_of.count(reference) || !runs_of.count(s)) continue;
+        ref.push_back(value(*runs_of.at(reference)));
+        other.push_back(value(*runs_of.at(s)));
+      }
+      if (ref.empty()) continue;
+      const PairedComparison c = compare_paired(ref, other);
+      table.add({s, name, std::to_string(c.pairs), fixed(c.mean_difference, 3),
+                 "[" + fixed(c.ci_low, 3) + ", " + fixed(c.ci_high, 3) + "]", fixed(c.wilcoxon_p, 4),
+                 std::to_string(c.nonzero - c.positive) + " / " + std::to_string(c.positive)});
+    }
+  }
+  table.print_markdown(out);
+}
+
+std::vector<std::string> domains_of(const std::vector<StabilityRun>& runs) {
+  std::vector<std::string> domains;
+  for (const StabilityRun& r : runs) {
+    if (std::find(domains.begin(), domains.end(), r.domain) == domains.end()) domains.push_back(r.domain);
+  }
+  return domains;
+}
+
+nlohmann::json run_json(const StabilityRun& r) {
+  return {{"domain", r.domain},       {"problem", r.problem},     {"perturbation", r.perturbation},
+          {"kind", r.kind},           {"description", r.description}, {"cut", r.cut},
+          {"old_remaining", r.old_remaining}, {"old_makespan", r.old_makespan}, {"strategy", r.strategy},
+          {"repaired", r.repaired},   {"valid", r.valid},         {"distance", r.distance},
+          {"added", r.added},         {"removed", r.removed},     {"same_first", r.same_first},
+          {"new_steps", r.new_steps}, {"makespan", r.makespan},   {"seconds", r.seconds},
+          {"planner_calls", r.planner_calls}, {"fallback", r.fallback}, {"how", r.how}};
+}
+
+}  // namespace
+
+std::string stability_summary(const StabilityBenchResult& result, const StabilityBenchOptions& options) {
+  std::ostringstream out;
+  const std::set<std::string> paired = paired_set(result.runs, options.strategies.size());
+  const std::string reference = options.strategies.front();
+  out << "# Plan stability: " << paired.size() << " perturbations every strategy repaired validly\n\n"
+      << "Distance: actions added plus actions removed against the old plan's remaining steps (Fox et al. 2006). "
+      << "Means, makespans and times over the paired perturbations; valid over all runs.\n\n## All domains\n\n";
+  strategy_table(out, aggregate(result.runs, paired, ""), options.strategies);
+  out << "\n### Against " << reference << " (paired perturbations; difference = strategy minus " << reference
+      << ")\n\n";
+  comparison_table(out, result.runs, paired, options.strategies, reference);
+  for (const std::string& domain : domains_of(result.runs)) {
+    out << "\n## " << domain << "\n\n";
+    strategy_table(out, aggregate(result.runs, paired, domain), options.strategies);
+  }
+  if (!result.skipped.empty()) {
+    out << "\n## Skipped\n\n";
+    for (const std::string& s : result.skipped) out << "- " << s << "\n";
+  }
+  return out.str();
+}
+
+void write_stability_results(const StabilityBenchResult& result, const StabilityBenchOptions& options,
+                             const std::string& out_dir) {
+  std::filesystem::create_directories(out_dir);
+  Table csv({"domain", "problem", "perturbation", "kind", "strategy", "repaired", "valid", "distance", "added",
+             "removed", "same_first", "old_remaining", "new_steps", "cut", "old_makespan", "makespan", "seconds",
+             "planner_calls", "fallback", "description"});
+  nlohmann::json runs = nlohmann::json::array();
+  for (const StabilityRun& r : result.runs) {
+    csv.add({r.domain, std::to_string(r.problem), std::to_string(r.perturbation), r.kind, r.strategy,
+             r.repaired ? "yes" : "no", r.valid ? "yes" : "no", std::to_string(r.distance), std::to_string(r.added),
+             std::to_string(r.removed), r.same_first ? "yes" : "no", std::to_string(r.old_remaining),
+             std::to_string(r.new_steps), fixed(r.cut, 3), fixed(r.old_makespan, 3), fixed(r.makespan, 3),
+             fixed(r.seconds, 4), std::to_string(r.planner_calls), r.fallback, r.description});
+    runs.push_back(run_json(r));
+  }
+  std::ofstream(out_dir + "/runs.csv") << [&] {
+    std::ostringstream text;
+    csv.write_csv(text);
+    return text.str();
+  }();
+  std::ofstream(out_dir + "/runs.json") << nlohmann::json{{"runs", runs}, {"skipped", result.skipped}}.dump(1)
+                                        << "\n";
+  std::ofstream(out_dir + "/summary.md") << stability_summary(result, options);
+}
+
+}  // namespace alplan::bench

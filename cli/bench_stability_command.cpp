@@ -1,0 +1,133 @@
+// alplan bench stability --ipc DIR [--domains a,b] [--problems 1-5] [--perturbations N]
+//                        [--kinds fact,object,goal] [--strategies replan,adapt,stable,patch] --out DIR
+// Replanning against plan repair on IPC temporal domains, after Fox et al.
+// (ICAPS 2006): benchmarks/harness/stability_bench.h.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "benchmarks/harness/stability_bench.h"
+#include "cli/commands.h"
+#include "planner/search_configuration.h"
+#include "repair/repair_strategy.h"
+
+namespace alplan::cli {
+namespace {
+
+struct BenchStabilityOptions {
+  bench::StabilityBenchOptions bench;
+  std::string domains = "driverlog,rovers,depots,satellite,zenotravel";
+  std::string problems = "1-5";
+  std::string kinds = "fact,object,goal";
+  std::string strategies = "replan,adapt,stable,patch";
+  std::string out;
+  double repair_seconds = 10.0;
+  double min_weight = 3.0;
+  std::uint64_t expansions = 1000;
+};
+
+std::vector<std::string> split(const std::string& list) {
+  std::vector<std::string> items;
+  std::istringstream in(list);
+  for (std::string item; std::getline(in, item, ',');) {
+    if (!item.empty()) items.push_back(item);
+  }
+  return items;
+}
+
+// A short name (driverlog) is the IPC 2002 temporal folder Fox et al. used.
+std::string domain_folder(const std::string& name) {
+  static constexpr std::pair<const char*, const char*> kFolders[] = {
+      {"driverlog", "ipc-2002/driverlog-time-automatic"},
+      {"rovers", "ipc-2002/rovers-time-automatic"},
+      {"depots", "ipc-2002/depots-time-simple-automatic"},
+      {"satellite", "ipc-2002/satellite-time-simple-automatic"},
+      {"zenotravel", "ipc-2002/zenotravel-time-simple-automatic"}};
+  for (const auto& [short_name, folder] : kFolders) {
+    if (name == short_name) return folder;
+  }
+  return name;
+}
+
+// Fills the bench options from the flags; an error message, or empty.
+std::string resolve(BenchStabilityOptions& o) {
+  o.bench.domains.clear();
+  for (const std::string& d : split(o.domains)) o.bench.domains.push_back(domain_folder(d));
+  const std::size_t dash = o.problems.find('-');
+  try {
+    o.bench.first_problem = std::stoi(o.problems.substr(0, dash));
+    o.bench.last_problem = dash == std::string::npos ? o.bench.first_problem : std::stoi(o.problems.substr(dash + 1));
+  } catch (const std::exception&) {
+    return "--problems takes N or N-M; got '" + o.problems + "'";
+  }
+  if (o.bench.first_problem < 1 || o.bench.last_problem < o.bench.first_problem) {
+    return "--problems takes N or N-M with 1 <= N <= M; got '" + o.problems + "'";
+  }
+  o.bench.kinds.clear();
+  for (const std::string& k : split(o.kinds)) {
+    const std::optional<bench::PerturbationKind> kind = bench::perturbation_kind(k);
+    if (!kind) return "--kinds takes fact, object, goal; got '" + k + "'";
+    o.bench.kinds.push_back(*kind);
+  }
+  o.bench.strategies = split(o.strategies);
+  if (o.bench.strategies.empty() || o.bench.kinds.empty()) return "--strategies and --kinds need at least one name";
+  for (const std::string& s : o.bench.strategies) {
+    try {
+      repair::make_strategy(s, {});
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+  }
+  if (o.out.empty()) return "--out is required";
+  o.bench.strategy.planner.time_limit = o.repair_seconds;
+  o.bench.strategy.planner.search = with_anytime(o.bench.strategy.planner.search, o.min_weight, o.expansions);
+  return "";
+}
+
+int run_stability(BenchStabilityOptions o) {
+  const std::string error = resolve(o);
+  if (!error.empty()) {
+    std::cerr << "error: " << error << "\n";
+    return kExitInputError;
+  }
+  o.bench.progress = &std::cerr;
+  try {
+    const bench::StabilityBenchResult result = bench::run_stability_bench(o.bench);
+    bench::write_stability_results(result, o.bench, o.out);
+    std::cout << bench::stability_summary(result, o.bench) << "wrote " << o.out << "/runs.csv, runs.json, summary.md\n";
+    return 0;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitInputError;
+  }
+}
+
+}  // namespace
+
+void add_bench_stability_command(CLI::App* bench, int& exit_code) {
+  auto o = std::make_shared<BenchStabilityOptions>();
+  CLI::App* s = bench->add_subcommand(
+      "stability", "Replanning against plan repair on IPC temporal domains, perturbed while the plan runs");
+  s->add_option("--ipc", o->bench.ipc_dir, "The IPC folder (shared/benchmarks/ipc)")->required();
+  s->add_option("--domains", o->domains,
+                "Comma-separated: driverlog, rovers, depots, satellite, zenotravel (IPC 2002 temporal), or folders "
+                "under --ipc");
+  s->add_option("--problems", o->problems, "Instances N or N-M (1-5 to tune, 6-10 to test)");
+  s->add_option("--perturbations", o->bench.perturbations, "Perturbations per problem and kind")
+      ->check(CLI::PositiveNumber);
+  s->add_option("--kinds", o->kinds, "Comma-separated: fact, object, goal");
+  s->add_option("--strategies", o->strategies, "Comma-separated repair strategies; the first is the reference");
+  s->add_option("--seed", o->bench.seed, "Seed of the perturbations");
+  s->add_option("--plan-time", o->bench.plan_seconds, "Seconds for each problem's first plan")
+      ->check(CLI::PositiveNumber);
+  s->add_option("--repair-time", o->repair_seconds, "Seconds per repair's planner call")->check(CLI::PositiveNumber);
+  s->add_option("--repair-expansions", o->expansions, "Expansions each anytime weight of a repair may spend");
+  s->add_option("--adapt-budget", o->bench.strategy.adapt_budget, "adapt: seconds of anytime search")
+      ->check(CLI::PositiveNumber);
+  s->add_option("--out", o->out, "Folder for runs.csv, runs.json, summary.md");
+  s->callback([o, &exit_code] { exit_code = run_stability(*o); });
+}
+
+}  // namespace alplan::cli
