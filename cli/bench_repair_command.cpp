@@ -7,11 +7,14 @@
 
 #include <unistd.h>
 
+#include <fstream>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
 
+#include "benchmarks/harness/observation_study.h"
 #include "benchmarks/harness/process_runner.h"
 #include "benchmarks/harness/repair_bench.h"
 #include "cli/commands.h"
@@ -49,6 +52,23 @@ std::optional<std::vector<repair::RandomEventKind>> event_kinds(const std::strin
   return kinds;
 }
 
+// The same study under each observation model, each in its own folder
+// (out/full, out/iot, ...), then what the sensors change (observation.md).
+int run_under_models(const bench::RepairBenchOptions& base, const std::vector<repair::ObservationModel>& models) {
+  std::map<std::string, std::vector<bench::StudyRun>> by_model;
+  for (repair::ObservationModel model : models) {
+    bench::RepairBenchOptions o = base;
+    o.observation.model = model;
+    o.out_dir = base.out_dir + "/" + repair::to_string(model);
+    if (const int code = bench::run_repair_bench(o, std::cout, std::cerr); code != 0) return code;
+    by_model[repair::to_string(model)] = bench::load_study_runs(o.out_dir + "/runs.json");
+  }
+  const std::string tables = bench::observation_tables(by_model, base.strategies, base.bootstrap);
+  std::ofstream(base.out_dir + "/observation.md") << tables;
+  std::cout << tables << "wrote " << base.out_dir << "/observation.md\n";
+  return 0;
+}
+
 int run_repair(BenchRepairOptions options) {
   options.bench.progress_bar = isatty(STDERR_FILENO) != 0;
   options.bench.strategies.clear();
@@ -71,12 +91,21 @@ int run_repair(BenchRepairOptions options) {
     return kExitInputError;
   }
   options.bench.events.kinds = *kinds;
-  const std::optional<repair::ObservationModel> model = repair::observation_model(options.observe);
-  if (!model) {
-    std::cerr << "error: --observe takes full, iot or camera; got '" << options.observe << "'\n";
+  std::vector<repair::ObservationModel> models;
+  std::istringstream model_list(options.observe);
+  for (std::string name; std::getline(model_list, name, ',');) {
+    const std::optional<repair::ObservationModel> model = repair::observation_model(name);
+    if (!model) {
+      std::cerr << "error: --observe takes full, iot or camera, or a list of them; got '" << options.observe << "'\n";
+      return kExitInputError;
+    }
+    models.push_back(*model);
+  }
+  if (models.empty()) {
+    std::cerr << "error: --observe takes full, iot or camera, or a list of them; got '" << options.observe << "'\n";
     return kExitInputError;
   }
-  options.bench.observation.model = *model;
+  options.bench.observation.model = models.front();
   if (options.bench.out_dir.empty()) {
     std::cerr << "error: --out is required\n";
     return kExitInputError;
@@ -100,6 +129,7 @@ int run_repair(BenchRepairOptions options) {
   }
   options.bench.alplan = bench::self_executable();
   try {
+    if (models.size() > 1) return run_under_models(options.bench, models);
     return bench::run_repair_bench(options.bench, std::cout, std::cerr);
   } catch (const domains::InputError& e) {
     std::cerr << e.what();
@@ -128,7 +158,8 @@ void add_bench_repair_command(CLI::App* bench, int& exit_code) {
                 "two (the study's, the default), unavailable, appears");
   r->add_option("--observe", o->observe,
                 "What the monitor sees: full (the true state), iot (IoT tags, wristbands, the robot's camera; the "
-                "paper's), camera (the robot's camera only)");
+                "paper's), camera (the robot's camera only); a list (full,iot,camera) runs the study under each, "
+                "in out/MODEL/, and compares them in out/observation.md");
   r->add_option("--recognizer", o->recognizer,
                 "What names the new things the camera sees: cnn (the paper's CNN on drawings of them, trained when "
                 "the run starts; its time is part of substitute's latency) or simulated (the simulator, perfect, free)");

@@ -424,6 +424,14 @@ int merge_study(const RepairBenchOptions& o, std::ostream& out, std::ostream& pr
 
 }  // namespace
 
+std::vector<StudyRun> load_study_runs(const std::string& runs_json) {
+  std::ifstream in(runs_json);
+  if (!in) throw std::runtime_error(runs_json + ": cannot be read");
+  std::vector<RunRecord> records;
+  for (const nlohmann::json& j : nlohmann::json::parse(in)) records.push_back(record_from_json(j));
+  return study_runs(records);
+}
+
 int run_repair_bench(const RepairBenchOptions& o, std::ostream& out, std::ostream& progress) {
   switch (o.array.role) {
     case ArrayRole::submit:

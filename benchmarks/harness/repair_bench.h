@@ -77,4 +77,7 @@ struct RepairBenchOptions {
 // Returns the exit code: 0, or 2 for bad options or unwritable output.
 int run_repair_bench(const RepairBenchOptions& options, std::ostream& out, std::ostream& progress);
 
+// The runs a study wrote (its runs.json), as the analysis reads them.
+std::vector<StudyRun> load_study_runs(const std::string& runs_json);
+
 }  // namespace alplan::bench
