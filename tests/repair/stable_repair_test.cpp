@@ -199,6 +199,14 @@ TEST_CASE("a compiled plan costs the distance of the plan it maps to") {
   CHECK(original.validate(mapped.plan).valid);
 }
 
+TEST_CASE("a repair during execution may keep or forgo only the steps not yet started") {
+  Fixture f;
+  const std::vector<OldStep> rest = remaining_steps(f.old, 2.001);
+  REQUIRE(rest.size() == 3);
+  CHECK(ground_name(rest.front()) == "(drive t1 a b)");
+  CHECK(plan_distance({"(a)", "(b)", "(b)"}, {"(b)", "(c)"}) == 3);  // multisets: one (b) is kept
+}
+
 TEST_CASE("stable is a strategy by name") {
   const std::vector<std::string> names = strategy_names();
   CHECK(std::find(names.begin(), names.end(), "stable") != names.end());
