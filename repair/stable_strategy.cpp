@@ -28,7 +28,10 @@
 // proof_limits and says "proven" only when it names nothing.
 // When that search runs out of its share, the planner's own search in
 // anytime mode ordered by the metric spends the rest of the budget on any
-// plan and then on closer ones: its plan is "not proven minimal".
+// plan and then on closer ones: its plan is "not proven minimal", and
+// replan's plan replaces it when closer (closer_of), so an unproven stable
+// repair is never farther than replan's. Latency: up to stable_budget plus
+// grounding twice (compiled and original task) plus, unproven, a replan.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
