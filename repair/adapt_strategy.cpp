@@ -5,11 +5,13 @@
 // penalty (added to total-cost), and anytime search under a small budget
 // minimises the metric plus the penalties — so among good plans it prefers
 // those closest to the old one. The plan then runs on the unpenalised task.
+// A domain without (total-cost) gets one on a copy (with_action_cost).
 #include <chrono>
 #include <set>
 
 #include "repair/reformulation.h"
 #include "repair/repair_strategy.h"
+#include "repair/stable_compilation.h"
 
 namespace alplan::repair {
 namespace {
@@ -71,11 +73,29 @@ class AdaptStrategy : public RepairStrategy {
     for (const ScheduledAction& s : request.plan->steps) {
       if (s.start + 1e-9 >= request.now) keep.insert(s.name);
     }
-    const std::optional<NumericVarId> cost = total_cost(*task);
+    // IPC temporal domains have no action costs: the penalties go on a
+    // grounding of a copy that declares (total-cost), which every action
+    // increases by 0 so that the grounder keeps it as a variable (it keeps
+    // only functions some action changes), starting at 0 (a problem may
+    // leave it undefined). The plan is bound to `task`.
+    std::shared_ptr<const GroundTask> searched = task;
+    const bool costs_added = !total_cost(*task);
+    if (costs_added) {
+      try {
+        const pddl::Domain costed = declares_total_cost(*request.domain) ? *request.domain
+                                                                          : with_action_cost(*request.domain, 0.0);
+        searched = ground_problem(costed, with_zero_cost(result.problem), nullptr);
+      } catch (const std::exception& error) {
+        result.how = std::string("cannot ground the reformulated problem with action costs: ") + error.what();
+        return result;
+      }
+    }
+    const std::optional<NumericVarId> cost = total_cost(*searched);
     PlannerOptions planner = options_.planner;
     planner.search = with_anytime(planner.search, options_.adapt_min_weight, options_.adapt_expansions);
     planner.time_limit = std::min(planner.time_limit, options_.adapt_budget);
-    const std::shared_ptr<const GroundTask> view = cost ? penalised(*task, keep, *cost, options_.adapt_penalty) : task;
+    const std::shared_ptr<const GroundTask> view =
+        cost ? penalised(*searched, keep, *cost, options_.adapt_penalty) : searched;
     PlanningStart start = initial_start(*view);
     start.now = request.now;
     const PlannerResult planned = Planner(view, planner).plan_from(start);
@@ -86,7 +106,8 @@ class AdaptStrategy : public RepairStrategy {
       std::size_t reused = 0;
       for (const ScheduledAction& s : result.plan->steps) reused += keep.count(s.name) ? 1 : 0;
       result.how = "adapted the old plan: " + std::to_string(reused) + " of its " + std::to_string(keep.size()) +
-                   " remaining steps are kept; " + describe_remedy(*result.plan, request.now);
+                   " remaining steps are kept" + (costs_added ? " (changes counted on a total-cost the task lacked)" : "") +
+                   "; " + describe_remedy(*result.plan, request.now);
     } else {
       result.how = "the planner found no plan from the observed state: " + planned.message;
     }
@@ -94,8 +115,9 @@ class AdaptStrategy : public RepairStrategy {
       // Without action costs there is nothing to penalise change with: say
       // so, and name what was done instead.
       result.fallback = "replan";
-      result.how = "adapt needs a total-cost function to penalise changes to the old plan and the domain has "
-                   "none, so it fell back to replan (anytime search): " + result.how;
+      result.how = "adapt needs a total-cost function to penalise changes to the old plan and even a copy of "
+                   "the domain that declares one grounds without it, so it fell back to replan (anytime search): " +
+                   result.how;
     }
     result.problem.init = known.init;
     result.problem.numeric_init = known.numeric_init;

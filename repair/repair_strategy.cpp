@@ -11,6 +11,7 @@ namespace alplan::repair {
 
 std::unique_ptr<RepairStrategy> make_patch_strategy(const StrategyOptions& options);
 std::unique_ptr<RepairStrategy> make_adapt_strategy(const StrategyOptions& options);
+std::unique_ptr<RepairStrategy> make_stable_strategy(const StrategyOptions& options);
 
 namespace {
 
@@ -178,7 +179,7 @@ std::string describe_remedy(const ExecutingPlan& plan, double from) {
          " and involves " + objects;
 }
 
-std::vector<std::string> strategy_names() { return {"replan", "substitute", "suggest", "patch", "adapt"}; }
+std::vector<std::string> strategy_names() { return {"replan", "substitute", "suggest", "patch", "adapt", "stable"}; }
 
 std::unique_ptr<RepairStrategy> make_strategy(const std::string& name, const StrategyOptions& options) {
   if (name == "replan") return std::make_unique<ReplanStrategy>(options);
@@ -186,6 +187,7 @@ std::unique_ptr<RepairStrategy> make_strategy(const std::string& name, const Str
   if (name == "suggest") return std::make_unique<SuggestStrategy>(options);
   if (name == "patch") return make_patch_strategy(options);
   if (name == "adapt") return make_adapt_strategy(options);
+  if (name == "stable") return make_stable_strategy(options);
   std::string known;
   for (const std::string& n : strategy_names()) known += (known.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown repair strategy '" + name + "' (known: " + known + ")");

@@ -8,7 +8,10 @@
 // - patch: keep the rest of the plan and swap the failed object for an
 //   available one of the same supertype; replan only when that is invalid;
 // - adapt: reuse as much of the old plan as possible (LPG-ADAPT's aim):
-//   search in a view of the task where new actions cost a penalty.
+//   search in a view of the task where new actions cost a penalty;
+// - stable: the plan at minimum distance from the old plan's remaining
+//   steps (Saetti & Scala's compilation to cost-optimal planning,
+//   stable_compilation.h), proven minimal when the search ends in budget.
 #pragma once
 
 #include <memory>
@@ -54,6 +57,12 @@ struct StrategyOptions {
   // Expansions each anytime weight may spend looking for a closer plan
   // (with_anytime, search_configuration.h); 0: until proven.
   std::uint64_t adapt_expansions = 0;
+  // `stable`: seconds for the searches of the compiled task (grounding
+  // aside), and the share of them the uniform-cost search that proves a
+  // repair minimal may take; the rest looks for any close repair when it
+  // does not finish.
+  double stable_budget = 5.0;
+  double stable_proof_share = 0.8;
 };
 
 struct RepairRequest {

@@ -1,0 +1,256 @@
+// stable: the repair at minimum plan distance from the old plan's remaining
+// steps (Saetti & Scala, "Optimally stable plan repair", KER 2025): the
+// reformulated problem compiled into a cost-optimal planning task
+// (stable_compilation.h) whose plans cost their distance from the old plan.
+//
+// What the search guarantees. The compiled task is searched first with
+// complete(wastar(blind, w=1, order=metric)), a uniform-cost search on
+// (total-cost), within stable_proof_share of stable_budget:
+// - ordered by the metric, f = g + w * metric->remaining(relaxed_cost, ...)
+//   (best_first_search.cpp, push), and blind's HeuristicValue leaves cost,
+//   hence relaxed_cost, at 0 (blind_heuristic.cpp; search_space.cpp sets
+//   relaxed_cost = value.cost) and the metric has no total-time term, so
+//   f = g, the cost so far, whatever h is;
+// - ordered by the metric, a goal is a solution only when it leaves the
+//   main open list (store_evaluated keeps it in goals_; step returns it when
+//   popped): A*'s test at expansion, so zero-cost keep actions cannot let a
+//   dearer goal found at generation win;
+// - complete: every node is goal-tested, no queue draws at random, dead ends
+//   are pruned only when the sound relaxation confirms them (blind has none),
+//   actions may overlap themselves, and a duplicate is dropped only for a
+//   stored node with the same state -- (total-cost) included, so the same g
+//   -- whose schedule allows every future its schedule allows
+//   (SearchSpaceOptions, search_space.h);
+// so the first plan it returns costs the minimum over the plans its search
+// space holds. That space misses plans only where an exhausted complete
+// search would prove nothing either (proof_limits, search_pipeline.h:
+// durations read by effects, continuous change, PDDL 3); the strategy asks
+// proof_limits and says "proven" only when it names nothing.
+// When that search runs out of its share, the planner's own search in
+// anytime mode ordered by the metric spends the rest of the budget on any
+// plan and then on closer ones: its plan is "not proven minimal", and
+// replan's plan replaces it when closer (closer_of), so an unproven stable
+// repair is never farther than replan's. Latency: up to stable_budget plus
+// grounding twice (compiled and original task) plus, unproven, a replan.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "repair/reformulation.h"
+#include "repair/repair_strategy.h"
+#include "repair/stable_compilation.h"
+
+namespace alplan::repair {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+constexpr const char* kUniformCost = "complete(wastar(blind, w=1, order=metric, preferred=false))";
+
+struct CompiledSearch {
+  std::optional<FoundPlan> best;
+  bool optimal = false;     // found by the uniform-cost search
+  std::string limits;       // why optimal is no proof ("" when it is)
+  std::string message;      // the planner's, when nothing was found
+  int calls = 0;
+};
+
+PlannerResult plan_compiled(const std::shared_ptr<const GroundTask>& task, double now, PlannerOptions options) {
+  PlanningStart start = initial_start(*task);
+  start.now = now;
+  return Planner(task, std::move(options)).plan_from(start);
+}
+
+CompiledSearch search_compiled(const std::shared_ptr<const GroundTask>& task, double now,
+                               const StrategyOptions& options) {
+  const Clock::time_point began = Clock::now();
+  CompiledSearch search;
+  PlannerOptions optimal = options.planner;
+  optimal.search = parse_search_configuration(kUniformCost);
+  optimal.time_limit = std::min(options.planner.time_limit, options.stable_budget * options.stable_proof_share);
+  PlannerResult result = plan_compiled(task, now, optimal);
+  search.calls = 1;
+  if (const FoundPlan* best = result.best()) {
+    search.best = *best;
+    search.optimal = true;
+    search.limits = proof_limits(TaskIndex(task));
+    return search;
+  }
+  search.message = result.message;
+  // Proven unsolvable: the compiled task has no plan, so the problem has none.
+  if (result.status == PlannerResult::Status::Unsolvable) return search;
+  PlannerOptions any = options.planner;
+  any.search = parse_search_configuration(anytime_expression(options.planner.search.to_string(), 1.0, 0, true));
+  any.time_limit = std::max(0.0, std::min(options.planner.time_limit, options.stable_budget) - since(began));
+  result = plan_compiled(task, now, any);
+  search.calls = 2;
+  if (const FoundPlan* best = result.best()) search.best = *best;
+  search.message = result.message;
+  return search;
+}
+
+std::string number(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", x);
+  return buffer;
+}
+
+std::vector<std::string> names_from(const ExecutingPlan& plan, double now) {
+  std::vector<std::string> names;
+  for (const ScheduledAction& s : plan.steps) {
+    if (s.start + 1e-9 >= now) names.push_back(s.name);
+  }
+  return names;
+}
+
+// The mapped plan bound to the uncompiled task and validated there from the
+// observed state; nullopt, with the reason in `why`, when it is not valid.
+std::optional<ExecutingPlan> validated(const std::shared_ptr<const GroundTask>& task, Plan plan, double now,
+                                       double epsilon, std::string& why) {
+  std::stable_sort(plan.steps.begin(), plan.steps.end(), [](const PlanStep& a, const PlanStep& b) {
+    return a.time.value_or(0.0) < b.time.value_or(0.0);
+  });
+  ExecutingPlan bound;
+  try {
+    bound = bind_plan(task, plan, epsilon);  // same order: the steps are sorted already
+  } catch (const std::exception& error) {
+    why = error.what();
+    return std::nullopt;
+  }
+  std::vector<ActionId> actions;
+  for (const ScheduledAction& s : bound.steps) actions.push_back(s.action);
+  PlanningStart start = initial_start(*task);
+  start.now = now;
+  const ValidationResult check = validate_printed_from(*task, start, plan, actions, {}, epsilon);
+  if (check.valid) return bound;
+  why = check.violation ? check.violation->message() : "the validator rejects it";
+  return std::nullopt;
+}
+
+class StableStrategy : public RepairStrategy {
+ public:
+  explicit StableStrategy(StrategyOptions options) : options_(std::move(options)) {}
+  std::string name() const override { return "stable"; }
+
+  RepairResult repair(const RepairRequest& request) override {
+    const Clock::time_point began = Clock::now();
+    pddl::Problem known = *request.problem;
+    RepairRequest seen = request;
+    const std::vector<RecognizedObject> integrated = integrate_recognized(seen, known);
+    RepairResult result;
+    result.integrated = integrated;
+    result.problem = reformulate(*request.domain, known, seen.observed, request.in_progress, request.now);
+    std::string why;
+    try {
+      repair_compiled(seen, result, why);
+    } catch (const std::exception& error) {
+      why = error.what();
+    }
+    if (!result.repaired) {
+      result = fall_back(seen, known, why, result.planner_calls, integrated);
+    } else if (result.how.find("not proven") != std::string::npos) {
+      closer_of(seen, known, result);
+    }
+    result.problem.init = known.init;
+    result.problem.numeric_init = known.numeric_init;
+    result.problem.timed_literals = known.timed_literals;
+    result.seconds = since(began);
+    return result;
+  }
+
+ private:
+  // Plans the compilation of result.problem and fills `result` in; leaves
+  // it unrepaired, saying why, when no valid plan comes of it.
+  void repair_compiled(const RepairRequest& request, RepairResult& result, std::string& why) const {
+    const StableCompilation compiled =
+        compile_stability(*request.domain, result.problem, remaining_steps(*request.plan, request.now));
+    const CompiledSearch search =
+        search_compiled(ground_problem(compiled.domain, compiled.problem, nullptr), request.now, options_);
+    result.planner_calls = search.calls;
+    if (!search.best) {
+      why = "the planner found no plan for the compiled task: " + search.message;
+      return;
+    }
+    const std::shared_ptr<const GroundTask> task =
+        ground_problem(*request.domain, result.problem, request.grounding, &result.reused_grounding);
+    const MappedPlan mapped = map_back(compiled, search.best->plan);
+    std::optional<ExecutingPlan> plan = validated(task, mapped.plan, request.now, options_.planner.epsilon, why);
+    if (!plan) {
+      why = "the compiled plan maps to an invalid plan (" + why + ")";
+      return;
+    }
+    std::vector<std::string> old;
+    for (const OldStep& s : compiled.old) old.push_back(ground_name(s));
+    const std::size_t distance = plan_distance(old, names_from(*plan, request.now));
+    result.how = describe(distance, compiled.old.size(), mapped, search) + describe_remedy(*plan, request.now);
+    result.plan = std::move(plan);
+    result.repaired = true;
+  }
+
+  std::string describe(std::size_t distance, std::size_t old, const MappedPlan& mapped,
+                       const CompiledSearch& search) const {
+    std::string proof = "proven minimal by uniform-cost search";
+    if (!search.optimal) {
+      proof = "not proven minimal: the uniform-cost search ran out of its " +
+              number(options_.stable_budget * options_.stable_proof_share) + " s";
+    } else if (!search.limits.empty()) {
+      proof = "minimal among the plans the search represents, not proven: " + search.limits;
+    }
+    std::string how = "stable repair at distance " + std::to_string(distance) + " from the old plan (" + proof +
+                      "): of its " + std::to_string(old) + " remaining steps " + std::to_string(mapped.kept) +
+                      " kept and " + std::to_string(mapped.forgone) + " forgone, " + std::to_string(mapped.added) +
+                      " new; ";
+    const std::optional<double> cost = search.best->validation.metric;
+    if (cost && std::abs(*cost - static_cast<double>(distance)) > 1e-6) {
+      how += "the compiled plan costs " + number(*cost) + "; ";
+    }
+    return how;
+  }
+
+  // Unproven, the compiled task's plan may be far from minimal (on
+  // driverlog-time the uniform-cost search drowns in the orders of the kept
+  // steps, which cost nothing): replan's plan, when closer, is taken instead,
+  // so that stable is never farther than replan.
+  void closer_of(const RepairRequest& request, const pddl::Problem& known, RepairResult& result) const {
+    const RepairResult replanned = replan_from(request, *request.domain, known, options_.planner);
+    result.planner_calls += replanned.planner_calls;
+    if (!replanned.repaired) return;
+    std::vector<std::string> old;
+    for (const OldStep& s : remaining_steps(*request.plan, request.now)) old.push_back(ground_name(s));
+    const std::size_t ours = plan_distance(old, names_from(*result.plan, request.now));
+    const std::size_t theirs = plan_distance(old, names_from(*replanned.plan, request.now));
+    if (theirs >= ours) {
+      result.how += "; replan's plan is no closer (distance " + std::to_string(theirs) + ")";
+      return;
+    }
+    result.plan = replanned.plan;
+    result.reused_grounding = replanned.reused_grounding;
+    result.how = "stable repair at distance " + std::to_string(theirs) +
+                 " from the old plan (not proven minimal: the compiled task's best plan was at " +
+                 std::to_string(ours) + ", replan's closer): " + describe_remedy(*result.plan, request.now);
+  }
+
+  RepairResult fall_back(const RepairRequest& request, const pddl::Problem& known, const std::string& why,
+                         int calls, const std::vector<RecognizedObject>& integrated) const {
+    RepairResult result = replan_from(request, *request.domain, known, options_.planner);
+    result.planner_calls += calls;
+    result.integrated = integrated;
+    result.fallback = "replan";
+    const std::string what = result.repaired ? describe_remedy(*result.plan, request.now) : result.how;
+    result.how = "stable found no repair of minimum distance (" + why + "), so it fell back to replan: " + what;
+    return result;
+  }
+
+  StrategyOptions options_;
+};
+
+}  // namespace
+
+std::unique_ptr<RepairStrategy> make_stable_strategy(const StrategyOptions& options) {
+  return std::make_unique<StableStrategy>(options);
+}
+
+}  // namespace alplan::repair
