@@ -101,6 +101,23 @@ ExecutingPlan with_all_conditions(const ExecutingPlan& plan) {
   return bind_plan(validator.world_snapshot(), steps, plan.epsilon);
 }
 
+std::vector<std::string> step_names_from(const ExecutingPlan& plan, double from) {
+  std::vector<std::string> names;
+  for (const ScheduledAction& s : plan.steps) {
+    if (s.start + 1e-9 >= from) names.push_back(s.name);
+  }
+  return names;
+}
+
+std::size_t plan_distance(const std::vector<std::string>& a, const std::vector<std::string>& b) {
+  std::vector<std::string> x = a, y = b;
+  std::sort(x.begin(), x.end());
+  std::sort(y.begin(), y.end());
+  std::vector<std::string> common;
+  std::set_intersection(x.begin(), x.end(), y.begin(), y.end(), std::back_inserter(common));
+  return x.size() + y.size() - 2 * common.size();
+}
+
 std::string plan_text(const ExecutingPlan& plan) {
   std::string out;
   char buffer[64];

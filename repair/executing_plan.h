@@ -40,6 +40,14 @@ Plan steps_of(const ExecutingPlan& plan);
 // paths), but the world can change them, so the monitor must check them.
 ExecutingPlan with_all_conditions(const ExecutingPlan& plan);
 
+// The names of the steps that start at or after `from` ("(move r a b)").
+std::vector<std::string> step_names_from(const ExecutingPlan& plan, double from);
+
+// Plan distance (Fox, Gerevini, Long & Serina, ICAPS 2006): actions in `a`
+// and not in `b` plus actions in `b` and not in `a`, as multisets of ground
+// actions (a step repeated twice and kept once is one change).
+std::size_t plan_distance(const std::vector<std::string>& a, const std::vector<std::string>& b);
+
 // The plan in the IPC format, the paper's figures' order: by start time.
 std::string plan_text(const ExecutingPlan& plan);
 

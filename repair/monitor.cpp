@@ -90,16 +90,7 @@ double next_observation(const Timeline& timeline, const std::vector<CommittedEnd
 }  // namespace
 
 std::size_t plan_distance(const ExecutingPlan& before, const ExecutingPlan& after, double from) {
-  std::map<std::string, int> count;
-  for (const ScheduledAction& s : before.steps) {
-    if (s.start + 1e-9 >= from) ++count[s.name];
-  }
-  for (const ScheduledAction& s : after.steps) {
-    if (s.start + 1e-9 >= from) --count[s.name];
-  }
-  std::size_t distance = 0;
-  for (const auto& [name, c] : count) distance += static_cast<std::size_t>(std::abs(c));
-  return distance;
+  return plan_distance(step_names_from(before, from), step_names_from(after, from));
 }
 
 nlohmann::json ExecutionReport::json() const {

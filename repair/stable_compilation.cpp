@@ -247,14 +247,6 @@ std::vector<OldStep> remaining_steps(const ExecutingPlan& plan, double now) {
   return old;
 }
 
-std::size_t plan_distance(const std::vector<std::string>& a, const std::vector<std::string>& b) {
-  std::vector<std::string> x = a, y = b;
-  std::sort(x.begin(), x.end());
-  std::sort(y.begin(), y.end());
-  std::vector<std::string> common;
-  std::set_intersection(x.begin(), x.end(), y.begin(), y.end(), std::back_inserter(common));
-  return x.size() + y.size() - 2 * common.size();
-}
 
 bool declares_total_cost(const pddl::Domain& domain) {
   return std::any_of(domain.functions.begin(), domain.functions.end(),

@@ -60,9 +60,6 @@ std::string ground_name(const OldStep& step);
 // repair at `now` may keep or forgo (steps already started are committed).
 std::vector<OldStep> remaining_steps(const ExecutingPlan& plan, double now);
 
-// D(pi0, pi1) over multisets of ground action names.
-std::size_t plan_distance(const std::vector<std::string>& a, const std::vector<std::string>& b);
-
 // A copy of `domain` in which (total-cost) is declared, no action changes it
 // except that every action increases it by `cost` (at end when durative).
 // Adapt uses cost 0 on a domain without the function: the grounder keeps a

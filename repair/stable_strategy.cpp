@@ -28,10 +28,11 @@
 // proof_limits and says "proven" only when it names nothing.
 // When that search runs out of its share, the planner's own search in
 // anytime mode ordered by the metric spends the rest of the budget on any
-// plan and then on closer ones: its plan is "not proven minimal", and
-// replan's plan replaces it when closer (closer_of), so an unproven stable
-// repair is never farther than replan's. Latency: up to stable_budget plus
-// grounding twice (compiled and original task) plus, unproven, a replan.
+// plan and then on closer ones: its plan is "not proven minimal", and it is
+// returned as it is. Taking replan's plan where it is closer would make
+// stable never farther than replan by construction, and the testbed would
+// compare replan with itself. Latency: up to stable_budget plus grounding
+// twice (the compiled and the original task).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -98,13 +99,6 @@ std::string number(double x) {
   return buffer;
 }
 
-std::vector<std::string> names_from(const ExecutingPlan& plan, double now) {
-  std::vector<std::string> names;
-  for (const ScheduledAction& s : plan.steps) {
-    if (s.start + 1e-9 >= now) names.push_back(s.name);
-  }
-  return names;
-}
 
 // The mapped plan bound to the uncompiled task and validated there from the
 // observed state; nullopt, with the reason in `why`, when it is not valid.
@@ -149,11 +143,7 @@ class StableStrategy : public RepairStrategy {
     } catch (const std::exception& error) {
       why = error.what();
     }
-    if (!result.repaired) {
-      result = fall_back(seen, known, why, result.planner_calls, integrated);
-    } else if (result.how.find("not proven") != std::string::npos) {
-      closer_of(seen, known, result);
-    }
+    if (!result.repaired) result = fall_back(seen, known, why, result.planner_calls, integrated);
     result.problem.init = known.init;
     result.problem.numeric_init = known.numeric_init;
     result.problem.timed_literals = known.timed_literals;
@@ -184,7 +174,7 @@ class StableStrategy : public RepairStrategy {
     }
     std::vector<std::string> old;
     for (const OldStep& s : compiled.old) old.push_back(ground_name(s));
-    const std::size_t distance = plan_distance(old, names_from(*plan, request.now));
+    const std::size_t distance = plan_distance(old, step_names_from(*plan, request.now));
     result.how = describe(distance, compiled.old.size(), mapped, search) + describe_remedy(*plan, request.now);
     result.plan = std::move(plan);
     result.repaired = true;
@@ -208,29 +198,6 @@ class StableStrategy : public RepairStrategy {
       how += "the compiled plan costs " + number(*cost) + "; ";
     }
     return how;
-  }
-
-  // Unproven, the compiled task's plan may be far from minimal (on
-  // driverlog-time the uniform-cost search drowns in the orders of the kept
-  // steps, which cost nothing): replan's plan, when closer, is taken instead,
-  // so that stable is never farther than replan.
-  void closer_of(const RepairRequest& request, const pddl::Problem& known, RepairResult& result) const {
-    const RepairResult replanned = replan_from(request, *request.domain, known, options_.planner);
-    result.planner_calls += replanned.planner_calls;
-    if (!replanned.repaired) return;
-    std::vector<std::string> old;
-    for (const OldStep& s : remaining_steps(*request.plan, request.now)) old.push_back(ground_name(s));
-    const std::size_t ours = plan_distance(old, names_from(*result.plan, request.now));
-    const std::size_t theirs = plan_distance(old, names_from(*replanned.plan, request.now));
-    if (theirs >= ours) {
-      result.how += "; replan's plan is no closer (distance " + std::to_string(theirs) + ")";
-      return;
-    }
-    result.plan = replanned.plan;
-    result.reused_grounding = replanned.reused_grounding;
-    result.how = "stable repair at distance " + std::to_string(theirs) +
-                 " from the old plan (not proven minimal: the compiled task's best plan was at " +
-                 std::to_string(ours) + ", replan's closer): " + describe_remedy(*result.plan, request.now);
   }
 
   RepairResult fall_back(const RepairRequest& request, const pddl::Problem& known, const std::string& why,

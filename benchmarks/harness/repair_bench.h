@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "benchmarks/harness/paired_statistics.h"
+#include "benchmarks/harness/repair_study.h"
 #include "benchmarks/harness/slurm_array.h"
 #include "domains/home_generator.h"
 #include <nlohmann/json.hpp>
