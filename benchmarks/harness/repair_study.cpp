@@ -78,7 +78,8 @@ Cell summarise(const std::vector<const StudyRun*>& runs, const std::string& stra
   return c;
 }
 
-// The metric's values of `strategy` and of the reference, paired by run.
+// The metric's values of `strategy` and of the reference, paired by run;
+// a run's home is its cluster, since runs of one home are not independent.
 PairedComparison compare(const std::vector<const StudyRun*>& runs, const std::string& reference,
                          const std::string& strategy, const Metric& metric, const BootstrapOptions& bootstrap) {
   std::map<std::pair<std::string, int>, const StudyRun*> base;
@@ -86,14 +87,16 @@ PairedComparison compare(const std::vector<const StudyRun*>& runs, const std::st
     if (r->strategy == reference) base[{r->home, r->run}] = r;
   }
   std::vector<double> a, b;
+  std::vector<std::string> homes;
   for (const StudyRun* r : runs) {
     if (r->strategy != strategy) continue;
     const auto it = base.find({r->home, r->run});
     if (it == base.end()) continue;
     a.push_back(metric.value(*it->second).value_or(std::nan("")));
     b.push_back(metric.value(*r).value_or(std::nan("")));
+    homes.push_back(r->home);
   }
-  return compare_paired(a, b, bootstrap);
+  return compare_paired(a, b, homes, bootstrap);
 }
 
 std::string verdict(const PairedComparison& c, const Metric& m) {
