@@ -219,7 +219,7 @@ void comparison_tables(Study& s, StudyAnalysis& out, std::ostringstream& md) {
      << " resamples); the Wilcoxon signed-rank and sign tests, two-sided, on the per-home mean differences; Holm p: "
         "the Wilcoxon p adjusted (Holm 1979) over all strategies and metrics of the failure kind; effect sizes on "
         "the per-home means: r_rb, the matched-pairs rank-biserial correlation (Kerby 2014), and d_z, their mean "
-        "over their standard deviation (n/a: every home differs by the same non-zero amount). A verdict other than "
+        "over their standard deviation (n/a: one home, or every home differs by the same non-zero amount). A verdict other than "
         "tie needs the interval to exclude zero and Holm p < 0.05.\n\n";
   table.print_markdown(md);
 }
