@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <numeric>
 #include <random>
 #include <stdexcept>
+#include <tuple>
 
 namespace alplan::bench {
 namespace {
@@ -15,16 +18,26 @@ double percentile_of_sorted(const std::vector<double>& sorted, double p) {
   return sorted[low] + (rank - static_cast<double>(low)) * (sorted[high] - sorted[low]);
 }
 
-// Ranks of |d| from 1, ties averaged; also whether any tie occurred.
-std::vector<double> absolute_ranks(const std::vector<double>& d, double* tie_term) {
-  std::vector<std::size_t> order(d.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return std::fabs(d[a]) < std::fabs(d[b]); });
-  std::vector<double> ranks(d.size());
+bool within(double a, double b, double tolerance) {
+  return std::fabs(a - b) <= tolerance * std::max({1.0, std::fabs(a), std::fabs(b)});
+}
+
+// Ranks of |values| and the ties' sum of t^3 - t (the variance correction).
+std::vector<double> ranks_and_ties(const std::vector<double>& values, double tolerance, double* tie_term) {
+  std::vector<std::size_t> order(values.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  // Stable, so equal magnitudes keep their input order: the same ranks
+  // for the same input, whatever the standard library's sort.
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return std::fabs(values[a]) < std::fabs(values[b]); });
+  std::vector<double> ranks(values.size());
   *tie_term = 0.0;
   for (std::size_t i = 0; i < order.size();) {
+    // Against the group's first magnitude, not the previous one, so that a
+    // chain of near values cannot stretch one group without bound.
+    const double first = std::fabs(values[order[i]]);
     std::size_t j = i;
-    while (j + 1 < order.size() && std::fabs(d[order[j + 1]]) == std::fabs(d[order[i]])) ++j;
+    while (j + 1 < order.size() && within(std::fabs(values[order[j + 1]]), first, tolerance)) ++j;
     const double average = (static_cast<double>(i + 1) + static_cast<double>(j + 1)) / 2.0;
     for (std::size_t k = i; k <= j; ++k) ranks[order[k]] = average;
     const double t = static_cast<double>(j - i + 1);
@@ -34,44 +47,129 @@ std::vector<double> absolute_ranks(const std::vector<double>& d, double* tie_ter
   return ranks;
 }
 
-// P(W+ <= w) under the null, by counting subsets of ranks 1..n.
-double exact_lower_tail(std::size_t n, double w) {
-  const std::size_t total = n * (n + 1) / 2;
+// Two-sided p of W+ by enumerating the 2^n sign assignments of the ranks
+// (conditional on the tie pattern). Averaged ranks are multiples of 1/2,
+// so doubled they are integers and a subset-sum count is exact.
+double exact_two_sided(const std::vector<double>& ranks, double w_plus) {
+  std::vector<std::size_t> doubled;
+  std::size_t total = 0;
+  for (double r : ranks) {
+    doubled.push_back(static_cast<std::size_t>(std::lround(2.0 * r)));
+    total += doubled.back();
+  }
   std::vector<double> ways(total + 1, 0.0);
   ways[0] = 1.0;
-  for (std::size_t r = 1; r <= n; ++r) {
+  for (std::size_t r : doubled) {
     for (std::size_t s = total; s >= r; --s) ways[s] += ways[s - r];
   }
+  // The null distribution is symmetric about total / 2: the smaller tail doubled.
+  const auto w = static_cast<std::size_t>(std::lround(2.0 * w_plus));
+  const std::size_t tail_end = std::min(w, total - w);
   double below = 0.0;
-  for (std::size_t s = 0; s <= total && static_cast<double>(s) <= w + 1e-9; ++s) below += ways[s];
-  return below / std::ldexp(1.0, static_cast<int>(n));
+  for (std::size_t s = 0; s <= tail_end; ++s) below += ways[s];
+  return std::min(1.0, 2.0 * below / std::ldexp(1.0, static_cast<int>(ranks.size())));
+}
+
+// The pairs grouped by cluster, clusters in order of first appearance (so
+// that one cluster a pair reproduces the run bootstrap draw for draw).
+struct Clusters {
+  std::vector<double> sums;        // of the run differences
+  std::vector<std::size_t> sizes;  // runs
+  std::vector<double> means;       // of the differences, zero within tolerance
+};
+
+Clusters group(const std::vector<double>& d, const std::vector<std::string>& ids, const std::vector<double>& scales,
+               double zero_tolerance) {
+  Clusters c;
+  std::vector<double> scale;
+  std::map<std::string, std::size_t> index;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    const std::string id = ids.empty() ? std::to_string(i) : ids[i];
+    const auto [it, added] = index.emplace(id, c.sums.size());
+    if (added) {
+      c.sums.push_back(0.0);
+      c.sizes.push_back(0);
+      scale.push_back(1.0);
+    }
+    c.sums[it->second] += d[i];
+    ++c.sizes[it->second];
+    scale[it->second] = std::max(scale[it->second], scales[i]);
+  }
+  for (std::size_t k = 0; k < c.sums.size(); ++k) {
+    // Run differences of opposite sign can cancel up to rounding.
+    const double mean = c.sums[k] / static_cast<double>(c.sizes[k]);
+    c.means.push_back(std::fabs(mean) <= zero_tolerance * scale[k] ? 0.0 : mean);
+  }
+  return c;
+}
+
+// Percentile interval of the run-level mean over resampled clusters.
+std::pair<double, double> cluster_bootstrap(const Clusters& c, const BootstrapOptions& options) {
+  std::mt19937_64 random(options.seed);
+  std::uniform_int_distribution<std::size_t> pick(0, c.sums.size() - 1);
+  std::vector<double> means;
+  means.reserve(static_cast<std::size_t>(std::max(options.resamples, 1)));
+  for (int r = 0; r < std::max(options.resamples, 1); ++r) {
+    double s = 0.0, runs = 0.0;
+    for (std::size_t i = 0; i < c.sums.size(); ++i) {
+      const std::size_t k = pick(random);
+      s += c.sums[k];
+      runs += static_cast<double>(c.sizes[k]);
+    }
+    means.push_back(s / runs);
+  }
+  std::sort(means.begin(), means.end());
+  return {percentile_of_sorted(means, 0.025), percentile_of_sorted(means, 0.975)};
 }
 
 }  // namespace
 
-double wilcoxon_signed_rank_p(const std::vector<double>& differences) {
+std::vector<double> absolute_ranks(const std::vector<double>& values, double tie_tolerance) {
+  double tie_term = 0.0;
+  return ranks_and_ties(values, tie_tolerance, &tie_term);
+}
+
+SignedRank signed_rank_test(const std::vector<double>& differences, double tie_tolerance) {
   std::vector<double> d;
   for (double x : differences) {
-    if (x != 0.0 && std::isfinite(x)) d.push_back(x);
+    if (std::isfinite(x) && !within(x, 0.0, tie_tolerance)) d.push_back(x);
   }
-  const std::size_t n = d.size();
-  if (n == 0) return 1.0;
-  double tie_term = 0.0;
-  const std::vector<double> ranks = absolute_ranks(d, &tie_term);
-  double w_plus = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (d[i] > 0) w_plus += ranks[i];
+  SignedRank t;
+  t.n = d.size();
+  if (t.n == 0) return t;
+  const std::vector<double> ranks = ranks_and_ties(d, tie_tolerance, &t.tie_term);
+  for (std::size_t i = 0; i < t.n; ++i) (d[i] > 0 ? t.w_plus : t.w_minus) += ranks[i];
+  t.exact = t.n < 20;
+  if (t.exact) {
+    t.p = exact_two_sided(ranks, t.w_plus);
+    return t;
   }
-  const double nn = static_cast<double>(n);
-  const double mean = nn * (nn + 1.0) / 4.0;
-  if (n < 20 && tie_term == 0.0) {
-    const double w = std::min(w_plus, nn * (nn + 1.0) / 2.0 - w_plus);
-    return std::min(1.0, 2.0 * exact_lower_tail(n, w));
-  }
-  const double variance = nn * (nn + 1.0) * (2.0 * nn + 1.0) / 24.0 - tie_term / 48.0;
-  if (variance <= 0.0) return 1.0;
-  const double z = std::max(0.0, std::fabs(w_plus - mean) - 0.5) / std::sqrt(variance);
-  return std::erfc(z / std::sqrt(2.0));
+  const double n = static_cast<double>(t.n);
+  const double variance = n * (n + 1.0) * (2.0 * n + 1.0) / 24.0 - t.tie_term / 48.0;
+  if (variance <= 0.0) return t;
+  const double z = std::max(0.0, std::fabs(t.w_plus - n * (n + 1.0) / 4.0) - 0.5) / std::sqrt(variance);
+  t.p = std::erfc(z / std::sqrt(2.0));
+  return t;
+}
+
+double wilcoxon_signed_rank_p(const std::vector<double>& differences, double tie_tolerance) {
+  return signed_rank_test(differences, tie_tolerance).p;
+}
+
+double rank_biserial(const SignedRank& test) {
+  const double all = test.w_plus + test.w_minus;
+  return all > 0.0 ? (test.w_plus - test.w_minus) / all : 0.0;
+}
+
+double standardized_mean_difference(const std::vector<double>& values) {
+  if (std::all_of(values.begin(), values.end(), [](double x) { return x == 0.0; })) return 0.0;
+  if (values.size() < 2) return std::nan("");
+  const double n = static_cast<double>(values.size());
+  const double mean = std::accumulate(values.begin(), values.end(), 0.0) / n;
+  double squares = 0.0;
+  for (double x : values) squares += (x - mean) * (x - mean);
+  const double sd = std::sqrt(squares / (n - 1.0));
+  return sd > 0.0 ? mean / sd : std::nan("");
 }
 
 double sign_test_p(std::size_t positive, std::size_t nonzero) {
@@ -86,42 +184,57 @@ double sign_test_p(std::size_t positive, std::size_t nonzero) {
   return std::min(1.0, 2.0 * tail);
 }
 
+std::vector<double> holm_adjust(const std::vector<double>& p) {
+  std::vector<std::size_t> order(p.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p[a] < p[b]; });
+  std::vector<double> adjusted(p.size());
+  double running = 0.0;  // the maximum keeps the adjusted p in the raw p's order
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const double multiplier = static_cast<double>(p.size() - i);
+    running = std::max(running, std::min(1.0, multiplier * p[order[i]]));
+    adjusted[order[i]] = running;
+  }
+  return adjusted;
+}
+
 PairedComparison compare_paired(const std::vector<double>& reference, const std::vector<double>& other,
-                                const BootstrapOptions& options) {
+                                const std::vector<std::string>& clusters, const BootstrapOptions& options) {
   if (reference.size() != other.size()) throw std::invalid_argument("paired samples of different sizes");
+  if (!clusters.empty() && clusters.size() != reference.size())
+    throw std::invalid_argument("one cluster id a pair, or none");
   PairedComparison c;
-  std::vector<double> d;
+  std::vector<double> d, scales;
+  std::vector<std::string> ids;
   for (std::size_t i = 0; i < reference.size(); ++i) {
     if (!std::isfinite(reference[i]) || !std::isfinite(other[i])) continue;
     // Times that went through plan text (an external planner's) differ in
     // the last digits: rounding, not a difference between strategies.
-    const double scale = std::max({1.0, std::fabs(reference[i]), std::fabs(other[i])});
+    scales.push_back(std::max({1.0, std::fabs(reference[i]), std::fabs(other[i])}));
     const double difference = other[i] - reference[i];
-    d.push_back(std::fabs(difference) <= options.zero_tolerance * scale ? 0.0 : difference);
+    d.push_back(std::fabs(difference) <= options.zero_tolerance * scales.back() ? 0.0 : difference);
+    if (!clusters.empty()) ids.push_back(clusters[i]);
   }
   c.pairs = d.size();
   if (d.empty()) return c;
-  double sum = 0.0;
   for (double x : d) {
-    sum += x;
     c.nonzero += x != 0.0 ? 1 : 0;
     c.positive += x > 0.0 ? 1 : 0;
   }
-  c.mean_difference = sum / static_cast<double>(d.size());
-  std::mt19937_64 random(options.seed);
-  std::uniform_int_distribution<std::size_t> pick(0, d.size() - 1);
-  std::vector<double> means;
-  means.reserve(static_cast<std::size_t>(options.resamples));
-  for (int r = 0; r < options.resamples; ++r) {
-    double s = 0.0;
-    for (std::size_t i = 0; i < d.size(); ++i) s += d[pick(random)];
-    means.push_back(s / static_cast<double>(d.size()));
+  c.mean_difference = std::accumulate(d.begin(), d.end(), 0.0) / static_cast<double>(d.size());
+  const Clusters grouped = group(d, ids, scales, options.zero_tolerance);
+  c.clusters = grouped.means.size();
+  for (double m : grouped.means) {
+    c.nonzero_clusters += m != 0.0 ? 1 : 0;
+    c.positive_clusters += m > 0.0 ? 1 : 0;
   }
-  std::sort(means.begin(), means.end());
-  c.ci_low = percentile_of_sorted(means, 0.025);
-  c.ci_high = percentile_of_sorted(means, 0.975);
-  c.wilcoxon_p = wilcoxon_signed_rank_p(d);
-  c.sign_p = sign_test_p(c.positive, c.nonzero);
+  std::tie(c.ci_low, c.ci_high) = cluster_bootstrap(grouped, options);
+  const SignedRank test = signed_rank_test(grouped.means, options.tie_tolerance);
+  c.wilcoxon_p = test.p;
+  c.wilcoxon_p_adjusted = test.p;
+  c.sign_p = sign_test_p(c.positive_clusters, c.nonzero_clusters);
+  c.rank_biserial = rank_biserial(test);
+  c.d_z = standardized_mean_difference(grouped.means);
   return c;
 }
 

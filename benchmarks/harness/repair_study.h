@@ -4,8 +4,12 @@
 // and over all, success rate, repair latency (median, p95), plan stability
 // (Fox, Gerevini, Long & Serina, ICAPS 2006: actions removed plus added),
 // delay until the senior is comforted, makespan, cost and planner calls;
-// each difference with a 95% bootstrap interval and paired tests
-// (paired_statistics.h); then where each strategy wins.
+// each difference with a 95% cluster bootstrap interval, paired tests on
+// the per-home means and effect sizes (paired_statistics.h: a home's runs
+// are not independent, so the home is the unit), the signed-rank p-values
+// Holm-adjusted (Holm 1979) over all strategies and metrics of one failure
+// kind; then where each strategy wins. A pure function of the runs, so a
+// test can feed it runs made by hand.
 #pragma once
 
 #include <map>
@@ -40,7 +44,11 @@ struct StudyAnalysis {
   std::map<std::string, std::string> plots;  // file name -> SVG
 };
 
-// `strategies` in the order to report; `reference` among them.
+// `strategies` in the order to report; `reference` among them. A verdict
+// (json kinds.<kind>.against_<reference>.<strategy>.<metric>.verdict and
+// wins.<kind>.<metric>.<strategy>) is "better" or "worse" only when the
+// cluster interval excludes zero and the Holm-adjusted p is below 0.05,
+// else "tie".
 StudyAnalysis analyse_repair_study(const std::vector<StudyRun>& runs, const std::vector<std::string>& strategies,
                                    const std::string& reference, const BootstrapOptions& bootstrap);
 

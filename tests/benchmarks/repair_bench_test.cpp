@@ -1,8 +1,10 @@
 // The repair study in-process, small: the harness's numbers must be ones a
 // run can produce (a cost is 0 or a sum of suggestion costs; it once read
-// freed memory and printed 1e-312), and the paired analysis must tell a
-// strategy that brings a substitute from one that cannot.
+// freed memory and printed 1e-312). And the paired analysis the study uses
+// (analyse_repair_study) must tell a strategy that brings a substitute from
+// one that cannot, on runs made by hand whose answer is known.
 #include "benchmarks/harness/repair_bench.h"
+#include "benchmarks/harness/repair_study.h"
 
 #include <catch2/catch.hpp>
 
@@ -10,6 +12,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -47,4 +51,113 @@ TEST_CASE("bench repair writes a paired study whose costs are real") {
   CHECK(summary["kinds"]["all"]["against_replan"]["substitute"].contains("delay"));
   CHECK(std::filesystem::exists(o.out_dir + "/plots/delay-vs-replan.svg"));
   CHECK(std::filesystem::exists(o.out_dir + "/summary.md"));
+}
+
+namespace {
+
+bench::StudyRun sibling_run(int home, int run, const std::string& strategy) {
+  bench::StudyRun r;
+  r.home = "home-" + std::to_string(home);
+  r.run = run;
+  r.strategy = strategy;
+  r.kind = "sibling";
+  r.latencies_ms = {3.0};
+  r.stability = 2.0;
+  r.planner_calls = 1;
+  r.repairs = 1;
+  return r;
+}
+
+// Substitute fetches the object of a sibling type the camera saw: the
+// senior is comforted at cost 0, a little later. Replan knows only the
+// problem's objects: it falls back on a suggestion (cost 500), or, in the
+// second run of every third home, fails.
+std::vector<bench::StudyRun> substitute_against_replan(int homes, int runs_per_home) {
+  std::vector<bench::StudyRun> runs;
+  for (int h = 0; h < homes; ++h) {
+    for (int k = 0; k < runs_per_home; ++k) {
+      bench::StudyRun replan = sibling_run(h, k, "replan");
+      replan.comforted = !(k == 1 && h % 3 == 0);
+      if (replan.comforted) {
+        replan.delay = 0.0;
+        replan.makespan = 80.0 + 2.0 * h;
+        replan.cost = 500.0;
+      }
+      bench::StudyRun substitute = sibling_run(h, k, "substitute");
+      substitute.comforted = true;
+      substitute.delay = 20.0;
+      substitute.makespan = 100.0 + h;
+      substitute.cost = 0.0;
+      runs.push_back(replan);
+      runs.push_back(substitute);
+    }
+  }
+  return runs;
+}
+
+std::string verdict(const bench::StudyAnalysis& a, const std::string& kind, const std::string& metric) {
+  return a.json.at("kinds").at(kind).at("against_replan").at("substitute").at(metric).at("verdict");
+}
+
+}  // namespace
+
+TEST_CASE("the study's analysis tells a strategy that brings a substitute from one that cannot") {
+  // 10 homes, not the 6 one might first try: the signed-rank test is on
+  // the homes' means, whose smallest exact two-sided p is 2 / 2^homes, and
+  // Holm multiplies it by up to the family's 8 metrics: 6 homes give
+  // 8 * 2/64 = 0.25, 10 homes 8 * 2/1024 = 0.016.
+  bench::BootstrapOptions bootstrap;
+  bootstrap.resamples = 500;
+  const std::vector<std::string> strategies{"replan", "substitute"};
+  const bench::StudyAnalysis a =
+      bench::analyse_repair_study(substitute_against_replan(10, 2), strategies, "replan", bootstrap);
+  for (const std::string kind : {"sibling", "all"}) {
+    CHECK(verdict(a, kind, "cost") == "better");
+    CHECK(verdict(a, kind, "metric") == "better");  // makespan + cost: -480 - h in home h
+    CHECK(verdict(a, kind, "delay") == "worse");    // a substitute is fetched, a suggestion is not
+    CHECK(verdict(a, kind, "latency_ms") == "tie");
+    CHECK(a.json.at("wins").at(kind).at("cost").at("substitute") == "better");
+  }
+  const nlohmann::json& cost = a.json.at("kinds").at("sibling").at("against_replan").at("substitute").at("cost");
+  CHECK(cost.at("homes") == 10);
+  CHECK(cost.at("pairs") == 16);  // 20 runs; replan failed the second run of homes 0, 3, 6 and 9
+  CHECK(cost.at("mean_difference") == -500.0);
+  CHECK(cost.at("rank_biserial") == -1.0);
+  CHECK(cost.at("wilcoxon_p").get<double>() == Approx(2.0 / 1024.0));
+  CHECK(cost.at("wilcoxon_p_holm").get<double>() > cost.at("wilcoxon_p").get<double>());
+  CHECK(cost.at("wilcoxon_p_holm").get<double>() < 0.05);
+  CHECK(a.markdown.find("Holm p") != std::string::npos);
+
+  SECTION("the same runs duplicated in fewer homes are not evidence: a tie") {
+    // 3 homes of 6 identical runs each: 18 runs, but 3 independent values,
+    // and an exact p of at least 2/8.
+    std::vector<bench::StudyRun> copies;
+    for (const bench::StudyRun& r : substitute_against_replan(3, 1)) {
+      for (int k = 0; k < 6; ++k) {
+        bench::StudyRun c = r;
+        c.run = k;
+        copies.push_back(c);
+      }
+    }
+    const bench::StudyAnalysis few = bench::analyse_repair_study(copies, strategies, "replan", bootstrap);
+    CHECK(few.json.at("kinds").at("sibling").at("against_replan").at("substitute").at("cost").at("pairs") == 18);
+    CHECK(verdict(few, "sibling", "cost") == "tie");
+  }
+
+  SECTION("a strategy that does what replan does ties on every metric") {
+    std::vector<bench::StudyRun> same;
+    for (const bench::StudyRun& r : substitute_against_replan(10, 2)) {
+      if (r.strategy != "replan") continue;
+      same.push_back(r);
+      same.push_back(r);
+      same.back().strategy = "substitute";
+    }
+    const bench::StudyAnalysis tie = bench::analyse_repair_study(same, strategies, "replan", bootstrap);
+    const nlohmann::json& against = tie.json.at("kinds").at("sibling").at("against_replan").at("substitute");
+    CHECK(against.size() == 8);
+    for (auto it = against.begin(); it != against.end(); ++it) {
+      INFO(it.key());
+      CHECK(it.value().at("verdict") == "tie");
+    }
+  }
 }
