@@ -84,7 +84,10 @@ CompiledSearch search_compiled(const std::shared_ptr<const GroundTask>& task, do
   // Proven unsolvable: the compiled task has no plan, so the problem has none.
   if (result.status == PlannerResult::Status::Unsolvable) return search;
   PlannerOptions any = options.planner;
-  any.search = parse_search_configuration(anytime_expression(options.planner.search.to_string(), 1.0, 0, true));
+  // The planner's default first search, then weighted A* ordered by the
+  // distance: its own anytime mode, whatever the repairs' search (which may
+  // be anytime already, and anytime does not nest).
+  any.search = parse_search_configuration(anytime_expression(alias_expression("default"), 1.0, 0, true));
   any.time_limit = std::max(0.0, std::min(options.planner.time_limit, options.stable_budget) - since(began));
   result = plan_compiled(task, now, any);
   search.calls = 2;

@@ -84,25 +84,30 @@ void models_table(std::ostream& out, const std::map<std::string, std::map<RunKey
 void value_table(std::ostream& out, const std::map<RunKey, const StudyRun*>& seen,
                  const std::map<RunKey, const StudyRun*>& base, const std::vector<std::string>& strategies,
                  const BootstrapOptions& bootstrap) {
-  Table table({"strategy", "measure", "pairs", "mean difference", "95% CI", "Wilcoxon p"});
+  Table table({"strategy", "measure", "pairs", "mean difference", "95% CI (homes resampled)",
+               "Wilcoxon p (home means)"});
   for (const std::string& s : strategies) {
     std::vector<double> comforted_base, comforted_seen, delay_base, delay_seen;
+    std::vector<std::string> homes, delay_homes;  // the runs of one home are one cluster
     for (const auto& [key, b] : base) {
       const auto it = seen.find(key);
       if (std::get<2>(key) != s || it == seen.end()) continue;
       comforted_base.push_back(b->comforted ? 1.0 : 0.0);
       comforted_seen.push_back(it->second->comforted ? 1.0 : 0.0);
+      homes.push_back(std::get<0>(key));
       if (b->delay && it->second->delay) {
+        delay_homes.push_back(std::get<0>(key));
         delay_base.push_back(*b->delay);
         delay_seen.push_back(*it->second->delay);
       }
     }
-    for (const auto& [name, x, y] : {std::tuple{"comforted", &comforted_base, &comforted_seen},
-                                     std::tuple{"delay", &delay_base, &delay_seen}}) {
+    for (const auto& [name, x, y, clusters] : {std::tuple{"comforted", &comforted_base, &comforted_seen, &homes},
+                                               std::tuple{"delay", &delay_base, &delay_seen, &delay_homes}}) {
       if (x->empty()) continue;
-      const PairedComparison c = compare_paired(*x, *y, bootstrap);
-      table.add({s, name, std::to_string(c.pairs), fixed(c.mean_difference, 3),
-                 "[" + fixed(c.ci_low, 3) + ", " + fixed(c.ci_high, 3) + "]", fixed(c.wilcoxon_p, 4)});
+      const PairedComparison c = compare_paired(*x, *y, *clusters, bootstrap);
+      table.add({s, name, std::to_string(c.pairs) + " in " + std::to_string(c.clusters) + " homes",
+                 fixed(c.mean_difference, 3), "[" + fixed(c.ci_low, 3) + ", " + fixed(c.ci_high, 3) + "]",
+                 fixed(c.wilcoxon_p, 4)});
     }
   }
   table.print_markdown(out);

@@ -94,7 +94,8 @@ void comparison_table(std::ostream& out, const std::vector<StabilityRun>& runs, 
   for (const StabilityRun& r : runs) {
     if (paired.count(run_key(r))) by_key[run_key(r)][r.strategy] = &r;
   }
-  Table table({"strategy", "measure", "pairs", "mean difference", "95% CI", "Wilcoxon p", "fewer / more"});
+  Table table({"strategy", "measure", "pairs in problems", "mean difference", "95% CI (problems resampled)",
+               "Wilcoxon p (problem means)", "r_rb", "runs lower / higher"});
   const std::vector<std::pair<std::string, double (*)(const StabilityRun&)>> measures{
       {"distance", [](const StabilityRun& r) { return static_cast<double>(r.distance); }},
       {"makespan", [](const StabilityRun& r) { return r.makespan; }},
@@ -103,16 +104,18 @@ void comparison_table(std::ostream& out, const std::vector<StabilityRun>& runs, 
     if (s == reference) continue;
     for (const auto& [name, value] : measures) {
       std::vector<double> ref, other;
+      std::vector<std::string> problems;  // a problem's perturbations share its plan: one cluster
       for (const auto& [key, runs_of] : by_key) {
         if (!runs_of.count(reference) || !runs_of.count(s)) continue;
         ref.push_back(value(*runs_of.at(reference)));
         other.push_back(value(*runs_of.at(s)));
+        problems.push_back(runs_of.at(reference)->domain + "/" + std::to_string(runs_of.at(reference)->problem));
       }
       if (ref.empty()) continue;
-      const PairedComparison c = compare_paired(ref, other);
-      table.add({s, name, std::to_string(c.pairs), fixed(c.mean_difference, 3),
+      const PairedComparison c = compare_paired(ref, other, problems);
+      table.add({s, name, std::to_string(c.pairs) + " in " + std::to_string(c.clusters), fixed(c.mean_difference, 3),
                  "[" + fixed(c.ci_low, 3) + ", " + fixed(c.ci_high, 3) + "]", fixed(c.wilcoxon_p, 4),
-                 std::to_string(c.nonzero - c.positive) + " / " + std::to_string(c.positive)});
+                 fixed(c.rank_biserial, 2), std::to_string(c.nonzero - c.positive) + " / " + std::to_string(c.positive)});
     }
   }
   table.print_markdown(out);
