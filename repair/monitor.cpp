@@ -5,11 +5,11 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <map>
 #include <set>
 #include <utility>
 
 #include "pddl_parser/writer.h"
+#include "planner/diverse_plans.h"
 #include "planner/evaluation.h"
 #include "repair/timeline.h"
 
@@ -90,16 +90,15 @@ double next_observation(const Timeline& timeline, const std::vector<CommittedEnd
 }  // namespace
 
 std::size_t plan_distance(const ExecutingPlan& before, const ExecutingPlan& after, double from) {
-  std::map<std::string, int> count;
-  for (const ScheduledAction& s : before.steps) {
-    if (s.start + 1e-9 >= from) ++count[s.name];
-  }
-  for (const ScheduledAction& s : after.steps) {
-    if (s.start + 1e-9 >= from) --count[s.name];
-  }
-  std::size_t distance = 0;
-  for (const auto& [name, c] : count) distance += static_cast<std::size_t>(std::abs(c));
-  return distance;
+  const auto to_come = [from](const ExecutingPlan& plan) {
+    std::vector<std::string> names;
+    for (const ScheduledAction& s : plan.steps) {
+      if (s.start + 1e-9 >= from) names.push_back(s.name);
+    }
+    return names;
+  };
+  // The measure diverse planning keeps plans apart by (planner/diverse_plans.h).
+  return action_multiset_distance(to_come(before), to_come(after));
 }
 
 nlohmann::json ExecutionReport::json() const {
