@@ -8,7 +8,10 @@
 // - patch: keep the rest of the plan and swap the failed object for an
 //   available one of the same supertype; replan only when that is invalid;
 // - adapt: reuse as much of the old plan as possible (LPG-ADAPT's aim):
-//   search in a view of the task where new actions cost a penalty.
+//   search in a view of the task where new actions cost a penalty;
+// - switch: keep k diverse plans for the goal (planner/diverse_plans.h) and
+//   switch to the best one still executable from the observed state;
+//   replan only when none is.
 #pragma once
 
 #include <memory>
@@ -54,6 +57,13 @@ struct StrategyOptions {
   // Expansions each anytime weight may spend looking for a closer plan
   // (with_anytime, search_configuration.h); 0: until proven.
   std::uint64_t adapt_expansions = 0;
+  // `switch`: how many diverse plans it keeps per goal, how far apart
+  // (actions, planner/diverse_plans.h), and each one's search budget
+  // (expansions keep the set the same on a loaded machine; seconds cap it).
+  std::size_t switch_plans = 3;
+  std::size_t switch_min_distance = 2;
+  std::size_t switch_expansions = 20000;
+  double switch_budget = 1.0;  // seconds per plan
 };
 
 struct RepairRequest {
@@ -110,6 +120,10 @@ std::vector<std::string> strategy_names();
 // `excluded`: schemas whose actions the new plan may not use.
 RepairResult replan_from(const RepairRequest& request, const pddl::Domain& domain, const pddl::Problem& problem,
                          const PlannerOptions& options, const std::set<std::string>& excluded = {});
+// Validates a plan bound to a reformulated task (reformulation.h) from
+// that task's initial state -- the observed one, actions in progress
+// committed as timed literals -- at `now`, its steps at their times.
+ValidationResult validate_from_now(const ExecutingPlan& plan, double now);
 // Adds the objects perception recognises at the robot's location and among
 // the things the camera saw on the way (the request's sightings, each where
 // it was seen), of types the domain knows, to the problem, and what perception saw of them -- (be o
