@@ -1,5 +1,5 @@
 // alplan bench repair --homes N --failures-per-run K --seed S
-//                     --strategies replan,substitute,suggest,patch --out DIR
+//                     --strategies replan,substitute,suggest,patch,adapt,switch --out DIR
 //                     [--runs-per-home R] [--external] [--events KINDS] [--observe full|iot|camera] [--rooms ...]
 // Compares repair strategies on the same failures in generated homes: a
 // paired study per failure kind (benchmarks/harness/repair_study.h).
@@ -30,7 +30,7 @@ namespace {
 
 struct BenchRepairOptions {
   bench::RepairBenchOptions bench;
-  std::string strategies = "replan,substitute,suggest,patch,adapt";
+  std::string strategies = "replan,substitute,suggest,patch,adapt,switch";
   std::string events = "arrival,iot,sibling,moves,emotion,overrun,two";
   std::string observe = "iot";
   std::string recognizer = "cnn";
@@ -152,7 +152,7 @@ void add_bench_repair_command(CLI::App* bench, int& exit_code) {
   r->add_option("--runs-per-home", o->bench.runs_per_home, "Executions per home, each with its own failures")
       ->check(CLI::PositiveNumber);
   r->add_option("--seed", o->bench.seed, "First home's seed; the others follow");
-  r->add_option("--strategies", o->strategies, "Comma-separated: replan, substitute, suggest, patch, adapt");
+  r->add_option("--strategies", o->strategies, "Comma-separated: replan, substitute, suggest, patch, adapt, switch");
   r->add_option("--events", o->events,
                 "Failures to draw: 'all' or a comma-separated list of arrival, iot, sibling, moves, emotion, overrun, "
                 "two (the study's, the default), unavailable, appears");
@@ -179,6 +179,11 @@ void add_bench_repair_command(CLI::App* bench, int& exit_code) {
   r->add_option("--adapt-min-weight", o->bench.strategy_options.adapt_min_weight,
                 "adapt: the lowest weight of its anytime search (5, 3, 2, 1.5, 1 down to this)")
       ->check(CLI::PositiveNumber);
+  r->add_option("--switch-plans", o->bench.strategy_options.switch_plans,
+                "switch: diverse plans it keeps per goal")
+      ->check(CLI::PositiveNumber);
+  r->add_option("--switch-min-distance", o->bench.strategy_options.switch_min_distance,
+                "switch: the fewest actions (added + removed) by which any two of them differ");
   r->add_flag("--external", o->bench.external, "Also replan through `alplan plan` in a child process (the paper's way)");
   r->add_option("--rooms", o->bench.home.rooms, "Rooms per home");
   r->add_option("--seniors", o->bench.home.seniors, "Seniors per home");

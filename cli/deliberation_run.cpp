@@ -62,7 +62,7 @@ void add_deliberation_options(CLI::App& cmd, DeliberationSettings& s) {
       ->check(CLI::Range(0.0, 3600.0));
   cmd.add_option("--camera", s.camera, "Folder with a subfolder of images per location: what the robot's camera sees");
   cmd.add_option("--unavailable", s.unavailable, "OBJECT@TIME: the object becomes unavailable then (repeatable)");
-  cmd.add_option("--strategy", s.strategy, "Repair strategy: replan, substitute, suggest, patch, adapt");
+  cmd.add_option("--strategy", s.strategy, "Repair strategy: replan, substitute, suggest, patch, adapt, switch");
 }
 
 namespace {

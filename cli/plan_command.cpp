@@ -1,5 +1,6 @@
 // alplan plan DOMAIN PROBLEM [--time-limit S] [--memory-limit MiB] [--anytime]
 //   [--search ehc|gbfs|wastar] [--heuristic trpg|trpg-nohelpful] [--order metric|steps] [--out PLAN] [--json]
+//   [--diverse K [--min-distance D]]
 // Exit 0 with a plan, 10 proven unsolvable, 11 limits reached, 12 search
 // exhausted without proof, 2 input error, 70 internal error (an invalid plan).
 #include <CLI/CLI.hpp>
@@ -20,6 +21,7 @@
 #include "cli/commands.h"
 #include "cli/task_files.h"
 #include "pddl_parser/writer.h"
+#include "planner/diverse_plans.h"
 #include "planner/grounder.h"
 #include "planner/planner.h"
 
@@ -47,6 +49,10 @@ struct PlanOptions {
   std::string out;
   bool json = false;
   bool quiet = false;
+  // --diverse K: K plans pairwise at least min_distance ground actions apart
+  // (planner/diverse_plans.h) instead of one; 0: one plan, as always.
+  std::size_t diverse = 0;
+  std::size_t min_distance = 2;
 };
 
 // Times are the printed plan's (three decimals on the 0.001 grid), as
@@ -146,6 +152,57 @@ SearchConfiguration search_configuration(const PlanOptions& options) {
   return configuration_from(s);
 }
 
+// --diverse: the plans, each headed "; plan i of K", then their pairwise
+// distances; fewer than K are printed with a line saying so. Exit codes as
+// for one plan: 0 with at least one, else the first search's.
+int plan_diverse(const std::shared_ptr<const GroundTask>& task, const PlannerOptions& planner,
+                 const PlanOptions& options) {
+  DiversePlanOptions diverse;
+  diverse.k = options.diverse;
+  diverse.min_distance = options.min_distance;
+  diverse.planner = planner;
+  diverse.time_limit = planner.time_limit;
+  const DiversePlans found = find_diverse_plans(task, diverse);
+  const std::size_t n = found.plans.size();
+  std::vector<std::vector<std::size_t>> distances(n, std::vector<std::size_t>(n, 0));
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < n; ++j) distances[i][j] = plan_action_distance(found.plans[i].plan, found.plans[j].plan);
+  }
+  if (n > 0 && !options.out.empty()) std::ofstream(options.out) << found.plans.front().text;
+  const std::string shortfall =
+      n == options.diverse ? ""
+                           : "found " + std::to_string(n) + " of " + std::to_string(options.diverse) + " plans at least " +
+                                 std::to_string(options.min_distance) + " actions apart " +
+                                 (found.exhausted ? "(no more by removing found plans' actions)"
+                                                  : "(the budget ran out)");
+  if (options.json) {
+    nlohmann::json plans = nlohmann::json::array();
+    for (std::size_t i = 0; i < n; ++i) plans.push_back(plan_json(found.plans[i], i + 1));
+    const nlohmann::json j = {{"status", status_name(n > 0 ? PlannerResult::Status::Solved : found.first_status)},
+                              {"message", n > 0 ? shortfall : found.message}, {"requested", options.diverse},
+                              {"min_distance", options.min_distance}, {"plans", plans}, {"distances", distances},
+                              {"planner_calls", found.planner_calls}, {"seconds", found.seconds}};
+    std::cout << j.dump(2) << "\n";
+  } else {
+    for (std::size_t i = 0; i < n; ++i) {
+      const ValidationResult& v = found.plans[i].validation;
+      std::cout << "; plan " << i + 1 << " of " << options.diverse << ": makespan " << readable(v.makespan)
+                << ", value " << readable(v.value) << "\n" << found.plans[i].text;
+    }
+    if (n > 0) std::cout << "; distances (ground actions added + removed):\n";
+    for (std::size_t i = 0; i < n; ++i) {
+      std::cout << ";";
+      for (std::size_t d : distances[i]) std::cout << " " << d;
+      std::cout << "\n";
+    }
+    if (!shortfall.empty()) std::cout << "; " << shortfall << "\n";
+    if (n == 0) std::cout << "; " << found.message << "\n";
+    std::cout << "; status: " << status_name(n > 0 ? PlannerResult::Status::Solved : found.first_status) << "; "
+              << found.planner_calls << " searches, " << readable(found.seconds) << " s\n";
+  }
+  return n > 0 ? kExitOk : exit_code(found.first_status);
+}
+
 // Loads, grounds and plans; `phase` names the step under way, so that a
 // limit reached anywhere can say where. `task` receives the grounded task,
 // for the caller to decide when it is freed.
@@ -189,6 +246,7 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
   if (getrlimit(RLIMIT_AS, &address_space) == 0 && address_space.rlim_cur != RLIM_INFINITY) {
     planner_options.address_space_limit = static_cast<std::size_t>(0.9 * static_cast<double>(address_space.rlim_cur));
   }
+  if (options.diverse > 0) return plan_diverse(task, planner_options, options);
   auto on_plan = [&](const FoundPlan& p) {
     if (options.json) return;
     std::cout << "; plan found after " << readable(p.seconds) << " s by " << p.engine << ", makespan "
@@ -333,6 +391,13 @@ void add_plan_command(CLI::App& app, int& exit_code) {
                           "consumption needs"));
   cmd->add_option("--out", options->out, "Write the best plan to this file");
   cmd->add_flag("--json", options->json, "Print the result as JSON");
+  CLI::Option* diverse = cmd->add_option("--diverse", options->diverse,
+                  "Print up to K plans pairwise at least --min-distance ground actions apart, then their distances "
+                  "(planner/diverse_plans.h)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--min-distance", options->min_distance,
+                  "With --diverse: the fewest ground actions (added + removed) any two plans differ by (default 2)")
+      ->needs(diverse);
   cmd->add_flag("-q,--quiet", options->quiet, "Do not print warnings about the input");
   cmd->callback([options, shorthand_options, &exit_code] {
     for (const CLI::Option* o : *shorthand_options) {

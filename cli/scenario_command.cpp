@@ -104,7 +104,7 @@ void add_scenario_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<ScenarioCommandOptions>();
   CLI::App* cmd = app.add_subcommand("scenario", "Run one of the paper's scenarios end to end");
   cmd->add_option("SCENARIO", options->name, "paper-1, paper-2 or paper-3")->required();
-  cmd->add_option("--strategy", options->strategy, "Repair strategy: replan, substitute, suggest, patch, adapt");
+  cmd->add_option("--strategy", options->strategy, "Repair strategy: replan, substitute, suggest, patch, adapt, switch");
   cmd->add_option("--domains-dir", options->dir, "Folder with domain.pddl, types.ttl and the scenario problems");
   cmd->add_option("--epsilon", options->epsilon, "Separation of dependent happenings (the paper's plans: 0.002)")
       ->check(CLI::PositiveNumber);

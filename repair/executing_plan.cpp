@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "planner/diverse_plans.h"
 #include "planner/validator.h"
 
 namespace alplan::repair {
@@ -110,12 +111,8 @@ std::vector<std::string> step_names_from(const ExecutingPlan& plan, double from)
 }
 
 std::size_t plan_distance(const std::vector<std::string>& a, const std::vector<std::string>& b) {
-  std::vector<std::string> x = a, y = b;
-  std::sort(x.begin(), x.end());
-  std::sort(y.begin(), y.end());
-  std::vector<std::string> common;
-  std::set_intersection(x.begin(), x.end(), y.begin(), y.end(), std::back_inserter(common));
-  return x.size() + y.size() - 2 * common.size();
+  // The measure diverse planning keeps plans apart by: one definition.
+  return action_multiset_distance(a, b);
 }
 
 std::string plan_text(const ExecutingPlan& plan) {

@@ -5,11 +5,11 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <map>
 #include <set>
 #include <utility>
 
 #include "pddl_parser/writer.h"
+#include "planner/diverse_plans.h"
 #include "planner/evaluation.h"
 #include "repair/timeline.h"
 

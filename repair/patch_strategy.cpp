@@ -8,7 +8,6 @@
 #include <set>
 #include <sstream>
 
-#include "planner/happening_executor.h"
 #include "repair/reformulation.h"
 #include "repair/repair_strategy.h"
 
@@ -33,22 +32,6 @@ std::optional<std::string> parent_type(const pddl::Domain& domain, const TypeOnt
   }
   if (ontology) return ontology->parent(type);
   return std::nullopt;
-}
-
-// Whether the plan, as it stands, is valid from the task's initial state at
-// `now` (the reformulated problem's initial state is the observed one).
-bool valid_from_now(const ExecutingPlan& plan, double now) {
-  const GroundTask& task = *plan.task;
-  std::vector<ScheduledStep> steps;
-  for (std::size_t i = 0; i < plan.steps.size(); ++i) {
-    const ScheduledAction& a = plan.steps[i];
-    steps.push_back({a.action, i, 0, a.start, a.duration, a.name, false});
-  }
-  ExecutionStart start;
-  start.state = ExplicitState::of(task.initial_facts, task.initial_values);
-  start.now = now;
-  HappeningExecutor executor(task, ValidatorOptions{plan.epsilon, false});
-  return executor.run(steps, steps.size(), start).valid;
 }
 
 class PatchStrategy : public RepairStrategy {
@@ -147,7 +130,7 @@ class PatchStrategy : public RepairStrategy {
     }
     try {
       ExecutingPlan bound = bind_plan(task, plan, options_.planner.epsilon);
-      if (valid_from_now(bound, request.now)) return bound;
+      if (validate_from_now(bound, request.now).valid) return bound;
     } catch (const std::invalid_argument&) {
       // The renamed step is not an action of the task: the object cannot do it.
     }

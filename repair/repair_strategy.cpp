@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "planner/happening_executor.h"
 #include "repair/reformulation.h"
 
 namespace alplan::repair {
@@ -12,6 +13,7 @@ namespace alplan::repair {
 std::unique_ptr<RepairStrategy> make_patch_strategy(const StrategyOptions& options);
 std::unique_ptr<RepairStrategy> make_adapt_strategy(const StrategyOptions& options);
 std::unique_ptr<RepairStrategy> make_stable_strategy(const StrategyOptions& options);
+std::unique_ptr<RepairStrategy> make_switch_strategy(const StrategyOptions& options);
 
 namespace {
 
@@ -137,6 +139,20 @@ RepairResult replan_from(const RepairRequest& request, const pddl::Domain& domai
   return result;
 }
 
+ValidationResult validate_from_now(const ExecutingPlan& plan, double now) {
+  const GroundTask& task = *plan.task;
+  std::vector<ScheduledStep> steps;
+  for (std::size_t i = 0; i < plan.steps.size(); ++i) {
+    const ScheduledAction& a = plan.steps[i];
+    steps.push_back({a.action, i, 0, a.start, a.duration, a.name, false});
+  }
+  ExecutionStart start;
+  start.state = ExplicitState::of(task.initial_facts, task.initial_values);
+  start.now = now;
+  HappeningExecutor executor(task, ValidatorOptions{plan.epsilon, false});
+  return executor.run(steps, steps.size(), start);
+}
+
 std::vector<RecognizedObject> integrate_recognized(RepairRequest& request, pddl::Problem& problem) {
   std::vector<RecognizedObject> integrated;
   if (!request.recognizer) return integrated;
@@ -179,7 +195,9 @@ std::string describe_remedy(const ExecutingPlan& plan, double from) {
          " and involves " + objects;
 }
 
-std::vector<std::string> strategy_names() { return {"replan", "substitute", "suggest", "patch", "adapt", "stable"}; }
+std::vector<std::string> strategy_names() {
+  return {"replan", "substitute", "suggest", "patch", "adapt", "stable", "switch"};
+}
 
 std::unique_ptr<RepairStrategy> make_strategy(const std::string& name, const StrategyOptions& options) {
   if (name == "replan") return std::make_unique<ReplanStrategy>(options);
@@ -188,6 +206,7 @@ std::unique_ptr<RepairStrategy> make_strategy(const std::string& name, const Str
   if (name == "patch") return make_patch_strategy(options);
   if (name == "adapt") return make_adapt_strategy(options);
   if (name == "stable") return make_stable_strategy(options);
+  if (name == "switch") return make_switch_strategy(options);
   std::string known;
   for (const std::string& n : strategy_names()) known += (known.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown repair strategy '" + name + "' (known: " + known + ")");

@@ -12,6 +12,9 @@
 // - stable: the plan at minimum distance from the old plan's remaining
 //   steps (Saetti & Scala's compilation to cost-optimal planning,
 //   stable_compilation.h), proven minimal when the search ends in budget.
+// - switch: keep k diverse plans for the goal (planner/diverse_plans.h) and
+//   switch to the best one still executable from the observed state;
+//   replan only when none is.
 #pragma once
 
 #include <memory>
@@ -63,6 +66,13 @@ struct StrategyOptions {
   // does not finish.
   double stable_budget = 5.0;
   double stable_proof_share = 0.8;
+  // `switch`: how many diverse plans it keeps per goal, how far apart
+  // (actions, planner/diverse_plans.h), and each one's search budget
+  // (expansions keep the set the same on a loaded machine; seconds cap it).
+  std::size_t switch_plans = 3;
+  std::size_t switch_min_distance = 2;
+  std::size_t switch_expansions = 20000;
+  double switch_budget = 1.0;  // seconds per plan
 };
 
 struct RepairRequest {
@@ -119,6 +129,10 @@ std::vector<std::string> strategy_names();
 // `excluded`: schemas whose actions the new plan may not use.
 RepairResult replan_from(const RepairRequest& request, const pddl::Domain& domain, const pddl::Problem& problem,
                          const PlannerOptions& options, const std::set<std::string>& excluded = {});
+// Validates a plan bound to a reformulated task (reformulation.h) from
+// that task's initial state -- the observed one, actions in progress
+// committed as timed literals -- at `now`, its steps at their times.
+ValidationResult validate_from_now(const ExecutingPlan& plan, double now);
 // Adds the objects perception recognises at the robot's location and among
 // the things the camera saw on the way (the request's sightings, each where
 // it was seen), of types the domain knows, to the problem, and what perception saw of them -- (be o

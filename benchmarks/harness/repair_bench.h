@@ -35,7 +35,7 @@ struct RepairBenchOptions {
   repair::RandomEventOptions events;
   int runs_per_home = 5;
   std::uint64_t seed = 1;
-  std::vector<std::string> strategies{"replan", "substitute", "suggest", "patch", "adapt"};
+  std::vector<std::string> strategies{"replan", "substitute", "suggest", "patch", "adapt", "switch"};
   domains::HomeOptions home;  // its seed is replaced per home
   std::string assisted_living_dir;
   std::string out_dir;
