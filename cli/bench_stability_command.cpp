@@ -4,6 +4,7 @@
 // (ICAPS 2006): benchmarks/harness/stability_bench.h.
 #include <CLI/CLI.hpp>
 
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -23,6 +24,7 @@ struct BenchStabilityOptions {
   std::string kinds = "fact,object,goal";
   std::string strategies = "replan,adapt,stable,patch";
   std::string out;
+  std::string summarize;  // a run's folder: its summary again, nothing run
   double repair_seconds = 10.0;
   double min_weight = 3.0;
   std::uint64_t expansions = 1000;
@@ -80,13 +82,33 @@ std::string resolve(BenchStabilityOptions& o) {
       return e.what();
     }
   }
+  if (o.bench.ipc_dir.empty()) return "--ipc is required";
   if (o.out.empty()) return "--out is required";
   o.bench.strategy.planner.time_limit = o.repair_seconds;
   o.bench.strategy.planner.search = with_anytime(o.bench.strategy.planner.search, o.min_weight, o.expansions);
   return "";
 }
 
+// summary.md again from a run's runs.json: the tables re-derived from the
+// committed runs, with this build's statistics.
+int summarize(const BenchStabilityOptions& o) {
+  try {
+    bench::StabilityBenchOptions options = o.bench;
+    options.strategies.clear();
+    const bench::StabilityBenchResult result = bench::read_stability_runs(o.summarize + "/runs.json", options.strategies);
+    if (options.strategies.empty()) throw std::runtime_error(o.summarize + "/runs.json: no runs");
+    const std::string summary = bench::stability_summary(result, options);
+    std::ofstream(o.summarize + "/summary.md") << summary;
+    std::cout << summary << "wrote " << o.summarize << "/summary.md\n";
+    return 0;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitInputError;
+  }
+}
+
 int run_stability(BenchStabilityOptions o) {
+  if (!o.summarize.empty()) return summarize(o);
   const std::string error = resolve(o);
   if (!error.empty()) {
     std::cerr << "error: " << error << "\n";
@@ -110,7 +132,7 @@ void add_bench_stability_command(CLI::App* bench, int& exit_code) {
   auto o = std::make_shared<BenchStabilityOptions>();
   CLI::App* s = bench->add_subcommand(
       "stability", "Replanning against plan repair on IPC temporal domains, perturbed while the plan runs");
-  s->add_option("--ipc", o->bench.ipc_dir, "The IPC folder (shared/benchmarks/ipc)")->required();
+  s->add_option("--ipc", o->bench.ipc_dir, "The IPC folder (shared/benchmarks/ipc)");
   s->add_option("--domains", o->domains,
                 "Comma-separated: driverlog, rovers, depots, satellite, zenotravel (IPC 2002 temporal), or folders "
                 "under --ipc");
@@ -127,6 +149,7 @@ void add_bench_stability_command(CLI::App* bench, int& exit_code) {
   s->add_option("--adapt-budget", o->bench.strategy.adapt_budget, "adapt: seconds of anytime search")
       ->check(CLI::PositiveNumber);
   s->add_option("--out", o->out, "Folder for runs.csv, runs.json, summary.md");
+  s->add_option("--summarize", o->summarize, "Write a run folder's summary.md again from its runs.json; runs nothing");
   s->callback([o, &exit_code] { exit_code = run_stability(*o); });
 }
 

@@ -59,7 +59,8 @@ Measures measure(const std::map<RunKey, const StudyRun*>& runs, const std::strin
   return m;
 }
 
-void models_table(std::ostream& out, const std::map<std::string, std::map<RunKey, const StudyRun*>>& by_model,
+void models_table(std::ostream& out,
+                  const std::vector<std::pair<std::string, std::map<RunKey, const StudyRun*>>>& by_model,
                   const std::vector<std::string>& strategies) {
   std::vector<std::string> header{"strategy"};
   for (const auto& [model, runs] : by_model) {
@@ -121,14 +122,17 @@ std::string observation_tables(const std::map<std::string, std::vector<StudyRun>
   out << "# What the sensors change\n\nThe same runs under each observation model (comforted runs / runs; delay "
          "and cost: means over comforted runs). Value of observation: full minus iot, run by run.\n";
   for (const auto& [kind, how] : kind_groups()) {
-    std::map<std::string, std::map<RunKey, const StudyRun*>> indexed;
-    for (const auto& [model, runs] : by_model) indexed[model] = index(runs, kind);
+    // Most seen first; a map would order the models by name.
+    std::vector<std::pair<std::string, std::map<RunKey, const StudyRun*>>> indexed;
+    for (const char* model : {"full", "iot", "camera"}) {
+      if (by_model.count(model)) indexed.emplace_back(model, index(by_model.at(model), kind));
+    }
     if (std::all_of(indexed.begin(), indexed.end(), [](const auto& m) { return m.second.empty(); })) continue;
     out << "\n## " << kind << " (" << how << ")\n\n";
     models_table(out, indexed, strategies);
-    if (indexed.count("full") && indexed.count("iot")) {
+    if (by_model.count("full") && by_model.count("iot")) {
       out << "\nfull minus iot:\n\n";
-      value_table(out, indexed.at("full"), indexed.at("iot"), strategies, bootstrap);
+      value_table(out, index(by_model.at("full"), kind), index(by_model.at("iot"), kind), strategies, bootstrap);
     }
   }
   return out.str();

@@ -35,6 +35,10 @@ struct RunRecord {
   int run = 0;
   bool reached = false;
   std::size_t repairs = 0, stability = 0;
+  // Repairs where the strategy could not do its own and did another's
+  // (switch with no alternative executable replans): how often a strategy
+  // was itself.
+  std::size_t fallbacks = 0;
   int planner_calls = 0;
   std::vector<double> latencies_ms;
   std::vector<bool> reused_grounding;  // per repair
@@ -99,6 +103,7 @@ RunRecord execute(const std::string& home_name, int run, const repair::Mission& 
     r.reused_grounding.push_back(rep.reused_grounding);
     r.stability += rep.plan_distance;
     r.planner_calls += rep.planner_calls;
+    r.fallbacks += rep.fallback.empty() ? 0 : 1;
   }
   double planned_end = 0.0;
   for (const repair::ScheduledAction& s : plan.steps) planned_end = std::max(planned_end, s.end());
@@ -146,7 +151,7 @@ nlohmann::json to_json(const RunRecord& r) {
   return {{"home", r.home}, {"run", r.run}, {"kind", r.kind}, {"strategy", r.strategy}, {"comforted", r.reached},
           {"repairs", r.repairs}, {"latency_ms", r.latencies_ms}, {"perception_ms", r.perception_ms},
           {"reused_grounding", r.reused_grounding}, {"preparation_ms", r.preparation_ms},
-          {"stability", r.stability}, {"planner_calls", r.planner_calls},
+          {"stability", r.stability}, {"fallbacks", r.fallbacks}, {"planner_calls", r.planner_calls},
           {"delay", r.delay ? nlohmann::json(*r.delay) : nlohmann::json()}, {"makespan", r.makespan},
           {"cost", r.cost}, {"sightings", r.sightings}, {"failures", r.failures}, {"outcome", r.outcome}};
 }
@@ -165,6 +170,7 @@ RunRecord record_from_json(const nlohmann::json& j) {
   r.preparation_ms = j.at("preparation_ms");
   r.stability = j.at("stability");
   r.planner_calls = j.at("planner_calls");
+  r.fallbacks = j.value("fallbacks", std::size_t{0});  // runs written before it was counted have none
   if (!j.at("delay").is_null()) r.delay = j.at("delay").get<double>();
   r.makespan = j.at("makespan");
   r.cost = j.at("cost");

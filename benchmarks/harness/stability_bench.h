@@ -12,7 +12,7 @@
 // distance to the old plan's remaining steps (Fox et al.'s measure:
 // actions added plus actions removed, multisets of ground actions), whether
 // the new plan starts with the old one's next step, the makespan and the
-// time. Writes runs.csv, summary.md and summary.json.
+// time. Writes runs.csv, runs.json and summary.md.
 #pragma once
 
 #include <cstdint>
@@ -73,6 +73,9 @@ StabilityBenchResult run_stability_bench(const StabilityBenchOptions& options);
 // runs.csv, summary.md, summary.json in `out_dir` (created).
 void write_stability_results(const StabilityBenchResult& result, const StabilityBenchOptions& options,
                              const std::string& out_dir);
+// The runs a bench wrote (its runs.json), to summarise again; `strategies`
+// gets their names in the order they ran.
+StabilityBenchResult read_stability_runs(const std::string& runs_json, std::vector<std::string>& strategies);
 // The tables of summary.md: per domain and strategy, then against replan.
 std::string stability_summary(const StabilityBenchResult& result, const StabilityBenchOptions& options);
 

@@ -94,8 +94,11 @@ void comparison_table(std::ostream& out, const std::vector<StabilityRun>& runs, 
   for (const StabilityRun& r : runs) {
     if (paired.count(run_key(r))) by_key[run_key(r)][r.strategy] = &r;
   }
-  Table table({"strategy", "measure", "pairs in problems", "mean difference", "95% CI (problems resampled)",
-               "Wilcoxon p (problem means)", "r_rb", "runs lower / higher"});
+  struct Row {
+    std::string strategy, measure;
+    PairedComparison c;
+  };
+  std::vector<Row> rows;
   const std::vector<std::pair<std::string, double (*)(const StabilityRun&)>> measures{
       {"distance", [](const StabilityRun& r) { return static_cast<double>(r.distance); }},
       {"makespan", [](const StabilityRun& r) { return r.makespan; }},
@@ -111,12 +114,21 @@ void comparison_table(std::ostream& out, const std::vector<StabilityRun>& runs, 
         other.push_back(value(*runs_of.at(s)));
         problems.push_back(runs_of.at(reference)->domain + "/" + std::to_string(runs_of.at(reference)->problem));
       }
-      if (ref.empty()) continue;
-      const PairedComparison c = compare_paired(ref, other, problems);
-      table.add({s, name, std::to_string(c.pairs) + " in " + std::to_string(c.clusters), fixed(c.mean_difference, 3),
-                 "[" + fixed(c.ci_low, 3) + ", " + fixed(c.ci_high, 3) + "]", fixed(c.wilcoxon_p, 4),
-                 fixed(c.rank_biserial, 2), std::to_string(c.nonzero - c.positive) + " / " + std::to_string(c.positive)});
+      if (!ref.empty()) rows.push_back({s, name, compare_paired(ref, other, problems)});
     }
+  }
+  // One family: every strategy on every measure (Holm 1979).
+  std::vector<double> p;
+  for (const Row& r : rows) p.push_back(r.c.wilcoxon_p);
+  const std::vector<double> adjusted = holm_adjust(p);
+  Table table({"strategy", "measure", "pairs in problems", "mean difference", "95% CI (problems resampled)",
+               "Wilcoxon p (problem means)", "Holm p", "r_rb", "runs lower / higher"});
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const PairedComparison& c = rows[i].c;
+    table.add({rows[i].strategy, rows[i].measure, std::to_string(c.pairs) + " in " + std::to_string(c.clusters),
+               fixed(c.mean_difference, 3), "[" + fixed(c.ci_low, 3) + ", " + fixed(c.ci_high, 3) + "]",
+               fixed(c.wilcoxon_p, 4), fixed(adjusted[i], 4), fixed(c.rank_biserial, 2),
+               std::to_string(c.nonzero - c.positive) + " / " + std::to_string(c.positive)});
   }
   table.print_markdown(out);
 }
@@ -139,7 +151,48 @@ nlohmann::json run_json(const StabilityRun& r) {
           {"planner_calls", r.planner_calls}, {"fallback", r.fallback}, {"how", r.how}};
 }
 
+StabilityRun run_from_json(const nlohmann::json& j) {
+  StabilityRun r;
+  r.domain = j.at("domain");
+  r.problem = j.at("problem");
+  r.perturbation = j.at("perturbation");
+  r.kind = j.at("kind");
+  r.description = j.at("description");
+  r.cut = j.at("cut");
+  r.old_remaining = j.at("old_remaining");
+  r.old_makespan = j.at("old_makespan");
+  r.strategy = j.at("strategy");
+  r.repaired = j.at("repaired");
+  r.valid = j.at("valid");
+  r.distance = j.at("distance");
+  r.added = j.at("added");
+  r.removed = j.at("removed");
+  r.same_first = j.at("same_first");
+  r.new_steps = j.at("new_steps");
+  r.makespan = j.at("makespan");
+  r.seconds = j.at("seconds");
+  r.planner_calls = j.at("planner_calls");
+  r.fallback = j.at("fallback");
+  r.how = j.at("how");
+  return r;
+}
+
 }  // namespace
+
+StabilityBenchResult read_stability_runs(const std::string& runs_json, std::vector<std::string>& strategies) {
+  std::ifstream in(runs_json);
+  if (!in) throw std::runtime_error(runs_json + ": cannot be read");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  StabilityBenchResult result;
+  for (const nlohmann::json& r : j.at("runs")) {
+    result.runs.push_back(run_from_json(r));
+    if (std::find(strategies.begin(), strategies.end(), result.runs.back().strategy) == strategies.end()) {
+      strategies.push_back(result.runs.back().strategy);
+    }
+  }
+  result.skipped = j.at("skipped").get<std::vector<std::string>>();
+  return result;
+}
 
 std::string stability_summary(const StabilityBenchResult& result, const StabilityBenchOptions& options) {
   std::ostringstream out;

@@ -1,0 +1,173 @@
+#!/usr/bin/env python3
+"""Re-derives the repair figures of benchmarks/README.md from the committed
+runs (issue 32): the README's figures must match their files.
+
+Each block of figures in the README stands between
+    <!-- figures:NAME -->  and  <!-- /figures:NAME -->
+and is exactly what this script prints for NAME, computed from the runs.json
+files under benchmarks/results/ alone (not from summary.md, which the same
+program wrote with the numbers). Usage:
+
+    benchmarks/readme_figures.py             print every block
+    benchmarks/readme_figures.py NAME        print one
+    benchmarks/readme_figures.py --check     exit 1 naming each block of the
+                                             README that differs (a test runs it)
+    benchmarks/readme_figures.py --write     rewrite the README's blocks
+"""
+import json
+import os
+import re
+import statistics
+import sys
+from collections import Counter, defaultdict
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+RESULTS = os.path.join(HERE, "results")
+README = os.path.join(HERE, "README.md")
+STUDY = "repair-study-40-homes-2026-11-28"
+STABILITY = ["stability-ipc2002-1-5-2026-11-28", "stability-ipc2002-6-10-2026-11-28"]
+MODELS = ["full", "iot", "camera"]
+
+
+def load(path):
+    with open(os.path.join(RESULTS, path)) as f:
+        return json.load(f)
+
+
+def table(header, rows):
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    lines += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
+    return "\n".join(lines)
+
+
+def strategies_of(runs):
+    seen = []
+    for r in runs:
+        if r["strategy"] not in seen:
+            seen.append(r["strategy"])
+    return seen
+
+
+def study_mix():
+    """The failure mix and what each strategy comforted, per model."""
+    by_model = {m: load(f"{STUDY}/{m}/runs.json") for m in MODELS}
+    iot = by_model["iot"]
+    strategies = strategies_of(iot)
+    mix = Counter(r["kind"] for r in iot if r["strategy"] == strategies[0])
+    out = [f"Runs per strategy: {sum(mix.values())} in {len({r['home'] for r in iot})} homes. Failure kinds drawn: "
+           + ", ".join(f"{n} {k}" for k, n in sorted(mix.items(), key=lambda kv: (-kv[1], kv[0]))) + ".", ""]
+    rows = []
+    for s in strategies:
+        row = [s]
+        for m in MODELS:
+            runs = [r for r in by_model[m] if r["strategy"] == s]
+            row.append(f"{sum(r['comforted'] for r in runs)}/{len(runs)}")
+        latencies = [x for r in iot if r["strategy"] == s for x in r["latency_ms"]]
+        row.append(f"{statistics.median(latencies):.1f}" if latencies else "-")
+        rows.append(row)
+    out.append(table(["strategy"] + [f"comforted, {m}" for m in MODELS] + ["median repair ms (iot)"], rows))
+    return "\n".join(out)
+
+
+def study_switch():
+    """How often switch took one of its alternatives instead of replanning."""
+    runs = [r for r in load(f"{STUDY}/iot/runs.json") if r["strategy"] == "switch"]
+    rows = []
+    for kind in sorted({r["kind"] for r in runs}):
+        mine = [r for r in runs if r["kind"] == kind]
+        repairs = sum(r["repairs"] for r in mine)
+        fallbacks = sum(r.get("fallbacks", 0) for r in mine)
+        rows.append([kind, repairs, repairs - fallbacks, fallbacks,
+                     f"{statistics.mean(r['planner_calls'] for r in mine):.2f}"])
+    return table(["failure kind", "repairs", "switched to an alternative", "replanned", "planner calls a run"], rows)
+
+
+def paired_set(runs, strategies):
+    valid = Counter()
+    for r in runs:
+        valid[(r["domain"], r["problem"], r["kind"], r["perturbation"])] += 1 if r["valid"] else 0
+    return {k for k, n in valid.items() if n == len(strategies)}
+
+
+def stability_block(folder):
+    data = load(f"{folder}/runs.json")
+    runs = data["runs"]
+    strategies = strategies_of(runs)
+    paired = paired_set(runs, strategies)
+    rows = []
+    for s in strategies:
+        mine = [r for r in runs if r["strategy"] == s]
+        on_paired = [r for r in mine if (r["domain"], r["problem"], r["kind"], r["perturbation"]) in paired]
+        n = len(on_paired)
+        proven = sum("proven minimal by" in r.get("how", "") for r in mine)
+        rows.append([
+            s, f"{sum(r['valid'] for r in mine)}/{len(mine)}",
+            f"{statistics.mean(r['distance'] for r in on_paired):.2f}" if n else "-",
+            f"{100.0 * sum(r['same_first'] for r in on_paired) / n:.1f}%" if n else "-",
+            f"{statistics.mean(r['makespan'] for r in on_paired):.1f}" if n else "-",
+            f"{statistics.median(r['seconds'] for r in mine):.3f}",
+            str(proven) if s == "stable" else "-"])
+    kinds = Counter(r["kind"] for r in runs if r["strategy"] == strategies[0])
+    head = (f"{len(runs) // len(strategies)} perturbations ("
+            + ", ".join(f"{n} {k}" for k, n in sorted(kinds.items())) + f"), {len(paired)} repaired validly by every "
+            f"strategy, {len(data['skipped'])} draws skipped.")
+    return head + "\n\n" + table(["strategy", "valid", "distance (paired)", "same first step", "makespan (paired)",
+                                  "median s", "proven minimal"], rows)
+
+
+def stability_by_domain(folder):
+    runs = load(f"{folder}/runs.json")["runs"]
+    strategies = strategies_of(runs)
+    paired = paired_set(runs, strategies)
+    distance = defaultdict(list)
+    for r in runs:
+        if (r["domain"], r["problem"], r["kind"], r["perturbation"]) in paired:
+            distance[(r["domain"].split("-")[0], r["strategy"])].append(r["distance"])
+    domains = sorted({d for d, _ in distance})
+    rows = [[d] + [f"{statistics.mean(distance[(d, s)]):.2f}" if distance[(d, s)] else "-" for s in strategies]
+            for d in domains]
+    return table(["mean distance"] + strategies, rows)
+
+
+BLOCKS = {
+    "study-mix": study_mix,
+    "study-switch": study_switch,
+    "stability-1-5": lambda: stability_block(STABILITY[0]),
+    "stability-6-10": lambda: stability_block(STABILITY[1]),
+    "stability-domains-1-5": lambda: stability_by_domain(STABILITY[0]),
+}
+
+
+def readme_blocks(text):
+    return {m.group(1): m.group(2).strip("\n")
+            for m in re.finditer(r"<!-- figures:([\w-]+) -->\n(.*?)<!-- /figures:\1 -->", text, re.S)}
+
+
+def main(argv):
+    if len(argv) > 1 and argv[1] in ("--check", "--write"):
+        with open(README) as f:
+            text = f.read()
+        found = readme_blocks(text)
+        if argv[1] == "--write":
+            for name, make in BLOCKS.items():
+                text = re.sub(rf"(<!-- figures:{name} -->\n).*?(<!-- /figures:{name} -->)",
+                              lambda m: m.group(1) + make() + "\n" + m.group(2), text, flags=re.S)
+            with open(README, "w") as f:
+                f.write(text)
+            return 0
+        bad = [n for n, make in BLOCKS.items() if found.get(n) != make()]
+        for n in bad:
+            print(f"README.md: the figures of block '{n}' differ from what {os.path.basename(__file__)} derives "
+                  f"from the results" if n in found else f"README.md: no block '{n}'", file=sys.stderr)
+        return 1 if bad else 0
+    names = argv[1:] or list(BLOCKS)
+    for name in names:
+        if name not in BLOCKS:
+            print(f"unknown block '{name}'; blocks: {', '.join(BLOCKS)}", file=sys.stderr)
+            return 2
+        print(f"<!-- figures:{name} -->\n{BLOCKS[name]()}\n<!-- /figures:{name} -->\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
