@@ -112,7 +112,7 @@ def stability_block(folder):
             + ", ".join(f"{n} {k}" for k, n in sorted(kinds.items())) + f"), {len(paired)} repaired validly by every "
             f"strategy, {len(data['skipped'])} draws skipped.")
     return head + "\n\n" + table(["strategy", "valid", "distance (paired)", "same first step", "makespan (paired)",
-                                  "median s", "proven minimal"], rows)
+                                  "median s (all runs)", "proven minimal"], rows)
 
 
 def stability_by_domain(folder):
