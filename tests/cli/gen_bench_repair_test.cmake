@@ -71,3 +71,18 @@ expect_run(0 "classifier_test_accuracy" ${ALPLAN} bench repair --homes 2 --runs-
   --strategies replan,substitute --events sibling --no-paper-home --out ${WORK}/repair-cnn)
 expect_run(2 "--recognizer takes cnn or simulated" ${ALPLAN} bench repair --homes 1 --recognizer oracle --out ${WORK}/x)
 expect_run(2 "--observe takes full, iot or camera" ${ALPLAN} bench repair --homes 1 --observe psychic --out ${WORK}/x)
+# The stability testbed on an IPC domain (benchmarks/harness/stability_bench.h):
+# a small run writes its files; bad flags are refused with the reason.
+expect_run(0 "Plan stability" ${ALPLAN} bench stability --ipc ${SHARED}/benchmarks/ipc --domains rovers --problems 1
+  --perturbations 1 --kinds fact --strategies replan,adapt --out ${WORK}/stability)
+foreach(f runs.csv runs.json summary.md)
+  if(NOT EXISTS ${WORK}/stability/${f})
+    message(FATAL_ERROR "bench stability did not write ${f}")
+  endif()
+endforeach()
+expect_run(2 "--problems takes N or N-M" ${ALPLAN} bench stability --ipc ${SHARED}/benchmarks/ipc --problems x
+  --out ${WORK}/x)
+expect_run(2 "--kinds takes fact, object, goal; got 'meteor'" ${ALPLAN} bench stability --ipc ${SHARED}/benchmarks/ipc
+  --kinds meteor --out ${WORK}/x)
+expect_run(2 "unknown repair strategy 'fast'" ${ALPLAN} bench stability --ipc ${SHARED}/benchmarks/ipc
+  --strategies replan,fast --out ${WORK}/x)
