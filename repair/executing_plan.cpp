@@ -115,6 +115,10 @@ std::size_t plan_distance(const std::vector<std::string>& a, const std::vector<s
   return action_multiset_distance(a, b);
 }
 
+std::size_t plan_distance(const ExecutingPlan& before, const ExecutingPlan& after, double from) {
+  return plan_distance(step_names_from(before, from), step_names_from(after, from));
+}
+
 std::string plan_text(const ExecutingPlan& plan) {
   std::string out;
   char buffer[64];

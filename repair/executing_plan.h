@@ -47,6 +47,9 @@ std::vector<std::string> step_names_from(const ExecutingPlan& plan, double from)
 // and not in `b` plus actions in `b` and not in `a`, as multisets of ground
 // actions (a step repeated twice and kept once is one change).
 std::size_t plan_distance(const std::vector<std::string>& a, const std::vector<std::string>& b);
+// The same between two plans' steps from `from` on: how much a repair at
+// `from` changed the plan (the monitor's and the studies' stability).
+std::size_t plan_distance(const ExecutingPlan& before, const ExecutingPlan& after, double from);
 
 // The plan in the IPC format, the paper's figures' order: by start time.
 std::string plan_text(const ExecutingPlan& plan);

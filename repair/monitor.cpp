@@ -9,7 +9,6 @@
 #include <utility>
 
 #include "pddl_parser/writer.h"
-#include "planner/diverse_plans.h"
 #include "planner/evaluation.h"
 #include "repair/timeline.h"
 
@@ -89,9 +88,6 @@ double next_observation(const Timeline& timeline, const std::vector<CommittedEnd
 
 }  // namespace
 
-std::size_t plan_distance(const ExecutingPlan& before, const ExecutingPlan& after, double from) {
-  return plan_distance(step_names_from(before, from), step_names_from(after, from));
-}
 
 nlohmann::json ExecutionReport::json() const {
   nlohmann::json repairs_json = nlohmann::json::array();

@@ -195,8 +195,4 @@ class Monitor {
   MonitorOptions options_;
 };
 
-// Actions of `before` from `from` on that `after` lacks, plus the reverse,
-// counted as multisets of ground actions.
-std::size_t plan_distance(const ExecutingPlan& before, const ExecutingPlan& after, double from);
-
 }  // namespace alplan::repair

@@ -103,8 +103,10 @@ std::string number(double x) {
 }
 
 
-// The mapped plan bound to the uncompiled task and validated there from the
-// observed state; nullopt, with the reason in `why`, when it is not valid.
+// The mapped plan, in time order, bound to the uncompiled task and
+// validated there from the observed state (validate_from_now, as patch and
+// switch check theirs); nullopt, with the reason in `why`, when it is not
+// valid.
 std::optional<ExecutingPlan> validated(const std::shared_ptr<const GroundTask>& task, Plan plan, double now,
                                        double epsilon, std::string& why) {
   std::stable_sort(plan.steps.begin(), plan.steps.end(), [](const PlanStep& a, const PlanStep& b) {
@@ -112,16 +114,12 @@ std::optional<ExecutingPlan> validated(const std::shared_ptr<const GroundTask>& 
   });
   ExecutingPlan bound;
   try {
-    bound = bind_plan(task, plan, epsilon);  // same order: the steps are sorted already
+    bound = bind_plan(task, plan, epsilon);
   } catch (const std::exception& error) {
     why = error.what();
     return std::nullopt;
   }
-  std::vector<ActionId> actions;
-  for (const ScheduledAction& s : bound.steps) actions.push_back(s.action);
-  PlanningStart start = initial_start(*task);
-  start.now = now;
-  const ValidationResult check = validate_printed_from(*task, start, plan, actions, {}, epsilon);
+  const ValidationResult check = validate_from_now(bound, now);
   if (check.valid) return bound;
   why = check.violation ? check.violation->message() : "the validator rejects it";
   return std::nullopt;
@@ -175,9 +173,7 @@ class StableStrategy : public RepairStrategy {
       why = "the compiled plan maps to an invalid plan (" + why + ")";
       return;
     }
-    std::vector<std::string> old;
-    for (const OldStep& s : compiled.old) old.push_back(ground_name(s));
-    const std::size_t distance = plan_distance(old, step_names_from(*plan, request.now));
+    const std::size_t distance = plan_distance(*request.plan, *plan, request.now);
     result.how = describe(distance, compiled.old.size(), mapped, search) + describe_remedy(*plan, request.now);
     result.plan = std::move(plan);
     result.repaired = true;

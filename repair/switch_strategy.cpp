@@ -35,7 +35,6 @@
 
 #include "pddl_parser/writer.h"
 #include "planner/diverse_plans.h"
-#include "repair/monitor.h"
 #include "repair/reformulation.h"
 #include "repair/repair_strategy.h"
 

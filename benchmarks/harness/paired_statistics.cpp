@@ -198,6 +198,12 @@ std::vector<double> holm_adjust(const std::vector<double>& p) {
   return adjusted;
 }
 
+double percentile(std::vector<double> values, double p) {
+  if (values.empty()) return std::nan("");
+  std::sort(values.begin(), values.end());
+  return percentile_of_sorted(values, p);
+}
+
 PairedComparison compare_paired(const std::vector<double>& reference, const std::vector<double>& other,
                                 const std::vector<std::string>& clusters, const BootstrapOptions& options) {
   if (reference.size() != other.size()) throw std::invalid_argument("paired samples of different sizes");

@@ -112,4 +112,8 @@ double sign_test_p(std::size_t positive, std::size_t nonzero);
 // p is below alpha controls the family-wise error rate at alpha.
 std::vector<double> holm_adjust(const std::vector<double>& p);
 
+// The p-quantile (0..1) of `values`, linear between order statistics; NaN
+// for none. The bootstrap's interval and the studies' medians and p95s.
+double percentile(std::vector<double> values, double p);
+
 }  // namespace alplan::bench

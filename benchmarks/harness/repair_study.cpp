@@ -118,14 +118,6 @@ int decimals_for(const Metric& m) { return std::string(m.name) == "success" ? 3 
 
 }  // namespace
 
-double percentile(std::vector<double> values, double p) {
-  if (values.empty()) return std::nan("");
-  std::sort(values.begin(), values.end());
-  const double rank = p * static_cast<double>(values.size() - 1);
-  const auto low = static_cast<std::size_t>(std::floor(rank));
-  const auto high = std::min(values.size() - 1, low + 1);
-  return values[low] + (rank - static_cast<double>(low)) * (values[high] - values[low]);
-}
 
 namespace {
 

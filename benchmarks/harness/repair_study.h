@@ -52,6 +52,4 @@ struct StudyAnalysis {
 StudyAnalysis analyse_repair_study(const std::vector<StudyRun>& runs, const std::vector<std::string>& strategies,
                                    const std::string& reference, const BootstrapOptions& bootstrap);
 
-double percentile(std::vector<double> values, double p);
-
 }  // namespace alplan::bench

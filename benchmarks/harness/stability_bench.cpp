@@ -7,14 +7,12 @@
 #include <ostream>
 #include <sstream>
 
-#include "benchmarks/harness/repair_study.h"
 #include "benchmarks/harness/table.h"
 #include "domains/pddl_files.h"
 #include "planner/grounder.h"
 #include "planner/normalize.h"
 #include "planner/planner.h"
 #include "planner/validator.h"
-#include "repair/monitor.h"
 #include "repair/reformulation.h"
 #include "repair/world_simulator.h"
 
@@ -75,12 +73,16 @@ Cut execute_until(const Instance& instance, double now) {
   return cut;
 }
 
-// The plan validated from the perturbed state: the problem reformulated
-// there (running actions' ends as timed literals), grounded afresh.
-ValidationResult validate_from(const pddl::Domain& domain, const pddl::Problem& problem, const Cut& cut,
-                               const Plan& plan, double epsilon) {
+// The problem as the perturbed state poses it (running actions' ends as
+// timed literals, repair/reformulation.h), normalised once per perturbation:
+// the old plan's rest and every strategy's plan are validated against it.
+std::shared_ptr<const NormalizedTask> observed_task(const pddl::Domain& domain, const pddl::Problem& problem,
+                                                   const Cut& cut) {
   const pddl::Problem observed = repair::reformulate(domain, problem, cut.state, cut.running, cut.now);
-  auto task = std::make_shared<const NormalizedTask>(normalize(domain, observed));
+  return std::make_shared<const NormalizedTask>(normalize(domain, observed));
+}
+
+ValidationResult validate_on(const std::shared_ptr<const NormalizedTask>& task, const Plan& plan, double epsilon) {
   PlanValidator validator(task, ValidatorOptions{epsilon, false});
   return validator.validate(plan);
 }
@@ -90,10 +92,7 @@ ValidationResult validate_from(const pddl::Domain& domain, const pddl::Problem& 
 // where no other reaches the crate) leaves no plan for any strategy to find,
 // and that is proven, not a failure of a strategy: Fox et al. compare
 // repairs of problems that have them.
-bool goal_reachable(const pddl::Domain& domain, const pddl::Problem& problem, const Cut& cut) {
-  const pddl::Problem observed = repair::reformulate(domain, problem, cut.state, cut.running, cut.now);
-  return !ground(domain, observed)->goal.never;
-}
+bool goal_reachable(const std::shared_ptr<const NormalizedTask>& task) { return !ground(task)->goal.never; }
 
 Plan remaining(const ExecutingPlan& plan, double now) {
   Plan steps = repair::steps_of(plan);
@@ -142,6 +141,7 @@ struct Perturbed {
   Perturbation perturbation;
   Cut cut;
   pddl::Problem problem;  // the goals added
+  std::shared_ptr<const NormalizedTask> observed;  // observed_task of the two
   Violation failure;
 };
 
@@ -160,9 +160,9 @@ std::optional<Perturbed> draw_breaking(const Instance& instance, PerturbationKin
     ++offered;
     for (const auto& [atom, value] : drawn->changes) p.cut.state.set(atom, value);
     p.problem = with_goals(*instance.files.problem, drawn->added_goals);
-    const ValidationResult old = validate_from(*instance.files.domain, p.problem, p.cut,
-                                               remaining(instance.plan, now), epsilon);
-    if (old.valid || !goal_reachable(*instance.files.domain, p.problem, p.cut)) continue;
+    p.observed = observed_task(*instance.files.domain, p.problem, p.cut);
+    const ValidationResult old = validate_on(p.observed, remaining(instance.plan, now), epsilon);
+    if (old.valid || !goal_reachable(p.observed)) continue;
     p.failure = old.violation.value_or(Violation{});
     p.perturbation = std::move(*drawn);
     return p;
@@ -202,7 +202,7 @@ void measure(StabilityRun& run, const repair::RepairResult& result, const Instan
   run.how = result.how;
   if (!run.repaired) return;
   const ExecutingPlan& plan = *result.plan;
-  run.valid = validate_from(*instance.files.domain, p.problem, p.cut, remaining(plan, p.cut.now), epsilon).valid;
+  run.valid = validate_on(p.observed, remaining(plan, p.cut.now), epsilon).valid;
   run.new_steps = remaining_count(plan, p.cut.now);
   run.distance = repair::plan_distance(instance.plan, plan, p.cut.now);
   // |new \ old| - |old \ new| = |new| - |old|, so the distance's two parts

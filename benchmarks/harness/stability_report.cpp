@@ -13,7 +13,6 @@
 #include <nlohmann/json.hpp>
 
 #include "benchmarks/harness/paired_statistics.h"
-#include "benchmarks/harness/repair_study.h"
 #include "benchmarks/harness/stability_bench.h"
 #include "benchmarks/harness/table.h"
 
@@ -78,10 +77,12 @@ void strategy_table(std::ostream& out, const std::map<std::string, Aggregate>& b
     const Aggregate& a = it->second;
     const double paired = static_cast<double>(a.distance.size());
     table.add({s, std::to_string(a.valid) + " / " + std::to_string(a.runs), std::to_string(a.fallbacks),
-               std::to_string(a.distance.size()), fixed(mean(a.distance), 2), fixed(mean(a.added), 2),
-               fixed(mean(a.removed), 2),
+               std::to_string(a.distance.size()), paired > 0 ? fixed(mean(a.distance), 2) : "-",
+               paired > 0 ? fixed(mean(a.added), 2) : "-", paired > 0 ? fixed(mean(a.removed), 2) : "-",
                paired > 0 ? fixed(100.0 * static_cast<double>(a.same_first) / paired, 1) + "%" : "-",
-               fixed(mean(a.makespan), 1), fixed(percentile(a.seconds, 0.5), 3), fixed(percentile(a.seconds, 0.95), 3)});
+               paired > 0 ? fixed(mean(a.makespan), 1) : "-",
+               paired > 0 ? fixed(percentile(a.seconds, 0.5), 3) : "-",
+               paired > 0 ? fixed(percentile(a.seconds, 0.95), 3) : "-"});
   }
   table.print_markdown(out);
 }
