@@ -88,6 +88,8 @@ void add_gen_command(CLI::App& app, int& exit_code) {
   home->add_option("--seed", options->home.seed, "Random seed (same seed, same home)");
   home->add_option("--iot-share", options->home.iot_share,
                    "Share of the portable objects with an IoT tag (they report place and availability)");
+  home->add_option("--scatter", options->home.scatter,
+                   "Share of the portable objects left in another room than their type's (0: none, as before)");
   home->add_flag("--battery", options->battery,
                  "For the battery domain (domains/assisted_living/battery/): a dock and the default batteries");
   home->add_option("--out", options->out, "Write the problem here instead of stdout");

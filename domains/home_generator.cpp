@@ -2,6 +2,7 @@
 
 #include <map>
 #include <random>
+#include <sstream>
 #include <stdexcept>
 #include <utility>
 
@@ -55,11 +56,20 @@ struct Layout {
   std::vector<int> windows;                // per stressed senior: when it closes
 };
 
+// As the command line would give it ("0.35"), and only when objects move,
+// so that the homes made before the option existed keep their text.
+std::string scatter_flag(double scatter) {
+  if (scatter <= 0.0) return "";
+  std::ostringstream out;
+  out << " --scatter " << scatter;
+  return out.str();
+}
+
 std::string problem_text(const GeneratedHome& home, const Layout& l, const HomeOptions& o) {
   std::string out = "; A generated assisted-living home: alplan gen home --rooms " + std::to_string(o.rooms) +
                     " --seniors " + std::to_string(o.seniors) + " --robots " + std::to_string(o.robots) +
                     " --objects " + std::to_string(o.objects) + " --stressed " + std::to_string(o.stressed) +
-                    " --seed " + std::to_string(o.seed) + "\n";
+                    " --seed " + std::to_string(o.seed) + scatter_flag(o.scatter) + "\n";
   out += "(define (problem home-" + std::to_string(o.seed) + ") (:domain assisted_living)\n  (:objects\n   ";
   for (int r = 1; r <= o.robots; ++r) out += " " + numbered("robot", r);
   out += " - robot\n   ";
@@ -95,6 +105,19 @@ std::string problem_text(const GeneratedHome& home, const Layout& l, const HomeO
   return out;
 }
 
+void scatter_objects(GeneratedHome& home, const HomeOptions& o) {
+  if (o.scatter <= 0.0) return;
+  std::mt19937_64 random(o.seed ^ 0x5CA77E40ULL);
+  for (GeneratedHome::Object& obj : home.objects) {
+    if (std::uniform_real_distribution<double>(0.0, 1.0)(random) >= o.scatter) continue;
+    std::vector<const std::string*> elsewhere;
+    for (const std::string& room : home.rooms) {
+      if (room != obj.room) elsewhere.push_back(&room);
+    }
+    obj.room = *elsewhere[std::uniform_int_distribution<std::size_t>(0, elsewhere.size() - 1)(random)];
+  }
+}
+
 }  // namespace
 
 GeneratedHome generate_home(const HomeOptions& o) {
@@ -102,6 +125,7 @@ GeneratedHome generate_home(const HomeOptions& o) {
   if (o.seniors < 1 || o.robots < 1) throw std::invalid_argument("a home needs a senior and a robot");
   if (o.stressed < 1 || o.stressed > o.seniors) throw std::invalid_argument("--stressed must be 1..seniors");
   if (!(o.iot_share >= 0.0 && o.iot_share <= 1.0)) throw std::invalid_argument("--iot-share must be within 0..1");
+  if (!(o.scatter >= 0.0 && o.scatter <= 1.0)) throw std::invalid_argument("--scatter must be within 0..1");
   if (o.objects < 0 || o.rooms > 500 || o.seniors > 500 || o.objects > 2000 || o.robots > 50) {
     throw std::invalid_argument("the home is too large (rooms <= 500, seniors <= 500, objects <= 2000, robots <= 50)");
   }
@@ -154,6 +178,7 @@ GeneratedHome generate_home(const HomeOptions& o) {
     }
     home.objects.push_back({k.stem + two_digits(++per_kind[k.type]), k.type, room, uniform(0, 9) < 8});
   }
+  scatter_objects(home, o);
   std::mt19937_64 tags(o.seed ^ 0x10700000ULL);
   for (GeneratedHome::Object& obj : home.objects) obj.iot = std::uniform_real_distribution<double>(0.0, 1.0)(tags) < o.iot_share;
   home.problem = problem_text(home, l, o);

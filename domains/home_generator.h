@@ -24,6 +24,13 @@ struct HomeOptions {
   // camera only (repair/observation.h). Drawn from its own stream, so the
   // layout and objects of a seed do not depend on it.
   double iot_share = 0.5;
+  // The share of portable objects left away from their room (a glass on a
+  // bedside table, a book in a sunroom), each in a room drawn uniformly among
+  // the others. 0 keeps every object of a type in its type's one room, where
+  // a replacement for a lost object always stands beside it; a spread type
+  // makes what the robot knows before it goes decide where it goes. Its own
+  // stream too: a seed's home at 0 is the home it always was.
+  double scatter = 0.0;
   std::uint64_t seed = 1;
 };
 
