@@ -80,8 +80,9 @@ void models_table(std::ostream& out,
   table.print_markdown(out);
 }
 
-// Paired differences of one strategy's runs, `better` against `worse`
-// (full against iot): what seeing everything is worth.
+// Paired differences of one strategy's runs, `seen` minus `base` (full
+// minus iot: what seeing everything is worth; iot minus camera: what the
+// tags are worth).
 void value_table(std::ostream& out, const std::map<RunKey, const StudyRun*>& seen,
                  const std::map<RunKey, const StudyRun*>& base, const std::vector<std::string>& strategies,
                  const BootstrapOptions& bootstrap) {
@@ -120,7 +121,8 @@ std::string observation_tables(const std::map<std::string, std::vector<StudyRun>
                                const std::vector<std::string>& strategies, const BootstrapOptions& bootstrap) {
   std::ostringstream out;
   out << "# What the sensors change\n\nThe same runs under each observation model (comforted runs / runs; delay "
-         "and cost: means over comforted runs). Value of observation: full minus iot, run by run.\n";
+         "and cost: means over comforted runs). Value of observation: full minus iot, and iot minus camera, run by "
+         "run.\n";
   for (const auto& [kind, how] : kind_groups()) {
     // Most seen first; a map would order the models by name.
     std::vector<std::pair<std::string, std::map<RunKey, const StudyRun*>>> indexed;
@@ -133,6 +135,10 @@ std::string observation_tables(const std::map<std::string, std::vector<StudyRun>
     if (by_model.count("full") && by_model.count("iot")) {
       out << "\nfull minus iot:\n\n";
       value_table(out, index(by_model.at("full"), kind), index(by_model.at("iot"), kind), strategies, bootstrap);
+    }
+    if (by_model.count("iot") && by_model.count("camera")) {
+      out << "\niot minus camera (what the tags are worth):\n\n";
+      value_table(out, index(by_model.at("iot"), kind), index(by_model.at("camera"), kind), strategies, bootstrap);
     }
   }
   return out.str();

@@ -5,8 +5,8 @@
 // no observation model changes, so run (home, run, strategy) under one
 // model meets the same failure as under another: the models are compared
 // run by run. Per failure kind, one table: each strategy's success, delay
-// and cost under each model, then the value of observation, full against
-// iot, as paired differences. The kinds whose discovery depends on what is
+// and cost under each model, then the value of observation as paired
+// differences: full against iot, and iot against camera (the tags). The kinds whose discovery depends on what is
 // seen (an unavailable object found on arrival, foreseen by its tag, a
 // substitute seen on the way) come first, apart from those the home is
 // told of or that are timed (moves, emotion, overrun).
