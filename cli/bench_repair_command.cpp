@@ -167,7 +167,12 @@ void add_bench_repair_command(CLI::App* bench, int& exit_code) {
               "Repairs take the first plan found (as the external planner does) instead of a short anytime search");
   r->add_option("--repair-expansions", o->bench.repair_expansions,
                 "Expansions each anytime weight of a repair may spend (0: until proven)");
+  r->add_option("--repair-min-weight", o->bench.repair_min_weight,
+                "The lowest weight of the repairs' anytime search (5, 3, 2, 1.5, 1 down to this; default 3)")
+      ->check(CLI::PositiveNumber);
   r->add_option("--iot-share", o->bench.home.iot_share, "Share of the generated homes' objects with an IoT tag");
+  r->add_option("--scatter", o->bench.home.scatter,
+                "Share of the generated homes' objects left in another room than their type's (default 0)");
   r->add_option("--bootstrap", o->bench.bootstrap.resamples, "Bootstrap resamples for the confidence intervals")
       ->check(CLI::PositiveNumber);
   r->add_flag("!--no-paper-home", o->bench.paper_home, "Skip timing the strategies on the paper's three scenarios");

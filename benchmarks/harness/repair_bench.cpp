@@ -206,7 +206,7 @@ void write_outputs(const RepairBenchOptions& o, const std::vector<RunRecord>& re
   nlohmann::json all = study.json;
   all["options"] = {{"homes", o.homes}, {"runs_per_home", o.runs_per_home}, {"failures_per_run", o.failures_per_run},
                     {"seed", o.seed}, {"rooms", o.home.rooms}, {"seniors", o.home.seniors},
-                    {"objects", o.home.objects}, {"iot_share", o.home.iot_share},
+                    {"objects", o.home.objects}, {"iot_share", o.home.iot_share}, {"scatter", o.home.scatter},
                     {"observe", repair::to_string(o.observation.model)}, {"executions", records.size()}};
   all.update(extra);
   std::ofstream(fs::path(o.out_dir) / "summary.json") << all.dump(2) << "\n";
@@ -215,6 +215,7 @@ void write_outputs(const RepairBenchOptions& o, const std::vector<RunRecord>& re
   head << "# Repair study\n\n" << o.homes << " generated homes x " << o.runs_per_home << " runs, seed " << o.seed
        << ", observation model " << repair::to_string(o.observation.model) << ", " << records.size()
        << " executions; every strategy meets the same failures.\n\n";
+  if (o.home.scatter > 0.0) head << "- a share " << o.home.scatter << " of objects left away from their room\n";
   head << "- grounding reused by " << extra.value("repairs_reusing_grounding", 0) << " of " << extra.value("repairs", 0)
        << " repair attempts (the grounding made when execution starts, repair/monitor.h)\n";
   for (const auto& [key, value] : extra.items()) head << "- " << key << ": " << value.dump() << "\n";

@@ -6,6 +6,10 @@ expect_run(0 "wrote" ${ALPLAN} gen home --rooms 6 --seniors 3 --objects 10 --see
 expect_run(0 "; plan found" ${ALPLAN} plan ${CMAKE_CURRENT_LIST_DIR}/../../domains/assisted_living/domain.pddl
   ${WORK}/home.pddl)
 expect_run(2 "at least 4 rooms" ${ALPLAN} gen home --rooms 3)
+expect_run(0 "--scatter 0.5" ${ALPLAN} gen home --rooms 6 --seniors 3 --objects 10 --seed 4 --scatter 0.5)
+expect_run(2 "--scatter must be within 0..1" ${ALPLAN} gen home --scatter 1.5)
+expect_run(2 "--scatter must be within 0..1" ${ALPLAN} bench repair --homes 1 --scatter -0.1 --recognizer simulated
+  --out ${WORK}/repair-bad-scatter)
 expect_run(0 "latency median ms" ${ALPLAN} bench repair --homes 2 --runs-per-home 2 --seed 3
   --strategies replan,patch,suggest --external --recognizer simulated --out ${WORK}/repair)
 foreach(f runs.csv runs.json summary.md summary.json plots/success-rate.svg plots/stability-vs-replan.svg
