@@ -25,6 +25,12 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 RESULTS = os.path.join(HERE, "results")
 README = os.path.join(HERE, "README.md")
 STUDY = "repair-study-40-homes-2026-11-28"
+SCATTERED = "repair-study-scatter-2026-11-28"
+TAGS = "tags-by-scatter-2026-11-28"
+# Folder under TAGS, and the row's label: the scatter, and the repairs'
+# search when it is not the study's (anytime down to weight 3).
+SCATTERS = [("scatter-0", "0"), ("scatter-0.5", "0.5"), ("scatter-1", "1"),
+            ("scatter-1-min-weight-1", "1, repairs to weight 1")]
 STABILITY = ["stability-ipc2002-1-5-2026-11-28", "stability-ipc2002-6-10-2026-11-28"]
 MODELS = ["full", "iot", "camera"]
 
@@ -48,9 +54,9 @@ def strategies_of(runs):
     return seen
 
 
-def study_mix():
+def study_mix(folder=STUDY):
     """The failure mix and what each strategy comforted, per model."""
-    by_model = {m: load(f"{STUDY}/{m}/runs.json") for m in MODELS}
+    by_model = {m: load(f"{folder}/{m}/runs.json") for m in MODELS}
     iot = by_model["iot"]
     strategies = strategies_of(iot)
     mix = Counter(r["kind"] for r in iot if r["strategy"] == strategies[0])
@@ -80,6 +86,26 @@ def study_switch():
         rows.append([kind, repairs, repairs - fallbacks, fallbacks,
                      f"{statistics.mean(r['planner_calls'] for r in mine):.2f}"])
     return table(["failure kind", "repairs", "switched to an alternative", "replanned", "planner calls a run"], rows)
+
+
+def tags_by_scatter():
+    """What the tags are worth on iot failures: the same runs under iot and
+    camera, in homes whose objects are scattered over rooms or not."""
+    rows = []
+    for folder, scatter in SCATTERS:
+        runs = {m: {(r["home"], r["run"], r["strategy"]): r for r in load(f"{TAGS}/{folder}/{m}/runs.json")
+                    if r["kind"] == "iot"} for m in ("iot", "camera")}
+        for s in ("replan", "adapt", "switch"):
+            both = [(runs["iot"][k], runs["camera"][k]) for k in runs["iot"]
+                    if k[2] == s and k in runs["camera"] and runs["iot"][k]["comforted"] and runs["camera"][k]["comforted"]]
+            d = [a["delay"] - b["delay"] for a, b in both]
+            homes = len({a["home"] for a, _ in both})
+            rows.append([scatter, s, f"{len(both)} in {homes} homes",
+                         f"{statistics.mean(a['delay'] for a, _ in both):.1f}",
+                         f"{statistics.mean(b['delay'] for _, b in both):.1f}", f"{statistics.mean(d):.1f}",
+                         f"{sum(x < -1e-6 for x in d)} / {sum(abs(x) <= 1e-6 for x in d)} / {sum(x > 1e-6 for x in d)}"])
+    return table(["scatter", "strategy", "iot failures, comforted under both", "delay, iot", "delay, camera",
+                  "iot minus camera", "tags sooner / same / later"], rows)
 
 
 def paired_set(runs, strategies):
@@ -132,6 +158,8 @@ def stability_by_domain(folder):
 BLOCKS = {
     "study-mix": study_mix,
     "study-switch": study_switch,
+    "scatter-mix": lambda: study_mix(SCATTERED),
+    "tags-by-scatter": tags_by_scatter,
     "stability-1-5": lambda: stability_block(STABILITY[0]),
     "stability-6-10": lambda: stability_block(STABILITY[1]),
     "stability-domains-1-5": lambda: stability_by_domain(STABILITY[0]),
