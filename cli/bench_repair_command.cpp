@@ -7,6 +7,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -34,6 +35,7 @@ struct BenchRepairOptions {
   std::string events = "arrival,iot,sibling,moves,emotion,overrun,two";
   std::string observe = "iot";
   std::string recognizer = "cnn";
+  std::string summarize;  // a multi-model run's folder: its observation.md again, nothing run
   SlurmFlags slurm;
 };
 
@@ -69,7 +71,44 @@ int run_under_models(const bench::RepairBenchOptions& base, const std::vector<re
   return 0;
 }
 
+// observation.md again from DIR/full, DIR/iot and DIR/camera's runs.json
+// (those present), the strategies in the order the runs name them.
+int summarize_models(const BenchRepairOptions& o) {
+  std::map<std::string, std::vector<bench::StudyRun>> by_model;
+  std::vector<std::string> strategies;
+  for (const char* model : {"full", "iot", "camera"}) {
+    const std::string runs = o.summarize + "/" + model + "/runs.json";
+    if (!std::ifstream(runs)) continue;
+    by_model[model] = bench::load_study_runs(runs);
+    for (const bench::StudyRun& r : by_model[model]) {
+      if (std::find(strategies.begin(), strategies.end(), r.strategy) == strategies.end()) strategies.push_back(r.strategy);
+    }
+  }
+  if (by_model.size() < 2) {
+    std::cerr << "error: --summarize " << o.summarize << ": needs the runs.json of two observation models or more "
+              << "(full/, iot/, camera/), found " << by_model.size() << "\n";
+    return kExitInputError;
+  }
+  const std::string tables = bench::observation_tables(by_model, strategies, o.bench.bootstrap);
+  std::ofstream out(o.summarize + "/observation.md");
+  out << tables;
+  if (!out) {
+    std::cerr << "error: cannot write " << o.summarize << "/observation.md\n";
+    return kExitInputError;
+  }
+  std::cout << tables << "wrote " << o.summarize << "/observation.md\n";
+  return 0;
+}
+
 int run_repair(BenchRepairOptions options) {
+  if (!options.summarize.empty()) {
+    try {
+      return summarize_models(options);
+    } catch (const std::exception& e) {
+      std::cerr << "error: --summarize " << options.summarize << ": " << e.what() << "\n";
+      return kExitInputError;
+    }
+  }
   options.bench.progress_bar = isatty(STDERR_FILENO) != 0;
   options.bench.strategies.clear();
   std::istringstream list(options.strategies);
@@ -177,6 +216,9 @@ void add_bench_repair_command(CLI::App* bench, int& exit_code) {
       ->check(CLI::PositiveNumber);
   r->add_flag("!--no-paper-home", o->bench.paper_home, "Skip timing the strategies on the paper's three scenarios");
   r->add_option("--out", o->bench.out_dir, "Folder for runs.csv, runs.json, summary.md, summary.json, plots/");
+  r->add_option("--summarize", o->summarize,
+                "Write a multi-model run folder's observation.md again from its full/, iot/, camera/ runs.json; "
+                "runs nothing");
   r->add_flag("!--no-grounding-reuse", o->bench.reuse_grounding,
               "Ground every repair's problem from scratch instead of reusing the grounding made when execution starts");
   r->add_option("--adapt-expansions", o->bench.strategy_options.adapt_expansions,

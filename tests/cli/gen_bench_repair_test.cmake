@@ -75,6 +75,19 @@ expect_run(0 "classifier_test_accuracy" ${ALPLAN} bench repair --homes 2 --runs-
   --strategies replan,substitute --events sibling --no-paper-home --out ${WORK}/repair-cnn)
 expect_run(2 "--recognizer takes cnn or simulated" ${ALPLAN} bench repair --homes 1 --recognizer oracle --out ${WORK}/x)
 expect_run(2 "--observe takes full, iot or camera" ${ALPLAN} bench repair --homes 1 --observe psychic --out ${WORK}/x)
+# Under two models: each in its folder, observation.md pairing them; its
+# tables written again from the runs alone are the same tables.
+expect_run(0 "iot minus camera (what the tags are worth)" ${ALPLAN} bench repair --homes 2 --runs-per-home 1 --seed 3
+  --strategies replan,patch --recognizer simulated --observe iot,camera --scatter 0.5 --no-paper-home
+  --out ${WORK}/repair-models)
+file(READ ${WORK}/repair-models/observation.md first_tables)
+file(REMOVE ${WORK}/repair-models/observation.md)
+expect_run(0 "wrote" ${ALPLAN} bench repair --summarize ${WORK}/repair-models)
+file(READ ${WORK}/repair-models/observation.md again)
+if(NOT first_tables STREQUAL again)
+  message(FATAL_ERROR "bench repair --summarize wrote other tables than the run did")
+endif()
+expect_run(2 "needs the runs.json of two observation models" ${ALPLAN} bench repair --summarize ${WORK}/repair)
 # The stability testbed on an IPC domain (benchmarks/harness/stability_bench.h):
 # a small run writes its files; bad flags are refused with the reason.
 expect_run(0 "Plan stability" ${ALPLAN} bench stability --ipc ${SHARED}/benchmarks/ipc --domains rovers --problems 1
