@@ -109,7 +109,7 @@ nlohmann::json ExecutionReport::json() const {
                             {"plan", r.plan_text},
                             {"explanation", r.explanation.json()}});
   }
-  return {{"initial_plan", initial_plan_text}, {"preparation_seconds", preparation_seconds}, {"repairs", repairs_json}, {"goal_reached", goal_reached},
+  return {{"initial_plan", initial_plan_text}, {"preparation_seconds", preparation_seconds}, {"repairs", repairs_json}, {"goal_reached", goal_reached}, {"void_actions", void_actions},
           {"end_time", end_time}, {"outcome", outcome}, {"events", events},
           {"observation", to_string(observation)}, {"sightings", sightings}};
 }
@@ -142,6 +142,7 @@ class MonitoredExecution::Impl {
       if (++looks_ > 1000000) break;
       world_.advance(t);
       belief_.observe(world_.observe());
+      learn_from_void_actions();
       if (take_arrivals(t)) continue;  // look again at the same time, with the merged plan
       const WorldState observed = belief_.state();
       remember(observed, t);
@@ -194,10 +195,26 @@ class MonitoredExecution::Impl {
   const ExecutingPlan& plan() const { return plan_; }
   const pddl::Problem& problem() const { return problem_; }
 
+  // An action of the robot's that aborted tells it the literal that stopped
+  // it (the executive's feedback), even where no sensor looks: without it,
+  // a belief the world contradicts out of view would make the same plan
+  // fail the same way again and again.
+  void learn_from_void_actions() {
+    for (const VoidAction& v : world_.void_actions_since(void_seen_)) {
+      ++void_seen_;
+      if (!started_.count(v.action)) continue;  // another robot's
+      aborted_.insert(v.action);
+      if (!v.literal.empty()) belief_.learned(v.literal, v.holds);
+      ++report_.void_actions;
+      report_.events.push_back(time_text(v.time) + ": " + v.action + " came to nothing: " + v.why);
+    }
+  }
+
   // The actions this execution started that the world still runs.
   std::vector<ActionInProgress> running() const {
     std::vector<ActionInProgress> own = world_.in_progress();
-    std::erase_if(own, [&](const ActionInProgress& a) { return !started_.count(a.name); });
+    // One it knows aborted will change nothing when it ends: not a commitment.
+    std::erase_if(own, [&](const ActionInProgress& a) { return !started_.count(a.name) || aborted_.count(a.name); });
     return own;
   }
 
@@ -523,6 +540,7 @@ class MonitoredExecution::Impl {
       if (progress_.started[s] || std::abs(a.start - t) > tolerance()) continue;
       world_.start_action(*plan_.task, a.action, t, a.duration);
       started_.insert(a.name);
+      aborted_.erase(a.name);
       belief_.act(*plan_.task, a.action, true, a.duration);
       progress_.started[s] = true;
       if (!plan_.task->actions[a.action].durative) progress_.ended[s] = true;
@@ -600,6 +618,8 @@ class MonitoredExecution::Impl {
   Belief& belief_;
   std::vector<WorldState> history_;
   std::set<std::string> started_;  // names of the actions it started: the others are other robots'
+  std::size_t void_seen_ = 0;  // of the world's void actions, those looked at
+  std::set<std::string> aborted_;  // its running actions it knows came to nothing
   bool ended_ = false;
   long looks_ = 0;
   std::optional<DeferredFailure> deferred_;

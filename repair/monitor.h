@@ -146,6 +146,9 @@ struct ExecutionReport {
   std::string outcome;  // one sentence
   ObservationModel observation = ObservationModel::Iot;
   std::size_t sightings = 0;  // things the camera saw that the problem did not name
+  // Its actions that came to nothing in the world (world.h, VoidAction): an
+  // action started on a belief the world contradicted.
+  std::size_t void_actions = 0;
   std::vector<std::string> events;  // what happened, in order, for people
 
   nlohmann::json json() const;

@@ -149,6 +149,12 @@ bool Belief::observe(const WorldState& truth) {
 
 void Belief::told(const AtomKey& key, bool value) { state_.set(key, value); }
 
+void Belief::learned(const AtomKey& key, bool value) {
+  if (state_.holds(key) == value) return;
+  state_.set(key, value);
+  ++news_;
+}
+
 void Belief::expect(const pddl::TimedInitialLiteral& literal) {
   // A home and its mission's monitor may both be told of one window.
   if (std::any_of(timed_literals_.begin(), timed_literals_.end(),

@@ -77,6 +77,9 @@ class Belief {
   // emotion from the home's perception, a comfort window it opened and the
   // literal that will close it.
   void told(const AtomKey& key, bool value);
+  // What an aborted action of the robot's showed it (world.h, VoidAction):
+  // news, like a sensor's, for a failure waiting to be tried again.
+  void learned(const AtomKey& key, bool value);
   void expect(const pddl::TimedInitialLiteral& literal);  // once, however often told
   // A literal expected no more (a goal settled before its window closes).
   void withdraw(const pddl::TimedInitialLiteral& literal);

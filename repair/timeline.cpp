@@ -100,10 +100,15 @@ std::optional<Violation> Timeline::check_ahead(double t, const ExplicitState& ob
   const GroundTask& task = *plan_->task;
   const double tolerance = plan_->epsilon / 10.0;
   for (const TimelineEntry& e : entries_) {
-    if (e.time <= t + tolerance) continue;
-    // The goal is judged after the last happening, so its effects count;
+    // An invariant whose interval opens now is looked at too: a robot that
+    // sees the senior is not in the room does not begin a handover there.
+    const bool opening = e.kind == TimelineEntry::Kind::OverAll && e.time > t - tolerance;
+    if (e.time <= t + tolerance && !opening) continue;
+    // The goal is judged after the last happening, so its effects count,
+    // and so is an invariant, which holds from just after its step's start;
     // a step's condition is judged before simultaneous effects.
-    const double before = e.kind == TimelineEntry::Kind::Goal ? e.time + tolerance : e.time - tolerance;
+    const bool after_effects = e.kind == TimelineEntry::Kind::Goal || e.kind == TimelineEntry::Kind::OverAll;
+    const double before = after_effects ? e.time + tolerance : e.time - tolerance;
     // Happenings due now are not yet dispatched when the monitor looks.
     const double after = t - tolerance;
     std::optional<std::string> doomed;

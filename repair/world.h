@@ -25,6 +25,18 @@ struct ActionInProgress {
   std::vector<std::pair<AtomKey, double>> rates;
 };
 
+// One of the robot's actions that came to nothing (world_simulator.h), and
+// the literal of its condition that stopped it, with the value it had: what
+// the robot's executive learns when an action aborts (a grasp that closes
+// on nothing, a handover no one takes).
+struct VoidAction {
+  double time = 0.0;
+  std::string action;  // "(give robot1 senior1 violin_id01 sunroom1)"
+  AtomKey literal;     // empty for a derived fact, which the world keeps no record of
+  bool holds = false;  // the literal's value in the world
+  std::string why;     // "(be senior1 sunroom1) did not hold at its start"
+};
+
 class World {
  public:
   virtual ~World() = default;
@@ -35,6 +47,12 @@ class World {
   // False when the action has not finished when the plan said it would.
   virtual bool end_action(const GroundTask& task, ActionId action, double t) = 0;
   virtual std::vector<ActionInProgress> in_progress() const = 0;
+  // The actions that came to nothing, from the first-th on (a world that
+  // does whatever it is told has none).
+  virtual std::vector<VoidAction> void_actions_since(std::size_t first) const {
+    (void)first;
+    return {};
+  }
 };
 
 }  // namespace alplan::repair

@@ -116,6 +116,8 @@ void WorldSimulator::release(const std::string& action) {
 }
 
 void WorldSimulator::halt(const std::string& action) {
+  invariants_.erase(action);
+  void_.erase(action);
   running_.erase(action);
   durations_.erase(action);
   overrunning_.erase(action);
@@ -124,10 +126,14 @@ void WorldSimulator::halt(const std::string& action) {
 
 void WorldSimulator::finish(const ActionInProgress& a) {
   flow_until(a.expected_end);
-  for (const AtomKey& d : a.dels) world_.set(d, false);
-  for (const AtomKey& k : a.adds) world_.set(k, true);
+  invariants_.erase(a.name);
+  if (void_.erase(a.name) == 0) {
+    for (const AtomKey& d : a.dels) world_.set(d, false);
+    for (const AtomKey& k : a.adds) world_.set(k, true);
+  }
   // Its change stops here: the others flow on without it.
   running_.erase(a.name);
+  check_invariants(a.expected_end);
 }
 
 void WorldSimulator::flow_until(double t) {
@@ -160,8 +166,10 @@ void WorldSimulator::apply(const ExogenousEvent& e) {
 
 void WorldSimulator::advance(double t) {
   while (!pending_.empty() && pending_.front().time <= t) {
+    const double at = pending_.front().time;
     apply(pending_.front());
     pending_.erase(pending_.begin());
+    check_invariants(at);
   }
   // Overrunning actions finish when they finish, in the order they do (the
   // values flow up to each end); the others when the monitor dispatches
@@ -182,14 +190,98 @@ void WorldSimulator::apply_snap(const GroundTask& task, ActionId action, bool st
   world_.time = std::max(world_.time, t);
 }
 
+std::optional<VoidAction> WorldSimulator::contradicted(const GroundTask& task, const ConditionSet& c) const {
+  if (c.positive.empty() && c.negative.empty()) return std::nullopt;
+  const StateMapping mapping(task);
+  const ExplicitState state = mapping.to_explicit(world_);
+  auto literal = [&](FactId f, bool holds) {
+    VoidAction v;
+    if (!task.is_derived(f)) v.literal = mapping.fact_key(f);
+    v.holds = holds;
+    v.why = holds ? "(not " + task.fact_name(f) + ")" : task.fact_name(f);
+    return v;
+  };
+  for (FactId f : c.positive) {
+    if (!state.fact(f)) return literal(f, false);
+  }
+  for (FactId f : c.negative) {
+    if (state.fact(f)) return literal(f, true);
+  }
+  return std::nullopt;
+}
+
+void WorldSimulator::void_action(VoidAction v, const std::string& name, double t, const std::string& when) {
+  v.time = t;
+  v.action = name;
+  v.why += " " + when;
+  void_actions_.push_back(std::move(v));
+  void_.insert(name);
+}
+
+std::vector<VoidAction> WorldSimulator::void_actions_since(std::size_t first) const {
+  if (first >= void_actions_.size()) return {};
+  return {void_actions_.begin() + static_cast<std::ptrdiff_t>(first), void_actions_.end()};
+}
+
+void WorldSimulator::check_invariants(double t) {
+  for (const auto& [name, invariant] : invariants_) {
+    if (void_.count(name)) continue;
+    for (const auto& [keys, value] : {std::pair{&invariant.positive, true}, std::pair{&invariant.negative, false}}) {
+      for (const AtomKey& k : *keys) {
+        if (world_.holds(k) == value) continue;
+        VoidAction v;
+        v.literal = k;
+        v.holds = !value;
+        v.why = value ? to_string(k) : "(not " + to_string(k) + ")";
+        void_action(std::move(v), name, t, "stopped holding while it ran");
+        break;
+      }
+      if (void_.count(name)) break;
+    }
+  }
+}
+
 void WorldSimulator::start_action(const GroundTask& task, ActionId action, double t, double duration) {
   flow_until(t);
   // Rates are fixed in the state the action starts in, before its start's
   // effects (PDDL 2.1; the validator does the same).
   std::vector<std::pair<AtomKey, double>> rates = continuous_rates(task, action, duration, world_);
-  apply_snap(task, action, true, t, duration);
   const GroundAction& a = task.actions[action];
-  if (!a.durative) return;
+  const std::string name = task.action_name(a);
+  void_.erase(name);
+  if (std::optional<VoidAction> failed = contradicted(task, a.at_start)) {
+    // It comes to nothing: no effects now, none at its end.
+    void_action(std::move(*failed), name, t, "did not hold at its start");
+    rates.clear();
+    world_.time = std::max(world_.time, t);
+  } else {
+    const WorldState before = world_;
+    apply_snap(task, action, true, t, duration);
+    // Over all: from just after the start, so the start's own effects count;
+    // broken at once, the action does not begin (the robot keeps the item
+    // it would have handed to no one).
+    if (std::optional<VoidAction> broken = contradicted(task, a.over_all)) {
+      world_ = before;
+      world_.time = std::max(world_.time, t);
+      void_action(std::move(*broken), name, t, "did not hold as it began");
+      rates.clear();
+    } else {
+      check_invariants(t);  // of the others: the robot's own start may break one
+    }
+  }
+  if (!a.durative) {
+    void_.erase(name);  // instantaneous: nothing more to come
+    return;
+  }
+  Invariant invariant;
+  const StateMapping invariant_mapping(task);
+  for (FactId f : a.over_all.positive) {
+    if (!task.is_derived(f)) invariant.positive.push_back(invariant_mapping.fact_key(f));
+  }
+  for (FactId f : a.over_all.negative) {
+    if (!task.is_derived(f)) invariant.negative.push_back(invariant_mapping.fact_key(f));
+  }
+  invariants_[name] = std::move(invariant);
   ActionInProgress p;
   p.rates = std::move(rates);
   p.name = task.action_name(a);
@@ -214,7 +306,19 @@ bool WorldSimulator::end_action(const GroundTask& task, ActionId action, double 
     return false;
   }
   if (it != running_.end()) running_.erase(it);
-  apply_snap(task, action, false, t, durations_[name]);
+  invariants_.erase(name);
+  if (!void_.count(name)) {
+    if (std::optional<VoidAction> failed = contradicted(task, task.actions[action].at_end)) {
+      void_action(std::move(*failed), name, t, "did not hold at its end");
+    }
+  }
+  if (void_.erase(name) == 0) {
+    apply_snap(task, action, false, t, durations_[name]);
+    check_invariants(t);
+  } else {
+    flow_until(t);
+    world_.time = std::max(world_.time, t);
+  }
   return true;
 }
 

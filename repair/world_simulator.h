@@ -4,6 +4,21 @@
 // appear, a senior moves, an emotion changes, an action takes longer than
 // planned. It also plays the camera: it reports the new objects visible at
 // a location, as the perception library's recognizer will on real images.
+//
+// The world does what its physics allows, not what it is told: an action
+// whose conditions do not hold in the true world when it starts (a pickup of
+// a thing that is gone, a handover to a senior who is not in the room), or
+// whose invariant breaks while it runs, or whose end condition fails, has no
+// effect from then on; the robot spends the action's time and learns of it
+// only as its sensors show that the effects did not come. Failing as it
+// starts, the action changes nothing; interrupted while it runs, it keeps
+// its start's effects and loses its end's (a senior who walks away in the
+// middle of a handover does not receive the item). A world that
+// granted such effects would let a robot that cannot see the failure reach
+// the goal anyway. Only the conditions' facts are physics; numeric
+// conditions (a battery kept above its reserve) are the planner's margins,
+// which the world does not enforce; a derived fact in an invariant is judged
+// at the start and the end only.
 #pragma once
 
 #include <map>
@@ -88,6 +103,9 @@ class WorldSimulator : public World, public ObjectRecognizer {
 
   // Events applied so far, in order, for reports.
   const std::vector<ExogenousEvent>& applied() const { return applied_; }
+  // The robot's actions that came to nothing, in order.
+  const std::vector<VoidAction>& void_actions() const { return void_actions_; }
+  std::vector<VoidAction> void_actions_since(std::size_t first) const override;
 
  private:
   void apply(const ExogenousEvent& e);
@@ -97,6 +115,12 @@ class WorldSimulator : public World, public ObjectRecognizer {
   // An overrunning action ends on its own: the values flow up to its end,
   // then its end's facts change.
   void finish(const ActionInProgress& a);
+  // The first literal of `c` the world contradicts (its `why` says which,
+  // as "(be senior1 room)" or "(not (...))"); nothing when all hold.
+  std::optional<VoidAction> contradicted(const GroundTask& task, const ConditionSet& c) const;
+  void void_action(VoidAction v, const std::string& name, double t, const std::string& when);
+  // The invariants of the running actions against the world now.
+  void check_invariants(double t);
 
   WorldState world_;
   std::vector<ExogenousEvent> pending_;  // by time
@@ -107,6 +131,14 @@ class WorldSimulator : public World, public ObjectRecognizer {
   std::map<std::string, double> durations_;           // of running actions, for their ends
   std::set<std::string> overrunning_;                 // ends dispatched, not yet happened
   std::map<AtomKey, double> lowest_;                  // of values changed continuously
+  // Each running action's over-all facts that the world holds or not
+  // (derived ones left out: the world keeps no derived facts).
+  struct Invariant {
+    std::vector<AtomKey> positive, negative;
+  };
+  std::map<std::string, Invariant> invariants_;
+  std::set<std::string> void_;  // running actions whose end will change nothing
+  std::vector<VoidAction> void_actions_;
 };
 
 }  // namespace alplan::repair

@@ -1,6 +1,8 @@
 #include "benchmarks/harness/repair_bench.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <iostream>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -45,6 +47,7 @@ struct RunRecord {
   double preparation_ms = 0.0;         // the monitor grounding the home at the start
   double perception_ms = 0.0;          // of the latencies: substitution asking perception
   std::size_t sightings = 0;           // new things the camera saw
+  std::size_t void_actions = 0;        // actions that came to nothing in the world (world.h)
   // Until the senior is comforted, beyond the original plan's end; none
   // for a run that never comforts the senior (its end is the failure's).
   std::optional<double> delay;
@@ -89,6 +92,7 @@ RunRecord execute(const std::string& home_name, int run, const repair::Mission& 
   const std::unique_ptr<repair::ObjectRecognizer> camera = o.camera ? o.camera(world) : nullptr;
   repair::ObjectRecognizer* eyes = camera ? camera.get() : &world;
   const repair::ExecutionReport report = monitor.run(mission, plan, world, strategy, eyes, &ontology);
+  if (std::getenv("ALPLAN_DEBUG_EVENTS")) { for (const auto& e : report.events) std::cerr << "EV " << e << "\n"; }
   RunRecord r;
   r.home = home_name;
   r.run = run;
@@ -96,6 +100,7 @@ RunRecord execute(const std::string& home_name, int run, const repair::Mission& 
   r.kind = drawn.kind;
   r.reached = report.goal_reached;
   r.sightings = report.sightings;
+  r.void_actions = report.void_actions;
   r.repairs = report.repairs.size();
   for (const repair::RepairRecord& rep : report.repairs) {
     r.latencies_ms.push_back(rep.seconds * 1000.0);
@@ -153,7 +158,7 @@ nlohmann::json to_json(const RunRecord& r) {
           {"reused_grounding", r.reused_grounding}, {"preparation_ms", r.preparation_ms},
           {"stability", r.stability}, {"fallbacks", r.fallbacks}, {"planner_calls", r.planner_calls},
           {"delay", r.delay ? nlohmann::json(*r.delay) : nlohmann::json()}, {"makespan", r.makespan},
-          {"cost", r.cost}, {"sightings", r.sightings}, {"failures", r.failures}, {"outcome", r.outcome}};
+          {"cost", r.cost}, {"sightings", r.sightings}, {"void_actions", r.void_actions}, {"failures", r.failures}, {"outcome", r.outcome}};
 }
 
 RunRecord record_from_json(const nlohmann::json& j) {
@@ -175,6 +180,7 @@ RunRecord record_from_json(const nlohmann::json& j) {
   r.makespan = j.at("makespan");
   r.cost = j.at("cost");
   r.sightings = j.at("sightings");
+  r.void_actions = j.value("void_actions", std::size_t{0});  // runs written before the world checked conditions
   r.failures = j.at("failures");
   r.outcome = j.at("outcome");
   return r;

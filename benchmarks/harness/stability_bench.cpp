@@ -6,6 +6,7 @@
 #include <map>
 #include <ostream>
 #include <sstream>
+#include <stdexcept>
 
 #include "benchmarks/harness/table.h"
 #include "domains/pddl_files.h"
@@ -66,6 +67,13 @@ Cut execute_until(const Instance& instance, double now) {
     }
   }
   world.advance(now);
+  // The plan is valid and nothing perturbs the world before `now`, so every
+  // step must have done what it says; a void one would make the cut a lie.
+  if (!world.void_actions().empty()) {
+    const repair::VoidAction& v = world.void_actions().front();
+    throw std::logic_error("the plan's own execution failed in the simulated world at " + std::to_string(v.time) +
+                           ": " + v.action + ": " + v.why);
+  }
   Cut cut;
   cut.now = now;
   cut.state = world.observe();

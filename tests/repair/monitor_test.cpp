@@ -248,3 +248,25 @@ TEST_CASE("a PDDL 3 deadline met before the failure binds no repair: the monitor
   CHECK(r.plan_text.find("(carry robot1 mug_id01 kitchen1)") != std::string::npos);
   CHECK(run.report.goal_reached);
 }
+
+TEST_CASE("camera alone: a senior who moved away is not comforted by a handover in the empty room") {
+  // The world does what its physics allows (world_simulator.h): a give to
+  // a senior who is not there changes nothing. Before, it did, and a robot
+  // that could not see the senior leave reached the goal on time anyway.
+  PaperScenario s = scenario(2);
+  s.events = repair::senior_moves(200.0, "senior1", "bedroom1", "sunroom1");
+  ScenarioOptions o = options("replan");
+  o.monitor.observation.model = repair::ObservationModel::Camera;
+  const ScenarioRun run = run_paper_scenario(s, o);
+  for (const std::string& e : run.report.events) UNSCOPED_INFO(e);
+  // Its camera sees the room empty when it gets there; it has no way to
+  // know where the senior went, so no plan reaches the goal.
+  CHECK_FALSE(run.report.goal_reached);
+  const bool seen_empty = std::any_of(run.report.events.begin(), run.report.events.end(), [](const std::string& e) {
+    return e.find("(be senior1 bedroom1)") != std::string::npos && e.find("failure") != std::string::npos;
+  });
+  CHECK(seen_empty);
+  // Under iot the wristband tells it, and the give happens in the sunroom.
+  o.monitor.observation.model = repair::ObservationModel::Iot;
+  CHECK(run_paper_scenario(s, o).report.goal_reached);
+}
