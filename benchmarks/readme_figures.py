@@ -75,6 +75,53 @@ def study_mix(folder=STUDY):
     return "\n".join(out)
 
 
+KINDS = ["arrival", "iot", "sibling", "moves", "emotion", "overrun", "two", "all"]
+WIN_METRICS = [("success", "success"), ("metric", "metric (time + cost)"), ("cost", "cost"), ("delay", "delay"),
+               ("stability", "stability"), ("latency_ms", "latency ms")]
+
+
+def signed(x):
+    return f"{x:+.0f}" if abs(x) >= 1000 else f"{x:+.3g}"
+
+
+def verdict_cell(against, metric, strategies):
+    """Better (bold) and worse strategies against replan on one metric, each
+    with its mean difference; strategies with the same printed mean share it."""
+    parts = []
+    for verdict in ("better", "worse"):
+        groups = []  # (printed mean, [strategies]) in the order of the strategies
+        for s in strategies:
+            m = against.get(s, {}).get(metric)
+            if not m or m["verdict"] != verdict:
+                continue
+            mean = signed(m["mean_difference"])
+            for g in groups:
+                if g[0] == mean:
+                    g[1].append(s)
+                    break
+            else:
+                groups.append((mean, [s]))
+        if not groups:
+            continue
+        text = ", ".join(f"{', '.join(names)} ({mean})" for mean, names in groups)
+        parts.append(f"**{text}**" if verdict == "better" else f"worse: {text}")
+    return "; ".join(parts) if parts else "tie"
+
+
+def study_wins(folder=STUDY, model="iot"):
+    """Where each strategy wins against replan: the verdicts of summary.json
+    (cluster interval excluding zero and Holm-adjusted p below 0.05)."""
+    summary = load(f"{folder}/{model}/summary.json")
+    strategies = [s for s in strategies_of(load(f"{folder}/{model}/runs.json")) if s != "replan"]
+    rows = []
+    for kind in KINDS:
+        against = summary["kinds"].get(kind, {}).get("against_replan")
+        if against is None:
+            continue
+        rows.append([kind] + [verdict_cell(against, m, strategies) for m, _ in WIN_METRICS])
+    return table(["failure kind"] + [label for _, label in WIN_METRICS], rows)
+
+
 def study_switch():
     """How often switch took one of its alternatives instead of replanning."""
     runs = [r for r in load(f"{STUDY}/iot/runs.json") if r["strategy"] == "switch"]
@@ -158,6 +205,7 @@ def stability_by_domain(folder):
 BLOCKS = {
     "study-mix": study_mix,
     "study-switch": study_switch,
+    "study-wins": study_wins,
     "scatter-mix": lambda: study_mix(SCATTERED),
     "tags-by-scatter": tags_by_scatter,
     "stability-1-5": lambda: stability_block(STABILITY[0]),

@@ -36,6 +36,7 @@ std::map<RunKey, const StudyRun*> index(const std::vector<StudyRun>& runs, const
 struct Measures {
   std::size_t runs = 0, comforted = 0;
   double delay = 0.0, cost = 0.0;  // means over comforted runs
+  std::size_t measured = 0;        // comforted runs with a delay and a cost
 };
 
 Measures measure(const std::map<RunKey, const StudyRun*>& runs, const std::string& strategy) {
@@ -56,6 +57,7 @@ Measures measure(const std::map<RunKey, const StudyRun*>& runs, const std::strin
     m.delay /= static_cast<double>(counted);
     m.cost /= static_cast<double>(counted);
   }
+  m.measured = counted;
   return m;
 }
 
@@ -72,8 +74,9 @@ void models_table(std::ostream& out,
     for (const auto& [model, runs] : by_model) {
       const Measures m = measure(runs, s);
       row.push_back(std::to_string(m.comforted) + "/" + std::to_string(m.runs));
-      row.push_back(fixed(m.delay, 1));
-      row.push_back(fixed(m.cost, 1));
+      // No comforted run, no mean: a 0.0 would read as "on time, free".
+      row.push_back(m.measured ? fixed(m.delay, 1) : "-");
+      row.push_back(m.measured ? fixed(m.cost, 1) : "-");
     }
     table.add(row);
   }

@@ -55,6 +55,7 @@ TEST_CASE("the observation tables pair the same runs across models: full minus i
   CHECK(md.find("## iot (seen: a tagged object") != std::string::npos);
   CHECK(md.find("| replan | 12/12 |") != std::string::npos);
   CHECK(md.find("11/12") != std::string::npos);
+  CHECK(md.find("| 0/") == std::string::npos);
 
   const std::string full_iot = section(md, "full minus iot:\n");
   CHECK(full_iot.find("| replan | comforted | 12 in 6 homes | 0.000 |") != std::string::npos);
@@ -78,4 +79,13 @@ TEST_CASE("without camera runs there is no tag table, and kinds without runs are
   CHECK(md.find("## iot (") == std::string::npos);
   CHECK(md.find("full minus iot:\n") != std::string::npos);
   CHECK(md.find("iot minus camera (what") == std::string::npos);
+}
+
+TEST_CASE("a model under which no run was comforted shows no mean delay or cost, not zeros") {
+  std::map<std::string, std::vector<StudyRun>> by_model;
+  by_model["iot"].push_back(run("h0", 0, "replan", "moves", 12.0));
+  by_model["camera"].push_back(run("h0", 0, "replan", "moves", std::nullopt));
+  const std::string md = observation_tables(by_model, {"replan"}, BootstrapOptions{});
+  INFO(md);
+  CHECK(md.find("| replan | 1/1 | 12.0 | 100.0 | 0/1 | - | - |") != std::string::npos);
 }
