@@ -25,19 +25,25 @@ Home paper_home() {
   return {std::move(files), std::move(task)};
 }
 
-}  // namespace
-
-TEST_CASE("a handover to a senior who is not in the room changes nothing, and says why") {
-  const Home h = paper_home();
-  const ActionId give = test::action_named(*h.task, "(give robot1 senior1 guitar_id01 bedroom1)");
-  // The robot holds the guitar in the senior's room, as the plan would have
-  // it by now; the senior has left.
-  WorldState there = initial_world(*h.files.problem);
+// The robot holds the guitar in bedroom1, the senior's room in the
+// problem, as the plan would have it before its handover.
+WorldState holding_guitar_in_bedroom1(const pddl::Problem& problem) {
+  WorldState there = initial_world(problem);
   for (const AtomKey& a : std::vector<AtomKey>(there.atoms.begin(), there.atoms.end())) {
     if (a.size() == 3 && a[0] == "be" && (a[1] == "robot1" || a[1] == "guitar_id01")) there.set(a, false);
   }
   there.set({"be", "robot1", "bedroom1"}, true);
   there.set({"holding", "robot1", "guitar_id01"}, true);
+  return there;
+}
+
+}  // namespace
+
+TEST_CASE("a handover to a senior who is not in the room changes nothing, and says why") {
+  const Home h = paper_home();
+  const ActionId give = test::action_named(*h.task, "(give robot1 senior1 guitar_id01 bedroom1)");
+  // The senior has left before the handover.
+  WorldState there = holding_guitar_in_bedroom1(*h.files.problem);
   WorldSimulator sim(there, senior_moves(1.0, "senior1", "bedroom1", "sunroom1"));
   sim.advance(2.0);
   REQUIRE_FALSE(sim.holds({"be", "senior1", "bedroom1"}));
@@ -59,12 +65,7 @@ TEST_CASE("a handover to a senior who is not in the room changes nothing, and sa
 
 TEST_CASE("a senior who walks away in the middle of a handover does not receive the item") {
   const Home h = paper_home();
-  WorldState there = initial_world(*h.files.problem);
-  for (const AtomKey& a : std::vector<AtomKey>(there.atoms.begin(), there.atoms.end())) {
-    if (a.size() == 3 && a[0] == "be" && (a[1] == "robot1" || a[1] == "guitar_id01")) there.set(a, false);
-  }
-  there.set({"be", "robot1", "bedroom1"}, true);
-  there.set({"holding", "robot1", "guitar_id01"}, true);
+  WorldState there = holding_guitar_in_bedroom1(*h.files.problem);
   REQUIRE(there.holds({"be", "senior1", "bedroom1"}));
   WorldSimulator sim(there, senior_moves(5.0, "senior1", "bedroom1", "sunroom1"));
   const ActionId give = test::action_named(*h.task, "(give robot1 senior1 guitar_id01 bedroom1)");
@@ -80,12 +81,7 @@ TEST_CASE("a senior who walks away in the middle of a handover does not receive 
 
 TEST_CASE("an action whose conditions hold does what it says, and nothing is void") {
   const Home h = paper_home();
-  WorldState there = initial_world(*h.files.problem);
-  for (const AtomKey& a : std::vector<AtomKey>(there.atoms.begin(), there.atoms.end())) {
-    if (a.size() == 3 && a[0] == "be" && (a[1] == "robot1" || a[1] == "guitar_id01")) there.set(a, false);
-  }
-  there.set({"be", "robot1", "bedroom1"}, true);
-  there.set({"holding", "robot1", "guitar_id01"}, true);
+  WorldState there = holding_guitar_in_bedroom1(*h.files.problem);
   WorldSimulator sim(there, {});
   const ActionId give = test::action_named(*h.task, "(give robot1 senior1 guitar_id01 bedroom1)");
   sim.start_action(*h.task, give, 0.0, 10.0);
