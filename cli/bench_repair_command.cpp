@@ -79,7 +79,12 @@ int summarize_models(const BenchRepairOptions& o) {
   for (const char* model : {"full", "iot", "camera"}) {
     const std::string runs = o.summarize + "/" + model + "/runs.json";
     if (!std::ifstream(runs)) continue;
-    by_model[model] = bench::load_study_runs(runs);
+    try {
+      by_model[model] = bench::load_study_runs(runs);
+    } catch (const std::exception& e) {
+      std::cerr << "error: " << runs << ": " << e.what() << "\n";
+      return kExitInputError;
+    }
     for (const bench::StudyRun& r : by_model[model]) {
       if (std::find(strategies.begin(), strategies.end(), r.strategy) == strategies.end()) strategies.push_back(r.strategy);
     }

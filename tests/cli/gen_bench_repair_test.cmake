@@ -88,6 +88,8 @@ if(NOT first_tables STREQUAL again)
   message(FATAL_ERROR "bench repair --summarize wrote other tables than the run did")
 endif()
 expect_run(2 "needs the runs.json of two observation models" ${ALPLAN} bench repair --summarize ${WORK}/repair)
+file(WRITE ${WORK}/repair-models/camera/runs.json "[{\"home\": 1}]")
+expect_run(2 "repair-models/camera/runs.json: " ${ALPLAN} bench repair --summarize ${WORK}/repair-models)
 # The stability testbed on an IPC domain (benchmarks/harness/stability_bench.h):
 # a small run writes its files; bad flags are refused with the reason.
 expect_run(0 "Plan stability" ${ALPLAN} bench stability --ipc ${SHARED}/benchmarks/ipc --domains rovers --problems 1
