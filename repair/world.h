@@ -49,10 +49,7 @@ class World {
   virtual std::vector<ActionInProgress> in_progress() const = 0;
   // The actions that came to nothing, from the first-th on (a world that
   // does whatever it is told has none).
-  virtual std::vector<VoidAction> void_actions_since(std::size_t first) const {
-    (void)first;
-    return {};
-  }
+  virtual std::vector<VoidAction> void_actions_since(std::size_t /*first*/) const { return {}; }
 };
 
 }  // namespace alplan::repair

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "planner/evaluation.h"
+#include "planner/happening_effects.h"
+
 namespace alplan::repair {
 namespace {
 
@@ -184,21 +187,14 @@ void WorldSimulator::advance(double t) {
   world_.time = std::max(world_.time, t);
 }
 
-void WorldSimulator::apply_snap(const GroundTask& task, ActionId action, bool start, double t, double duration) {
-  flow_until(t);
-  apply_snap_effects(task, action, start, duration, world_);
-  world_.time = std::max(world_.time, t);
-}
-
-std::optional<VoidAction> WorldSimulator::contradicted(const GroundTask& task, const ConditionSet& c) const {
-  if (c.positive.empty() && c.negative.empty()) return std::nullopt;
-  const StateMapping mapping(task);
-  const ExplicitState state = mapping.to_explicit(world_);
+std::optional<VoidAction> WorldSimulator::contradicted(const GroundTask& task, const StateMapping& mapping,
+                                                       const ExplicitState& state, const ConditionSet& c,
+                                                       const std::string& when) {
   auto literal = [&](FactId f, bool holds) {
     VoidAction v;
     if (!task.is_derived(f)) v.literal = mapping.fact_key(f);
     v.holds = holds;
-    v.why = holds ? "(not " + task.fact_name(f) + ")" : task.fact_name(f);
+    v.why = (holds ? "(not " + task.fact_name(f) + ")" : task.fact_name(f)) + " " + when;
     return v;
   };
   for (FactId f : c.positive) {
@@ -210,10 +206,29 @@ std::optional<VoidAction> WorldSimulator::contradicted(const GroundTask& task, c
   return std::nullopt;
 }
 
-void WorldSimulator::void_action(VoidAction v, const std::string& name, double t, const std::string& when) {
+std::optional<VoidAction> WorldSimulator::try_snap(const GroundTask& task, const StateMapping& mapping,
+                                                   ActionId action, bool start, double duration) {
+  const GroundAction& a = task.actions[action];
+  ExplicitState state = mapping.to_explicit(world_);
+  if (auto failed = contradicted(task, mapping, state, start ? a.at_start : a.at_end,
+                                 start ? "did not hold at its start" : "did not hold at its end")) {
+    return failed;
+  }
+  EvaluationContext context;
+  context.duration = duration;
+  apply_happening(task, start ? a.start : a.end, state, context);
+  if (start && a.durative) {
+    // Over all: from just after the start, so the start's own effects count.
+    derive(task, state);
+    if (auto broken = contradicted(task, mapping, state, a.over_all, "did not hold as it began")) return broken;
+  }
+  mapping.write_back(state, world_);
+  return std::nullopt;
+}
+
+void WorldSimulator::void_action(VoidAction v, const std::string& name, double t) {
   v.time = t;
   v.action = name;
-  v.why += " " + when;
   void_actions_.push_back(std::move(v));
   void_.insert(name);
 }
@@ -232,8 +247,8 @@ void WorldSimulator::check_invariants(double t) {
         VoidAction v;
         v.literal = k;
         v.holds = !value;
-        v.why = value ? to_string(k) : "(not " + to_string(k) + ")";
-        void_action(std::move(v), name, t, "stopped holding while it ran");
+        v.why = (value ? to_string(k) : "(not " + to_string(k) + ")") + " stopped holding while it ran";
+        void_action(std::move(v), name, t);
         break;
       }
       if (void_.count(name)) break;
@@ -248,45 +263,33 @@ void WorldSimulator::start_action(const GroundTask& task, ActionId action, doubl
   std::vector<std::pair<AtomKey, double>> rates = continuous_rates(task, action, duration, world_);
   const GroundAction& a = task.actions[action];
   const std::string name = task.action_name(a);
+  const StateMapping mapping(task);
   void_.erase(name);
-  if (std::optional<VoidAction> failed = contradicted(task, a.at_start)) {
-    // It comes to nothing: no effects now, none at its end.
-    void_action(std::move(*failed), name, t, "did not hold at its start");
+  if (std::optional<VoidAction> failed = try_snap(task, mapping, action, true, duration)) {
+    // It does not begin: nothing changes now and nothing at its end (the
+    // robot keeps the item it would have handed to no one).
+    void_action(std::move(*failed), name, t);
     rates.clear();
-    world_.time = std::max(world_.time, t);
   } else {
-    const WorldState before = world_;
-    apply_snap(task, action, true, t, duration);
-    // Over all: from just after the start, so the start's own effects count;
-    // broken at once, the action does not begin (the robot keeps the item
-    // it would have handed to no one).
-    if (std::optional<VoidAction> broken = contradicted(task, a.over_all)) {
-      world_ = before;
-      world_.time = std::max(world_.time, t);
-      void_action(std::move(*broken), name, t, "did not hold as it began");
-      rates.clear();
-    } else {
-      check_invariants(t);  // of the others: the robot's own start may break one
-    }
+    check_invariants(t);  // of the others: the robot's own start may break one
   }
+  world_.time = std::max(world_.time, t);
   if (!a.durative) {
     void_.erase(name);  // instantaneous: nothing more to come
     return;
   }
   Invariant invariant;
-  const StateMapping invariant_mapping(task);
   for (FactId f : a.over_all.positive) {
-    if (!task.is_derived(f)) invariant.positive.push_back(invariant_mapping.fact_key(f));
+    if (!task.is_derived(f)) invariant.positive.push_back(mapping.fact_key(f));
   }
   for (FactId f : a.over_all.negative) {
-    if (!task.is_derived(f)) invariant.negative.push_back(invariant_mapping.fact_key(f));
+    if (!task.is_derived(f)) invariant.negative.push_back(mapping.fact_key(f));
   }
   invariants_[name] = std::move(invariant);
   ActionInProgress p;
   p.rates = std::move(rates);
-  p.name = task.action_name(a);
+  p.name = name;
   p.expected_end = t + duration;
-  const StateMapping mapping(task);
   for (FactId f : a.end.add) p.adds.push_back(mapping.fact_key(f));
   for (FactId f : a.end.del) p.dels.push_back(mapping.fact_key(f));
   durations_[p.name] = duration;
@@ -307,18 +310,15 @@ bool WorldSimulator::end_action(const GroundTask& task, ActionId action, double 
   }
   if (it != running_.end()) running_.erase(it);
   invariants_.erase(name);
-  if (!void_.count(name)) {
-    if (std::optional<VoidAction> failed = contradicted(task, task.actions[action].at_end)) {
-      void_action(std::move(*failed), name, t, "did not hold at its end");
+  if (void_.erase(name) == 0) {  // one already void ends with no effect
+    if (std::optional<VoidAction> failed = try_snap(task, StateMapping(task), action, false, durations_[name])) {
+      void_action(std::move(*failed), name, t);
+      void_.erase(name);
+    } else {
+      check_invariants(t);
     }
   }
-  if (void_.erase(name) == 0) {
-    apply_snap(task, action, false, t, durations_[name]);
-    check_invariants(t);
-  } else {
-    flow_until(t);
-    world_.time = std::max(world_.time, t);
-  }
+  world_.time = std::max(world_.time, t);
   return true;
 }
 

@@ -109,16 +109,23 @@ class WorldSimulator : public World, public ObjectRecognizer {
 
  private:
   void apply(const ExogenousEvent& e);
-  void apply_snap(const GroundTask& task, ActionId action, bool start, double t, double duration);
   // Moves the values of running actions' continuous effects on to time t.
   void flow_until(double t);
   // An overrunning action ends on its own: the values flow up to its end,
   // then its end's facts change.
   void finish(const ActionInProgress& a);
-  // The first literal of `c` the world contradicts (its `why` says which,
-  // as "(be senior1 room)" or "(not (...))"); nothing when all hold.
-  std::optional<VoidAction> contradicted(const GroundTask& task, const ConditionSet& c) const;
-  void void_action(VoidAction v, const std::string& name, double t, const std::string& when);
+  // The first literal of `c` that `state` contradicts (its `why` says which,
+  // "(be senior1 room)" or "(not (...))", then `when`); nothing when all hold.
+  static std::optional<VoidAction> contradicted(const GroundTask& task, const StateMapping& mapping,
+                                                const ExplicitState& state, const ConditionSet& c,
+                                                const std::string& when);
+  // A snap of `action` (its start or its end) done on the world if the world
+  // allows it: its condition before its effects and, for a start, its
+  // invariant on the state they make, on one explicit state. Nothing changes
+  // when either fails; the failure is returned.
+  std::optional<VoidAction> try_snap(const GroundTask& task, const StateMapping& mapping, ActionId action,
+                                     bool start, double duration);
+  void void_action(VoidAction v, const std::string& name, double t);
   // The invariants of the running actions against the world now.
   void check_invariants(double t);
 

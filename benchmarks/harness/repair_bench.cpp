@@ -1,8 +1,6 @@
 #include "benchmarks/harness/repair_bench.h"
 
 #include <algorithm>
-#include <cstdlib>
-#include <iostream>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -92,7 +90,6 @@ RunRecord execute(const std::string& home_name, int run, const repair::Mission& 
   const std::unique_ptr<repair::ObjectRecognizer> camera = o.camera ? o.camera(world) : nullptr;
   repair::ObjectRecognizer* eyes = camera ? camera.get() : &world;
   const repair::ExecutionReport report = monitor.run(mission, plan, world, strategy, eyes, &ontology);
-  if (std::getenv("ALPLAN_DEBUG_EVENTS")) { for (const auto& e : report.events) std::cerr << "EV " << e << "\n"; }
   RunRecord r;
   r.home = home_name;
   r.run = run;
