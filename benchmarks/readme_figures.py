@@ -30,7 +30,8 @@ TAGS = "tags-by-scatter-2026-11-28"
 # Folder under TAGS, and the row's label: the scatter, and the repairs'
 # search when it is not the study's (anytime down to weight 3).
 SCATTERS = [("scatter-0", "0"), ("scatter-0.5", "0.5"), ("scatter-1", "1"),
-            ("scatter-1-min-weight-1", "1, repairs to weight 1")]
+            ("scatter-1-min-weight-1", "1, repairs to weight 1"),
+            ("scatter-1-min-weight-1-adapt-1", "1, repairs and adapt to weight 1")]
 STABILITY = ["stability-ipc2002-1-5-2026-11-28", "stability-ipc2002-6-10-2026-11-28"]
 MODELS = ["full", "iot", "camera"]
 
