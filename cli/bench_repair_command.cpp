@@ -204,6 +204,9 @@ void add_bench_repair_command(CLI::App* bench, int& exit_code) {
                 "What the monitor sees: full (the true state), iot (IoT tags, wristbands, the robot's camera; the "
                 "paper's), camera (the robot's camera only); a list (full,iot,camera) runs the study under each, "
                 "in out/MODEL/, and compares them in out/observation.md");
+  r->add_flag("!--no-search", o->bench.observation.search_lost_persons,
+              "A senior the robot finds gone (camera) is believed nowhere, instead of searched for nearest place "
+              "first (repair/person_search.h)");
   r->add_option("--recognizer", o->recognizer,
                 "What names the new things the camera sees: cnn (the paper's CNN on drawings of them, trained when "
                 "the run starts; its time is part of substitute's latency) or simulated (the simulator, perfect, free)");

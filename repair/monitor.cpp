@@ -28,6 +28,23 @@ std::string location_of(const WorldState& world, const std::string& object) {
   return {};
 }
 
+// "(be senior1 room2)" as {"be", "senior1", "room2"}; a condition that is
+// not one atom gives words that name no location fact.
+AtomKey key_of_condition(const std::string& condition) {
+  AtomKey words;
+  std::string word;
+  for (const char c : condition) {
+    if (c == '(' || c == ')' || c == ' ') {
+      if (!word.empty()) words.push_back(word);
+      word.clear();
+    } else {
+      word += c;
+    }
+  }
+  if (!word.empty()) words.push_back(word);
+  return words;
+}
+
 // Where each step of the executing plan stands.
 struct Progress {
   std::vector<bool> started, ended;
@@ -98,6 +115,7 @@ nlohmann::json ExecutionReport::json() const {
                             {"condition", r.failure.condition},
                             {"foreseen", r.foreseen},
                             {"deferred", r.deferred},
+                            {"search", r.search},
                             {"strategy", r.strategy},
                             {"fallback", r.fallback},
                             {"perception_seconds", r.perception_seconds},
@@ -355,12 +373,13 @@ class MonitoredExecution::Impl {
 
   std::size_t final_repairs() const {
     return static_cast<std::size_t>(std::count_if(report_.repairs.begin(), report_.repairs.end(),
-                                                  [](const RepairRecord& r) { return !r.deferred; }));
+                                                  [](const RepairRecord& r) { return !r.deferred && !r.search; }));
   }
 
   Attempt repair(const Violation& failure, bool foreseen, const WorldState& observed, double t) {
     report_.events.push_back(time_text(t) + ": failure: " + describe_failure(failure, foreseen));
-    if (static_cast<int>(final_repairs()) >= options_.max_repairs) {
+    const bool search_step = belief_.search().assumed(failure.condition);
+    if (!search_step && static_cast<int>(final_repairs()) >= options_.max_repairs) {
       done(false, "gave up after " + std::to_string(final_repairs()) + " repairs: " +
                       describe_failure(failure, foreseen), t);
       return Attempt::Ended;
@@ -370,6 +389,7 @@ class MonitoredExecution::Impl {
     const std::optional<std::string> new_goal = regenerate_goal(observed, t);
     RepairResult result = strategy_.repair(request(failure, observed, t));
     report_.repairs.push_back(record_of(failure, foreseen, result, strategy_.name(), t, why));
+    note_search(report_.repairs.back());
     if (new_goal) {
       std::string& how = report_.repairs.back().explanation.how;
       how = *new_goal + "; " + how;
@@ -398,6 +418,25 @@ class MonitoredExecution::Impl {
     adopt(with_all_conditions(*result.plan));
     tell({MonitorEvent::Kind::Plan, t, {}, "repair", &plan_, nullptr, result.seconds});
     return Attempt::Repaired;
+  }
+
+  // A failure of a guess of the search for a lost person, or the failure
+  // that lost them: the explanation says where the robot has looked and
+  // where it looks next.
+  void note_search(RepairRecord& record) const {
+    const PersonSearch& search = belief_.search();
+    record.search = search.assumed(record.failure.condition);
+    const AtomKey failed = key_of_condition(record.failure.condition);
+    if (failed.size() != 3 || failed[0] != options_.observation.location_predicate) return;
+    const std::optional<PersonSearch::Status> status = search.status(failed[1]);
+    if (!status) return;
+    std::string looked;
+    for (const std::string& room : status->looked_in) looked += (looked.empty() ? "" : ", ") + room;
+    record.explanation.what += "; the robot lost sight of " + status->person + " at " + time_text(status->lost_at) +
+                               " and has looked in " + looked;
+    record.explanation.what += status->guess ? ", so it looks next in " + *status->guess +
+                                                   ", the nearest place it has not looked in"
+                                             : ", every place it can reach";
   }
 
   // Is the goal still the right one? An emotion may have changed. Returns

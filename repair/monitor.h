@@ -123,6 +123,10 @@ struct RepairRecord {
   bool foreseen = false;  // found by looking ahead
   // Not mended yet, but not due either: execution went on (defer_foreseen).
   bool deferred = false;
+  // A step of the search for a person lost from sight (person_search.h):
+  // the condition that failed was where the search guessed they were. It is
+  // bounded by the home's places, so it does not count against max_repairs.
+  bool search = false;
   std::string strategy;
   std::string fallback;  // what the strategy did instead, when it could not do its own (RepairResult)
   bool repaired = false;

@@ -55,7 +55,9 @@ Belief::Belief(const pddl::Problem& problem, ObservationOptions options)
     : options_(std::move(options)),
       objects_(sensed_objects(problem, options_)),
       state_(initial_world(problem)),
-      timed_literals_(problem.timed_literals) {
+      timed_literals_(problem.timed_literals),
+      search_(PersonSearchOptions{options_.location_predicate, options_.path_predicate,
+                                  options_.distance_function}) {
   std::stable_sort(timed_literals_.begin(), timed_literals_.end(),
                    [](const pddl::TimedInitialLiteral& a, const pddl::TimedInitialLiteral& b) { return a.time < b.time; });
 }
@@ -143,6 +145,7 @@ bool Belief::observe(const WorldState& truth) {
   }
   for (const auto& [key, value] : truth.values) state_.values[key] = value;
   state_.time = std::max(state_.time, truth.time);
+  if (options_.search_lost_persons && search_.update(objects_.persons, view.rooms, truth.time, state_)) changed = true;
   news_ += changed;
   return changed;
 }

@@ -31,6 +31,7 @@
 #include "pddl_parser/ast.h"
 #include "planner/ground_task.h"
 #include "repair/object_recognizer.h"
+#include "repair/person_search.h"
 #include "repair/world_state.h"
 
 namespace alplan::repair {
@@ -51,6 +52,12 @@ struct ObservationOptions {
   std::string iot_predicate = "iot_tagged";
   std::string robot_type = "robot";
   std::string person_type = "senior";  // wear wristbands; the home's cameras see them
+  // A person the belief places nowhere (the camera saw their room empty) is
+  // searched for: assumed in the nearest place not looked in yet
+  // (person_search.h). Off, the robot knows no more than that they left.
+  bool search_lost_persons = true;
+  std::string path_predicate = "path";            // the ways between places
+  std::string distance_function = "moving_time";  // their travel times
 };
 
 // The problem's objects as the sensors sort them.
@@ -95,6 +102,8 @@ class Belief {
   // When the fact was last in view; nothing if never (it is assumed).
   std::optional<double> last_seen(const AtomKey& key) const;
   ObservationModel model() const { return options_.model; }
+  // The searches for persons lost from sight, and the guesses they made.
+  const PersonSearch& search() const { return search_; }
 
  private:
   // What the robot's senses take in at one observation.
@@ -115,6 +124,7 @@ class Belief {
   std::map<AtomKey, double> seen_at_;
   std::vector<pddl::TimedInitialLiteral> timed_literals_;  // not yet applied, by time
   std::vector<Sighting> sightings_;
+  PersonSearch search_;
   std::size_t news_ = 0;
 };
 

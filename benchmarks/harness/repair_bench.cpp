@@ -46,6 +46,7 @@ struct RunRecord {
   double perception_ms = 0.0;          // of the latencies: substitution asking perception
   std::size_t sightings = 0;           // new things the camera saw
   std::size_t void_actions = 0;        // actions that came to nothing in the world (world.h)
+  std::size_t search_steps = 0;        // of the repairs: places looked in for a senior lost from sight
   // Until the senior is comforted, beyond the original plan's end; none
   // for a run that never comforts the senior (its end is the failure's).
   std::optional<double> delay;
@@ -106,6 +107,7 @@ RunRecord execute(const std::string& home_name, int run, const repair::Mission& 
     r.stability += rep.plan_distance;
     r.planner_calls += rep.planner_calls;
     r.fallbacks += rep.fallback.empty() ? 0 : 1;
+    r.search_steps += rep.search ? 1 : 0;
   }
   double planned_end = 0.0;
   for (const repair::ScheduledAction& s : plan.steps) planned_end = std::max(planned_end, s.end());
@@ -155,7 +157,8 @@ nlohmann::json to_json(const RunRecord& r) {
           {"reused_grounding", r.reused_grounding}, {"preparation_ms", r.preparation_ms},
           {"stability", r.stability}, {"fallbacks", r.fallbacks}, {"planner_calls", r.planner_calls},
           {"delay", r.delay ? nlohmann::json(*r.delay) : nlohmann::json()}, {"makespan", r.makespan},
-          {"cost", r.cost}, {"sightings", r.sightings}, {"void_actions", r.void_actions}, {"failures", r.failures}, {"outcome", r.outcome}};
+          {"cost", r.cost}, {"sightings", r.sightings}, {"void_actions", r.void_actions},
+          {"search_steps", r.search_steps}, {"failures", r.failures}, {"outcome", r.outcome}};
 }
 
 RunRecord record_from_json(const nlohmann::json& j) {
@@ -178,6 +181,7 @@ RunRecord record_from_json(const nlohmann::json& j) {
   r.cost = j.at("cost");
   r.sightings = j.at("sightings");
   r.void_actions = j.value("void_actions", std::size_t{0});  // runs written before the world checked conditions
+  r.search_steps = j.value("search_steps", std::size_t{0});  // runs written before the robot searched
   r.failures = j.at("failures");
   r.outcome = j.at("outcome");
   return r;
@@ -210,7 +214,8 @@ void write_outputs(const RepairBenchOptions& o, const std::vector<RunRecord>& re
   all["options"] = {{"homes", o.homes}, {"runs_per_home", o.runs_per_home}, {"failures_per_run", o.failures_per_run},
                     {"seed", o.seed}, {"rooms", o.home.rooms}, {"seniors", o.home.seniors},
                     {"objects", o.home.objects}, {"iot_share", o.home.iot_share}, {"scatter", o.home.scatter},
-                    {"observe", repair::to_string(o.observation.model)}, {"executions", records.size()}};
+                    {"observe", repair::to_string(o.observation.model)},
+                    {"search_lost_persons", o.observation.search_lost_persons}, {"executions", records.size()}};
   all.update(extra);
   std::ofstream(fs::path(o.out_dir) / "summary.json") << all.dump(2) << "\n";
   for (const auto& [file, svg] : study.plots) std::ofstream(fs::path(o.out_dir) / "plots" / file) << svg;
@@ -219,6 +224,7 @@ void write_outputs(const RepairBenchOptions& o, const std::vector<RunRecord>& re
        << ", observation model " << repair::to_string(o.observation.model) << ", " << records.size()
        << " executions; every strategy meets the same failures.\n\n";
   if (o.home.scatter > 0.0) head << "- a share " << o.home.scatter << " of objects left away from their room\n";
+  if (!o.observation.search_lost_persons) head << "- a senior the robot finds gone is not searched for (--no-search)\n";
   head << "- grounding reused by " << extra.value("repairs_reusing_grounding", 0) << " of " << extra.value("repairs", 0)
        << " repair attempts (the grounding made when execution starts, repair/monitor.h)\n";
   for (const auto& [key, value] : extra.items()) head << "- " << key << ": " << value.dump() << "\n";

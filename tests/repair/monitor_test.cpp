@@ -257,10 +257,11 @@ TEST_CASE("camera alone: a senior who moved away is not comforted by a handover 
   s.events = repair::senior_moves(200.0, "senior1", "bedroom1", "sunroom1");
   ScenarioOptions o = options("replan");
   o.monitor.observation.model = repair::ObservationModel::Camera;
+  o.monitor.observation.search_lost_persons = false;
   const ScenarioRun run = run_paper_scenario(s, o);
   for (const std::string& e : run.report.events) UNSCOPED_INFO(e);
-  // Its camera sees the room empty when it gets there; it has no way to
-  // know where the senior went, so no plan reaches the goal.
+  // Its camera sees the room empty when it gets there; without a search it
+  // has no way to know where the senior went, so no plan reaches the goal.
   CHECK_FALSE(run.report.goal_reached);
   const bool seen_empty = std::any_of(run.report.events.begin(), run.report.events.end(), [](const std::string& e) {
     return e.find("(be senior1 bedroom1)") != std::string::npos && e.find("failure") != std::string::npos;
@@ -269,4 +270,28 @@ TEST_CASE("camera alone: a senior who moved away is not comforted by a handover 
   // Under iot the wristband tells it, and the give happens in the sunroom.
   o.monitor.observation.model = repair::ObservationModel::Iot;
   CHECK(run_paper_scenario(s, o).report.goal_reached);
+}
+
+TEST_CASE("camera alone: the robot searches for a senior who moved, nearest place first, and finds them") {
+  PaperScenario s = scenario(2);
+  s.events = repair::senior_moves(200.0, "senior1", "bedroom1", "sunroom1");
+  ScenarioOptions o = options("replan");
+  o.monitor.observation.model = repair::ObservationModel::Camera;
+  o.monitor.max_repairs = 1;  // the search's steps do not count against it
+  const ScenarioRun run = run_paper_scenario(s, o);
+  for (const std::string& e : run.report.events) UNSCOPED_INFO(e);
+  REQUIRE(run.report.goal_reached);
+  // bedroom1 found empty (a failure of what the problem said), then
+  // corridor1 (30 s from bedroom1) guessed and found empty (a step of the
+  // search), then sunroom1 (25 s from corridor1, nearer than bedroom2's 30),
+  // where the camera sees senior1.
+  REQUIRE(run.report.repairs.size() == 2);
+  CHECK(run.report.repairs[0].failure.condition == "(be senior1 bedroom1)");
+  CHECK_FALSE(run.report.repairs[0].search);
+  CHECK(run.report.repairs[1].failure.condition == "(be senior1 corridor1)");
+  CHECK(run.report.repairs[1].search);
+  CHECK(run.report.repairs[1].explanation.what.find("lost sight of senior1") != std::string::npos);
+  CHECK(run.report.repairs[1].explanation.what.find("looks next in sunroom1") != std::string::npos);
+  CHECK(run.report.repairs[1].plan_text.find("sunroom1") != std::string::npos);
+  CHECK(run.report.void_actions == 0);  // it never handed the instrument to an empty room
 }

@@ -140,6 +140,35 @@ TEST_CASE("camera: nothing from afar, not even a tag or a wristband") {
   b.observe(w);
   CHECK_FALSE(b.state().holds({"be", "senior1", "bedroom1"}));
   CHECK_FALSE(b.state().holds({"be", "senior1", "library1"}));  // but not where they went
+  // It searches: senior1 is assumed in the nearest place it has not looked
+  // in, corridor1 (30 s away), a guess its camera will check.
+  CHECK(b.state().holds({"be", "senior1", "corridor1"}));
+  CHECK(b.search().assumed("(be senior1 corridor1)"));
+  CHECK_FALSE(b.last_seen({"be", "senior1", "corridor1"}));
+}
+
+TEST_CASE("camera: without the search, a senior who left is believed nowhere") {
+  const pddl::Problem problem = paper_home();
+  repair::ObservationOptions options;
+  options.model = ObservationModel::Camera;
+  options.search_lost_persons = false;
+  Belief b(problem, options);
+  repair::WorldState w = changed_world(problem);
+  w.set({"be", "robot1", "corridor2"}, false);
+  w.set({"be", "robot1", "bedroom1"}, true);
+  b.observe(w);
+  for (const AtomKey& a : b.state().atoms) CHECK_FALSE((a.size() == 3 && a[0] == "be" && a[1] == "senior1"));
+}
+
+TEST_CASE("iot: the wristband places every senior, so nobody is searched for") {
+  const pddl::Problem problem = paper_home();
+  Belief b = belief(problem, ObservationModel::Iot);
+  repair::WorldState w = changed_world(problem);
+  w.set({"be", "robot1", "corridor2"}, false);
+  w.set({"be", "robot1", "bedroom1"}, true);
+  b.observe(w);
+  CHECK(b.state().holds({"be", "senior1", "library1"}));
+  CHECK_FALSE(b.search().status("senior1"));
 }
 
 TEST_CASE("the belief follows the care plan's timed literals even out of view") {

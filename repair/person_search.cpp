@@ -1,0 +1,115 @@
+#include "repair/person_search.h"
+
+#include <algorithm>
+#include <limits>
+#include <queue>
+
+namespace alplan::repair {
+namespace {
+
+std::optional<std::string> believed_place(const WorldState& belief, const std::string& predicate,
+                                          const std::string& person) {
+  // Atoms are ordered by head, then subject: the person's are together.
+  for (auto it = belief.atoms.lower_bound({predicate, person}); it != belief.atoms.end(); ++it) {
+    const AtomKey& a = *it;
+    if (a.size() < 2 || a[0] != predicate || a[1] != person) break;
+    if (a.size() == 3) return a[2];
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+bool PersonSearch::update(const std::set<std::string>& persons, const std::set<std::string>& rooms, double time,
+                          WorldState& belief) {
+  if (!rooms.empty()) last_rooms_ = rooms;
+  bool changed = false;
+  for (const std::string& person : persons) {
+    const std::optional<std::string> place = believed_place(belief, options_.location_predicate, person);
+    auto it = searches_.find(person);
+    // Believed somewhere no guess put them, or at the guess while a robot
+    // looks there (the camera confirmed it): seen, so not lost.
+    const bool seen = place && (it == searches_.end() || it->second.guess != place || rooms.count(*place));
+    if (seen) {
+      if (it != searches_.end()) searches_.erase(it);
+      continue;
+    }
+    if (it == searches_.end()) it = searches_.emplace(person, Search{time, {}, std::nullopt, {}}).first;
+    Search& search = it->second;
+    for (const std::string& room : rooms) {
+      if (std::find(search.looked_in.begin(), search.looked_in.end(), room) == search.looked_in.end()) {
+        search.looked_in.push_back(room);
+      }
+    }
+    if (place) continue;  // the guess stands until a robot looks there
+    const std::optional<std::string> guess = nearest_unsearched(search, last_rooms_, belief);
+    changed = changed || guess != search.guess;
+    search.guess = guess;
+    if (!guess) continue;  // looked everywhere
+    const AtomKey fact{options_.location_predicate, person, *guess};
+    belief.set(fact, true);
+    search.assumed.insert(to_string(fact));
+  }
+  return changed;
+}
+
+// Dijkstra over the ways between places, from every place a robot is in.
+std::optional<std::string> PersonSearch::nearest_unsearched(const Search& search, const std::set<std::string>& from,
+                                                            const WorldState& belief) const {
+  std::map<std::string, std::vector<std::pair<std::string, double>>> ways;
+  for (const AtomKey& a : belief.atoms) {
+    if (a.size() != 3 || a[0] != options_.path_predicate) continue;
+    const auto time = belief.values.find({options_.distance_function, a[1], a[2]});
+    ways[a[1]].emplace_back(a[2], time == belief.values.end() ? 1.0 : time->second);
+    ways.try_emplace(a[2]);
+  }
+  constexpr double kUnreached = std::numeric_limits<double>::infinity();
+  std::map<std::string, double> distance;
+  for (const auto& [place, out] : ways) distance[place] = from.count(place) ? 0.0 : kUnreached;
+  using Entry = std::pair<double, std::string>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  for (const std::string& place : from) {
+    if (distance.count(place)) open.emplace(0.0, place);
+  }
+  while (!open.empty()) {
+    const auto [d, place] = open.top();
+    open.pop();
+    if (d > distance[place]) continue;
+    for (const auto& [next, w] : ways[place]) {
+      if (d + w < distance[next]) {
+        distance[next] = d + w;
+        open.emplace(d + w, next);
+      }
+    }
+  }
+  std::optional<std::string> best;
+  double best_distance = kUnreached;
+  for (const auto& [place, d] : distance) {  // by name among equals
+    const bool looked = std::find(search.looked_in.begin(), search.looked_in.end(), place) != search.looked_in.end();
+    if (looked) continue;
+    // With no robot placed yet, every place is as near as any other.
+    if (!best || d < best_distance) {
+      best = place;
+      best_distance = d;
+    }
+  }
+  if (best && best_distance == kUnreached && !from.empty()) return std::nullopt;  // no way there
+  return best;
+}
+
+bool PersonSearch::assumed(const std::string& condition) const { return searched_person(condition).has_value(); }
+
+std::optional<std::string> PersonSearch::searched_person(const std::string& condition) const {
+  for (const auto& [person, search] : searches_) {
+    if (search.assumed.count(condition)) return person;
+  }
+  return std::nullopt;
+}
+
+std::optional<PersonSearch::Status> PersonSearch::status(const std::string& person) const {
+  const auto it = searches_.find(person);
+  if (it == searches_.end()) return std::nullopt;
+  return Status{person, it->second.lost_at, it->second.looked_in, it->second.guess};
+}
+
+}  // namespace alplan::repair
