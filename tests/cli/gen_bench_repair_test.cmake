@@ -75,6 +75,21 @@ expect_run(0 "classifier_test_accuracy" ${ALPLAN} bench repair --homes 2 --runs-
   --strategies replan,substitute --events sibling --no-paper-home --out ${WORK}/repair-cnn)
 expect_run(2 "--recognizer takes cnn or simulated" ${ALPLAN} bench repair --homes 1 --recognizer oracle --out ${WORK}/x)
 expect_run(2 "--observe takes full, iot or camera" ${ALPLAN} bench repair --homes 1 --observe psychic --out ${WORK}/x)
+# The camera alone: a senior who moved is searched for, room by room, and
+# found; with --no-search the robot knows only that they left.
+expect_run(0 "latency median ms" ${ALPLAN} bench repair --homes 1 --runs-per-home 2 --seed 3 --strategies replan
+  --recognizer simulated --events moves --observe camera --no-paper-home --out ${WORK}/repair-search)
+file(READ ${WORK}/repair-search/runs.json searched)
+if(NOT searched MATCHES "\"comforted\": true" OR NOT searched MATCHES "\"search_steps\": [1-9]")
+  message(FATAL_ERROR "bench repair --observe camera: no senior who moved was searched for and found:\n${searched}")
+endif()
+expect_run(0 "not searched for (--no-search)" ${ALPLAN} bench repair --homes 1 --runs-per-home 2 --seed 3
+  --strategies replan --recognizer simulated --events moves --observe camera --no-paper-home --no-search
+  --out ${WORK}/repair-no-search)
+file(READ ${WORK}/repair-no-search/runs.json unsearched)
+if(unsearched MATCHES "\"comforted\": true" OR unsearched MATCHES "\"search_steps\": [1-9]")
+  message(FATAL_ERROR "bench repair --no-search: a senior who moved was searched for or found:\n${unsearched}")
+endif()
 # Under two models: each in its folder, observation.md pairing them; its
 # tables written again from the runs alone are the same tables.
 expect_run(0 "iot minus camera (what the tags are worth)" ${ALPLAN} bench repair --homes 2 --runs-per-home 1 --seed 3
