@@ -67,6 +67,12 @@ std::string resolve(BenchStabilityOptions& o) {
   if (o.bench.first_problem < 1 || o.bench.last_problem < o.bench.first_problem) {
     return "--problems takes N or N-M with 1 <= N <= M; got '" + o.problems + "'";
   }
+  try {
+    const EngineSpec proof = parse_search_configuration(o.bench.strategy.stable_proof_search).engine;
+    if (!proof.complete) return "--stable-search must be a complete search (complete(...)): only one proves";
+  } catch (const SearchConfigurationError& e) {
+    return std::string("--stable-search: ") + e.what();
+  }
   o.bench.kinds.clear();
   for (const std::string& k : split(o.kinds)) {
     const std::optional<bench::PerturbationKind> kind = bench::perturbation_kind(k);
@@ -148,6 +154,9 @@ void add_bench_stability_command(CLI::App* bench, int& exit_code) {
   s->add_option("--repair-expansions", o->expansions, "Expansions each anytime weight of a repair may spend");
   s->add_option("--adapt-budget", o->bench.strategy.adapt_budget, "adapt: seconds of anytime search")
       ->check(CLI::PositiveNumber);
+  s->add_option("--stable-search", o->bench.strategy.stable_proof_search,
+                "stable: the complete search on the distance that proves its repair minimal (default "
+                "complete(wastar(lmcut, w=1, order=metric, preferred=false)), A*; blind for uniform-cost search)");
   s->add_option("--out", o->out, "Folder for runs.csv, runs.json, summary.md");
   s->add_option("--summarize", o->summarize, "Write a run folder's summary.md again from its runs.json; runs nothing");
   s->callback([o, &exit_code] { exit_code = run_stability(*o); });

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "planner/blind_heuristic.h"
+#include "planner/lmcut_heuristic.h"
 #include "planner/evaluation.h"
 #include "planner/happening_executor.h"
 #include "planner/linear_metric.h"
@@ -256,6 +257,8 @@ class HeuristicPool {
     Entry e{spec, with_metric, nullptr};
     if (spec.kind == HeuristicSpec::Kind::Blind) {
       e.heuristic = std::make_unique<BlindHeuristic>(index_);
+    } else if (spec.kind == HeuristicSpec::Kind::LmCut) {
+      e.heuristic = std::make_unique<LmCutHeuristic>(index_, with_metric ? metric_ : nullptr);
     } else {
       TemporalRpgOptions options;
       options.helpful_actions = spec.helpful;

@@ -161,7 +161,12 @@ HeuristicSpec heuristic_of(const Call& c) {
     if (!c.arguments.empty()) fail_at(c.at, "blind takes no options");
     return h;
   }
-  if (c.name != "trpg") fail_at(c.at, "unknown heuristic '" + c.name + "' (expected trpg or blind)");
+  if (c.name == "lmcut") {
+    h.kind = HeuristicSpec::Kind::LmCut;
+    if (!c.arguments.empty()) fail_at(c.at, "lmcut takes no options");
+    return h;
+  }
+  if (c.name != "trpg") fail_at(c.at, "unknown heuristic '" + c.name + "' (expected trpg, blind or lmcut)");
   for (const Call::Argument& a : c.arguments) {
     if (a.key == "helpful") h.helpful = boolean(a);
     else if (a.key == "repetitions") h.repetitions = boolean(a);
@@ -342,6 +347,7 @@ std::string format_number(double x) {
 
 std::string heuristic_text(const HeuristicSpec& h) {
   if (h.kind == HeuristicSpec::Kind::Blind) return "blind";
+  if (h.kind == HeuristicSpec::Kind::LmCut) return "lmcut";
   std::string options;
   if (!h.helpful) options += ", helpful=false";
   if (!h.repetitions) options += ", repetitions=false";

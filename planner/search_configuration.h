@@ -11,7 +11,7 @@
 //                  | then(ENGINE, ENGINE, ...)      phases: the next runs when one gives up
 //                  | anytime(ENGINE, weights=[W, ...], expansions=N, order=steps|metric)
 //                  | preferences(ENGINE, rounds=B)  PDDL 3 (preference_search.h); outermost only
-//   HEURISTIC     := trpg(helpful=B, repetitions=B, balance=B) | blind
+//   HEURISTIC     := trpg(helpful=B, repetitions=B, balance=B) | blind | lmcut
 //
 // Leaf engines and portfolios also take `expansions=N` and `time_share=F`
 // (of the time limit): past either the phase gives up and the next of a
@@ -49,7 +49,7 @@
 namespace alplan {
 
 struct HeuristicSpec {
-  enum class Kind { Trpg, Blind };
+  enum class Kind { Trpg, Blind, LmCut };
   Kind kind = Kind::Trpg;
   bool helpful = true;      // trpg: helpful actions
   bool repetitions = true;  // trpg: repetitions of constant producers

@@ -4,19 +4,23 @@
 // (stable_compilation.h) whose plans cost their distance from the old plan.
 //
 // What the search guarantees. The compiled task is searched first with
-// complete(wastar(blind, w=1, order=metric)), a uniform-cost search on
-// (total-cost), within stable_proof_share of stable_budget:
+// StrategyOptions::stable_proof_search, complete(wastar(H, w=1,
+// order=metric)), within stable_proof_share of stable_budget:
 // - ordered by the metric, f = g + w * metric->remaining(relaxed_cost, ...)
-//   (best_first_search.cpp, push), and blind's HeuristicValue leaves cost,
-//   hence relaxed_cost, at 0 (blind_heuristic.cpp; search_space.cpp sets
-//   relaxed_cost = value.cost) and the metric has no total-time term, so
-//   f = g, the cost so far, whatever h is;
+//   (best_first_search.cpp, push; search_space.cpp sets relaxed_cost =
+//   value.cost) and the metric has no total-time term, so f = g + H's cost
+//   estimate: with lmcut (the default) an estimate that never exceeds the
+//   distance still to come (lmcut_heuristic.h), so the search is A*; with
+//   blind, whose cost is 0, f = g, uniform-cost search. Nodes with the same
+//   state have the same g ((total-cost) is part of the state), so an
+//   admissible estimate needs no consistency for the argument below;
 // - ordered by the metric, a goal is a solution only when it leaves the
 //   main open list (store_evaluated keeps it in goals_; step returns it when
 //   popped): A*'s test at expansion, so zero-cost keep actions cannot let a
 //   dearer goal found at generation win;
 // - complete: every node is goal-tested, no queue draws at random, dead ends
-//   are pruned only when the sound relaxation confirms them (blind has none),
+//   are pruned only when the sound relaxation confirms them (blind has none;
+//   lmcut's are sound in either mode),
 //   actions may overlap themselves, and a duplicate is dropped only for a
 //   stored node with the same state -- (total-cost) included, so the same g
 //   -- whose schedule allows every future its schedule allows
@@ -49,8 +53,6 @@ using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-constexpr const char* kUniformCost = "complete(wastar(blind, w=1, order=metric, preferred=false))";
-
 struct CompiledSearch {
   std::optional<FoundPlan> best;
   bool optimal = false;     // found by the uniform-cost search
@@ -70,7 +72,7 @@ CompiledSearch search_compiled(const std::shared_ptr<const GroundTask>& task, do
   const Clock::time_point began = Clock::now();
   CompiledSearch search;
   PlannerOptions optimal = options.planner;
-  optimal.search = parse_search_configuration(kUniformCost);
+  optimal.search = parse_search_configuration(options.stable_proof_search);
   optimal.time_limit = std::min(options.planner.time_limit, options.stable_budget * options.stable_proof_share);
   PlannerResult result = plan_compiled(task, now, optimal);
   search.calls = 1;
@@ -181,9 +183,12 @@ class StableStrategy : public RepairStrategy {
 
   std::string describe(std::size_t distance, std::size_t old, const MappedPlan& mapped,
                        const CompiledSearch& search) const {
-    std::string proof = "proven minimal by uniform-cost search";
+    const bool blind = parse_search_configuration(options_.stable_proof_search).engine.heuristic.kind ==
+                       HeuristicSpec::Kind::Blind;
+    const std::string searched = blind ? "uniform-cost search" : "A* on an admissible heuristic";
+    std::string proof = "proven minimal by " + searched;
     if (!search.optimal) {
-      proof = "not proven minimal: the uniform-cost search ran out of its " +
+      proof = "not proven minimal: the " + searched + " ran out of its " +
               number(options_.stable_budget * options_.stable_proof_share) + " s";
     } else if (!search.limits.empty()) {
       proof = "minimal among the plans the search represents, not proven: " + search.limits;

@@ -120,3 +120,7 @@ expect_run(2 "--kinds takes fact, object, goal; got 'meteor'" ${ALPLAN} bench st
   --kinds meteor --out ${WORK}/x)
 expect_run(2 "unknown repair strategy 'fast'" ${ALPLAN} bench stability --ipc ${SHARED}/benchmarks/ipc
   --strategies replan,fast --out ${WORK}/x)
+expect_run(2 "--stable-search: search configuration" ${ALPLAN} bench stability --ipc ${SHARED}/benchmarks/ipc
+  --stable-search "wastar(" --out ${WORK}/x)
+expect_run(2 "--stable-search must be a complete search" ${ALPLAN} bench stability --ipc ${SHARED}/benchmarks/ipc
+  --stable-search "wastar(lmcut, w=1, order=metric)" --out ${WORK}/x)

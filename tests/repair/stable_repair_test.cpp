@@ -156,6 +156,32 @@ TEST_CASE("stable repairs a closed road at the minimum distance and proves it") 
   CHECK(plan_distance(f.old_names(), names(*replan.plan)) >= 4);
 }
 
+TEST_CASE("stable proves the same minimum with A* on landmark cuts as with uniform-cost search") {
+  Fixture f;
+  f.observed.set({"road", "b", "c"}, false);
+  f.observed.set({"road", "c", "b"}, false);
+  const StrategyOptions options;  // A* on lmcut, the default
+  StrategyOptions uniform;
+  uniform.stable_proof_search = "complete(wastar(blind, w=1, order=metric, preferred=false))";
+  const RepairResult astar = make_strategy("stable", options)->repair(f.request());
+  REQUIRE(astar.repaired);
+  CHECK(astar.how.find("stable repair at distance 4 from the old plan (proven minimal by A* on an admissible "
+                       "heuristic") == 0);
+  CHECK(plan_distance(f.old_names(), names(*astar.plan)) == 4);
+  CHECK(valid_from_observed(f, *astar.plan));
+  // The package found at b: keep the drives, load there (D = 2, as adapt's).
+  Fixture g;
+  g.observed.set({"pat", "k", "a"}, false);
+  g.observed.set({"pat", "k", "b"}, true);
+  const RepairResult blind = make_strategy("stable", uniform)->repair(g.request());
+  CHECK(blind.how.find("(proven minimal by uniform-cost search") != std::string::npos);
+  const RepairResult landmarks = make_strategy("stable", options)->repair(g.request());
+  REQUIRE(blind.repaired);
+  REQUIRE(landmarks.repaired);
+  CHECK(plan_distance(g.old_names(), names(*landmarks.plan)) == plan_distance(g.old_names(), names(*blind.plan)));
+  CHECK(landmarks.how.find("(proven minimal") != std::string::npos);
+}
+
 TEST_CASE("stable keeps the whole old plan when nothing failed") {
   Fixture f;
   const RepairResult stable = make_strategy("stable", {})->repair(f.request());
