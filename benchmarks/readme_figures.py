@@ -203,6 +203,31 @@ def stability_by_domain(folder):
     return table(["mean distance"] + strategies, rows)
 
 
+PROOF = "stable-proof-search-1-5-2026-11-28"
+
+
+def proof_search_block():
+    """stable alone on instances 1-5 under each proof search, the same
+    perturbations: what each proves, and how close the plans are."""
+    by = {}
+    for search in ("blind", "lmcut"):
+        by[search] = {(r["domain"], r["problem"], r["kind"], r["perturbation"]): r
+                      for r in load(f"{PROOF}/{search}/runs.json")["runs"]}
+    both = [k for k in by["blind"] if k in by["lmcut"] and by["blind"][k]["valid"] and by["lmcut"][k]["valid"]]
+    rows = []
+    for search, label in (("blind", "uniform-cost (blind)"), ("lmcut", "A* (lmcut)")):
+        runs = list(by[search].values())
+        other = by["lmcut" if search == "blind" else "blind"]
+        rows.append([label, f"{sum(r['valid'] for r in runs)}/{len(runs)}",
+                     str(sum("proven minimal by" in r["how"] for r in runs)),
+                     f"{statistics.mean(by[search][k]['distance'] for k in both):.2f}",
+                     str(sum(by[search][k]["distance"] < other[k]["distance"] for k in both)),
+                     f"{statistics.median(r['seconds'] for r in runs):.3f}"])
+    return (f"{len(by['blind'])} perturbations, {len(both)} repaired validly under both.\n\n"
+            + table(["proof search", "valid", "proven minimal", "distance (paired)", "closer than the other",
+                     "median s"], rows))
+
+
 BLOCKS = {
     "study-mix": study_mix,
     "study-switch": study_switch,
@@ -212,6 +237,7 @@ BLOCKS = {
     "stability-1-5": lambda: stability_block(STABILITY[0]),
     "stability-6-10": lambda: stability_block(STABILITY[1]),
     "stability-domains-1-5": lambda: stability_by_domain(STABILITY[0]),
+    "stable-proof-search": proof_search_block,
 }
 
 
