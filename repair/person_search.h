@@ -9,19 +9,19 @@
 // (Nourbakhsh and Genesereth, "Assumptive planning and execution: a simple,
 // working robot architecture", Autonomous Robots 3, 1996): it plans as if a
 // guess were a fact, and the monitor checks the guess like any other fact,
-// so the loop of failure and repair needs nothing new. The guess: the person is in the nearest place,
-// by the home's travel times from the robots, that no robot has looked in
-// since the person was lost. The guess goes into the belief; the robot's
+// so the loop of failure and repair needs nothing new. The guess: the
+// person is in the nearest place, by the home's travel times from the
+// robots, that no robot has looked in since the person was lost. The guess goes into the belief; the robot's
 // plan takes it there; the camera confirms it (the person is seen, and the
 // search ends) or refutes it (the place is empty, and the next guess is
 // made at once). Each place is looked in once per loss: when all have been
 // looked in, no guess is made and the planner reports that no plan reaches
 // the person, so the search ends.
 //
-// Nearest first is a greedy tour, not an optimal one, and it assumes nothing
-// about where people go (the study's seniors walk to a private room drawn
-// uniformly): no prior is known to the robot that the home's generator did
-// not put there.
+// Nearest first is a greedy tour, not an optimal one, and it uses no prior
+// on where people go: the only one at hand would be the study's own rule
+// (a senior walks to a private room drawn uniformly), which a robot in a
+// real home does not know, and using it would flatter the camera.
 #pragma once
 
 #include <map>
