@@ -61,7 +61,7 @@ struct StrategyOptions {
   // (with_anytime, search_configuration.h); 0: until proven.
   std::uint64_t adapt_expansions = 0;
   // `stable`: seconds for the searches of the compiled task (grounding
-  // aside), and the share of them the uniform-cost search that proves a
+  // aside), and the share of them the complete search that proves a
   // repair minimal may take; the rest looks for any close repair when it
   // does not finish.
   double stable_budget = 5.0;

@@ -55,7 +55,7 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 
 struct CompiledSearch {
   std::optional<FoundPlan> best;
-  bool optimal = false;     // found by the uniform-cost search
+  bool optimal = false;     // found by the complete search that proves (stable_proof_search)
   std::string limits;       // why optimal is no proof ("" when it is)
   std::string message;      // the planner's, when nothing was found
   int calls = 0;
