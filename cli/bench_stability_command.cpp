@@ -68,8 +68,10 @@ std::string resolve(BenchStabilityOptions& o) {
     return "--problems takes N or N-M with 1 <= N <= M; got '" + o.problems + "'";
   }
   try {
-    const EngineSpec proof = parse_search_configuration(o.bench.strategy.stable_proof_search).engine;
-    if (!proof.complete) return "--stable-search must be a complete search (complete(...)): only one proves";
+    if (!proves_cost_optimal(parse_search_configuration(o.bench.strategy.stable_proof_search).engine)) {
+      return "--stable-search must be a complete search that proves its plan minimal: "
+             "complete(wastar(H, w=1, order=metric, preferred=false)) with H blind or lmcut";
+    }
   } catch (const SearchConfigurationError& e) {
     return std::string("--stable-search: ") + e.what();
   }

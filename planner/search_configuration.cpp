@@ -440,6 +440,12 @@ std::string default_expression(const DefaultSearchKnobs& k) {
          deferred + ")))";
 }
 
+bool proves_cost_optimal(const EngineSpec& e) {
+  const bool admissible = e.heuristic.kind == HeuristicSpec::Kind::Blind || e.heuristic.kind == HeuristicSpec::Kind::LmCut;
+  return e.kind == EngineSpec::Kind::Wastar && e.complete && e.metric_order && e.weight == 1.0 && !e.preferred &&
+         !e.deferred && admissible;
+}
+
 std::string anytime_expression(const std::string& first, double min_weight, std::uint64_t expansions,
                                bool metric_order) {
   std::string weights;

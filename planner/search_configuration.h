@@ -118,6 +118,16 @@ struct DefaultSearchKnobs {
 };
 std::string default_expression(const DefaultSearchKnobs& knobs = {});
 
+// Whether the first plan `engine` returns is optimal for the metric: A*,
+// that is complete(wastar(H, w=1, order=metric)) with one open list
+// (preferred=false: a queue of helpful children would pop nodes out of f
+// order), evaluation when generated (deferred=false: a deferred child waits
+// under its parent's estimate, which may exceed its own), and H a heuristic
+// whose cost never overestimates the metric still to come: blind (0) or
+// lmcut (lmcut_heuristic.h). trpg's relaxed-plan cost can overestimate.
+// A caller that says "optimal" or "minimal" asks this first.
+bool proves_cost_optimal(const EngineSpec& engine);
+
 // Wraps a first search into anytime mode: weighted A* with weights from
 // `weights` down to `min_weight`, each capped at `expansions` (0: none).
 std::string anytime_expression(const std::string& first, double min_weight = 1.0, std::uint64_t expansions = 0,

@@ -78,7 +78,7 @@ CompiledSearch search_compiled(const std::shared_ptr<const GroundTask>& task, do
   search.calls = 1;
   if (const FoundPlan* best = result.best()) {
     search.best = *best;
-    search.optimal = true;
+    search.optimal = proves_cost_optimal(optimal.search.engine);
     search.limits = proof_limits(TaskIndex(task));
     return search;
   }
@@ -183,11 +183,13 @@ class StableStrategy : public RepairStrategy {
 
   std::string describe(std::size_t distance, std::size_t old, const MappedPlan& mapped,
                        const CompiledSearch& search) const {
-    const bool blind = parse_search_configuration(options_.stable_proof_search).engine.heuristic.kind ==
-                       HeuristicSpec::Kind::Blind;
-    const std::string searched = blind ? "uniform-cost search" : "A* on an admissible heuristic";
+    const EngineSpec proof_search = parse_search_configuration(options_.stable_proof_search).engine;
+    const std::string searched =
+        proof_search.heuristic.kind == HeuristicSpec::Kind::Blind ? "uniform-cost search" : "A* on an admissible heuristic";
     std::string proof = "proven minimal by " + searched;
-    if (!search.optimal) {
+    if (!proves_cost_optimal(proof_search)) {
+      proof = "not proven minimal: " + options_.stable_proof_search + " is not a search that proves";
+    } else if (!search.optimal) {
       proof = "not proven minimal: the " + searched + " ran out of its " +
               number(options_.stable_budget * options_.stable_proof_share) + " s";
     } else if (!search.limits.empty()) {

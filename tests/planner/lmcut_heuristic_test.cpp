@@ -137,3 +137,15 @@ TEST_CASE("lmcut: the configuration language names it") {
         HeuristicSpec::Kind::LmCut);
   CHECK_THROWS_WITH(parse_search_configuration("gbfs(lmcut(fast=true))"), Catch::Contains("lmcut takes no options"));
 }
+
+TEST_CASE("only A* on an admissible heuristic proves its first plan cost-optimal") {
+  const auto proves = [](const std::string& e) { return proves_cost_optimal(parse_search_configuration(e).engine); };
+  CHECK(proves("complete(wastar(lmcut, w=1, order=metric, preferred=false))"));
+  CHECK(proves("complete(wastar(blind, w=1, order=metric, preferred=false))"));
+  CHECK_FALSE(proves("complete(wastar(trpg, w=1, order=metric, preferred=false))"));  // can overestimate
+  CHECK_FALSE(proves("complete(wastar(lmcut, w=1, order=metric))"));                   // a second queue
+  CHECK_FALSE(proves("complete(wastar(lmcut, w=1, order=metric, preferred=false, deferred=true))"));
+  CHECK_FALSE(proves("complete(wastar(lmcut, w=2, order=metric, preferred=false))"));
+  CHECK_FALSE(proves("complete(wastar(lmcut, w=1, preferred=false))"));  // steps, not the metric
+  CHECK_FALSE(proves("wastar(lmcut, w=1, order=metric, preferred=false)"));
+}

@@ -180,6 +180,12 @@ TEST_CASE("stable proves the same minimum with A* on landmark cuts as with unifo
   REQUIRE(landmarks.repaired);
   CHECK(plan_distance(g.old_names(), names(*landmarks.plan)) == plan_distance(g.old_names(), names(*blind.plan)));
   CHECK(landmarks.how.find("(proven minimal") != std::string::npos);
+  // A search whose heuristic can overestimate proves nothing, whatever it finds.
+  StrategyOptions guessing;
+  guessing.stable_proof_search = "complete(wastar(trpg, w=1, order=metric, preferred=false))";
+  const RepairResult guessed = make_strategy("stable", guessing)->repair(g.request());
+  REQUIRE(guessed.repaired);
+  CHECK(guessed.how.find("not proven minimal: complete(wastar(trpg") != std::string::npos);
 }
 
 TEST_CASE("stable keeps the whole old plan when nothing failed") {
