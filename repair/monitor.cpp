@@ -28,23 +28,6 @@ std::string location_of(const WorldState& world, const std::string& object) {
   return {};
 }
 
-// "(be senior1 room2)" as {"be", "senior1", "room2"}; a condition that is
-// not one atom gives words that name no location fact.
-AtomKey key_of_condition(const std::string& condition) {
-  AtomKey words;
-  std::string word;
-  for (const char c : condition) {
-    if (c == '(' || c == ')' || c == ' ') {
-      if (!word.empty()) words.push_back(word);
-      word.clear();
-    } else {
-      word += c;
-    }
-  }
-  if (!word.empty()) words.push_back(word);
-  return words;
-}
-
 // Where each step of the executing plan stands.
 struct Progress {
   std::vector<bool> started, ended;
@@ -389,6 +372,7 @@ class MonitoredExecution::Impl {
     const std::optional<std::string> new_goal = regenerate_goal(observed, t);
     RepairResult result = strategy_.repair(request(failure, observed, t));
     report_.repairs.push_back(record_of(failure, foreseen, result, strategy_.name(), t, why));
+    report_.repairs.back().search = search_step;
     note_search(report_.repairs.back());
     if (new_goal) {
       std::string& how = report_.repairs.back().explanation.how;
@@ -425,8 +409,7 @@ class MonitoredExecution::Impl {
   // where it looks next.
   void note_search(RepairRecord& record) const {
     const PersonSearch& search = belief_.search();
-    record.search = search.assumed(record.failure.condition);
-    const AtomKey failed = key_of_condition(record.failure.condition);
+    const AtomKey failed = words_of(record.failure.condition);  // not one atom: no location fact
     if (failed.size() != 3 || failed[0] != options_.observation.location_predicate) return;
     const std::optional<PersonSearch::Status> status = search.status(failed[1]);
     if (!status) return;

@@ -6,24 +6,12 @@
 #include <algorithm>
 #include <chrono>
 #include <set>
-#include <sstream>
 
 #include "repair/reformulation.h"
 #include "repair/repair_strategy.h"
 
 namespace alplan::repair {
 namespace {
-
-std::vector<std::string> words(const std::string& text) {
-  std::string cleaned = text;
-  for (char& c : cleaned) {
-    if (c == '(' || c == ')') c = ' ';
-  }
-  std::istringstream in(cleaned);
-  std::vector<std::string> out;
-  for (std::string w; in >> w;) out.push_back(w);
-  return out;
-}
 
 std::optional<std::string> parent_type(const pddl::Domain& domain, const TypeOntology* ontology,
                                        const std::string& type) {
@@ -88,10 +76,10 @@ class PatchStrategy : public RepairStrategy {
     std::set<std::string> in_plan;
     for (const ScheduledAction& s : request.plan->steps) {
       if (s.start + 1e-9 < request.now) continue;
-      for (const std::string& w : words(s.name)) in_plan.insert(w);
+      for (const std::string& w : words_of(s.name)) in_plan.insert(w);
     }
     std::vector<std::string> out;
-    const std::vector<std::string> named = words(request.failure->condition);
+    const std::vector<std::string> named = words_of(request.failure->condition);
     for (std::size_t i = 1; i < named.size(); ++i) {
       if (in_plan.count(named[i]) && object_type(*request.problem, named[i])) out.push_back(named[i]);
     }
@@ -120,7 +108,7 @@ class PatchStrategy : public RepairStrategy {
     Plan plan;
     for (const ScheduledAction& s : request.plan->steps) {
       if (s.start + 1e-9 < request.now) continue;
-      std::vector<std::string> w = words(s.name);
+      std::vector<std::string> w = words_of(s.name);
       PlanStep step;
       step.time = s.start;
       step.action = w.front();

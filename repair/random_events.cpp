@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "repair/reformulation.h"
 
@@ -19,13 +18,8 @@ constexpr std::pair<RandomEventKind, const char*> kNames[] = {
 
 // The index-th word of "(carry robot1 glass_id05 kitchen1)": 0 the schema.
 std::string word(const std::string& name, std::size_t index) {
-  std::string cleaned = name;
-  std::replace(cleaned.begin(), cleaned.end(), '(', ' ');
-  std::replace(cleaned.begin(), cleaned.end(), ')', ' ');
-  std::istringstream in(cleaned);
-  std::string w;
-  for (std::size_t i = 0; i <= index && in >> w;) ++i;
-  return w;
+  const AtomKey words = words_of(name);
+  return index < words.size() ? words[index] : std::string();
 }
 
 bool holds(const pddl::Problem& problem, const std::string& predicate, const std::string& object) {

@@ -1,5 +1,7 @@
 #include "repair/world_state.h"
 
+#include <cctype>
+
 #include "planner/continuous_change.h"
 #include "planner/evaluation.h"
 #include "planner/happening_effects.h"
@@ -31,6 +33,21 @@ std::string to_string(const AtomKey& key) {
   std::string out = "(";
   for (std::size_t i = 0; i < key.size(); ++i) out += (i ? " " : "") + key[i];
   return out + ")";
+}
+
+AtomKey words_of(const std::string& text) {
+  AtomKey words;
+  std::string word;
+  for (const char c : text) {
+    if (c == '(' || c == ')' || std::isspace(static_cast<unsigned char>(c))) {
+      if (!word.empty()) words.push_back(std::move(word));
+      word.clear();
+    } else {
+      word += c;
+    }
+  }
+  if (!word.empty()) words.push_back(std::move(word));
+  return words;
 }
 
 StateMapping::StateMapping(const GroundTask& task) : task_(&task) {

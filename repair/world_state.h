@@ -26,6 +26,9 @@ AtomKey key_of(const pddl::Atom& atom);
 bool same_literal(const pddl::TimedInitialLiteral& a, const pddl::TimedInitialLiteral& b);
 
 std::string to_string(const AtomKey& key);  // "(be robot1 kitchen1)"
+// The words of a ground atom or action as written, parentheses dropped:
+// "(be senior1 room2)" gives {"be", "senior1", "room2"}.
+AtomKey words_of(const std::string& text);
 // The atom (or function term) a key names, as the parser's AST holds it.
 pddl::Atom atom_of(const AtomKey& key);
 
