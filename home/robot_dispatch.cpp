@@ -4,7 +4,6 @@
 #include <limits>
 #include <map>
 #include <optional>
-#include <queue>
 #include <set>
 
 namespace alplan::home {
@@ -40,25 +39,7 @@ std::optional<std::string> TravelTimes::room_of(const std::string& thing) const 
 }
 
 std::map<std::string, double> TravelTimes::times_to(const std::string& room) const {
-  std::map<std::string, double> best{{room, 0.0}};
-  using Item = std::pair<double, std::string>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-  queue.push({0.0, room});
-  while (!queue.empty()) {
-    const auto [d, r] = queue.top();
-    queue.pop();
-    if (d > best[r]) continue;
-    const auto edges = into_.find(r);
-    if (edges == into_.end()) continue;
-    for (const auto& [from, t] : edges->second) {
-      const auto known = best.find(from);
-      if (known == best.end() || d + t < known->second) {
-        best[from] = d + t;
-        queue.push({d + t, from});
-      }
-    }
-  }
-  return best;
+  return repair::shortest_times(into_, {room});  // along the ways reversed
 }
 
 std::vector<std::string> dispatch_robots(const pddl::Problem& problem, const std::vector<std::string>& robots,

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "pddl_parser/ast.h"
+#include "repair/travel_times.h"
 
 namespace alplan::home {
 
@@ -32,7 +33,7 @@ class TravelTimes {
   std::map<std::string, double> times_to(const std::string& room) const;
 
  private:
-  std::map<std::string, std::vector<std::pair<std::string, double>>> into_;  // edges into each room
+  repair::Ways into_;  // the ways reversed: from each room to those that lead into it
   std::map<std::string, std::string> room_of_;
 };
 

@@ -1,8 +1,8 @@
 #include "repair/person_search.h"
 
 #include <algorithm>
-#include <limits>
-#include <queue>
+
+#include "repair/travel_times.h"
 
 namespace alplan::repair {
 namespace {
@@ -53,57 +53,40 @@ bool PersonSearch::update(const std::set<std::string>& persons, const std::set<s
   return changed;
 }
 
-// Dijkstra over the ways between places, from every place a robot is in.
+// The nearest place not looked in by shortest travel time from the places
+// the robots are in, by name among equals; with no robot placed yet, the
+// first by name.
 std::optional<std::string> PersonSearch::nearest_unsearched(const Search& search, const std::set<std::string>& from,
                                                             const WorldState& belief) const {
-  std::map<std::string, std::vector<std::pair<std::string, double>>> ways;
+  Ways ways;
+  std::set<std::string> places;
   for (const AtomKey& a : belief.atoms) {
     if (a.size() != 3 || a[0] != options_.path_predicate) continue;
     const auto time = belief.values.find({options_.distance_function, a[1], a[2]});
     ways[a[1]].emplace_back(a[2], time == belief.values.end() ? 1.0 : time->second);
-    ways.try_emplace(a[2]);
+    places.insert({a[1], a[2]});
   }
-  constexpr double kUnreached = std::numeric_limits<double>::infinity();
-  std::map<std::string, double> distance;
-  for (const auto& [place, out] : ways) distance[place] = from.count(place) ? 0.0 : kUnreached;
-  using Entry = std::pair<double, std::string>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
-  for (const std::string& place : from) {
-    if (distance.count(place)) open.emplace(0.0, place);
-  }
-  while (!open.empty()) {
-    const auto [d, place] = open.top();
-    open.pop();
-    if (d > distance[place]) continue;
-    for (const auto& [next, w] : ways[place]) {
-      if (d + w < distance[next]) {
-        distance[next] = d + w;
-        open.emplace(d + w, next);
-      }
-    }
+  const auto unsearched = [&](const std::string& place) {
+    return std::find(search.looked_in.begin(), search.looked_in.end(), place) == search.looked_in.end();
+  };
+  if (from.empty()) {
+    const auto first = std::find_if(places.begin(), places.end(), unsearched);
+    return first == places.end() ? std::nullopt : std::optional<std::string>(*first);
   }
   std::optional<std::string> best;
-  double best_distance = kUnreached;
-  for (const auto& [place, d] : distance) {  // by name among equals
-    const bool looked = std::find(search.looked_in.begin(), search.looked_in.end(), place) != search.looked_in.end();
-    if (looked) continue;
-    // With no robot placed yet, every place is as near as any other.
-    if (!best || d < best_distance) {
+  double best_time = 0.0;
+  for (const auto& [place, time] : shortest_times(ways, from)) {  // places with no way there are absent
+    if (places.count(place) && unsearched(place) && (!best || time < best_time)) {
       best = place;
-      best_distance = d;
+      best_time = time;
     }
   }
-  if (best && best_distance == kUnreached && !from.empty()) return std::nullopt;  // no way there
   return best;
 }
 
-bool PersonSearch::assumed(const std::string& condition) const { return searched_person(condition).has_value(); }
-
-std::optional<std::string> PersonSearch::searched_person(const std::string& condition) const {
-  for (const auto& [person, search] : searches_) {
-    if (search.assumed.count(condition)) return person;
-  }
-  return std::nullopt;
+bool PersonSearch::assumed(const std::string& condition) const {
+  return std::any_of(searches_.begin(), searches_.end(),
+                     [&](const auto& entry) { return entry.second.assumed.count(condition) != 0; });
 }
 
 std::optional<PersonSearch::Status> PersonSearch::status(const std::string& person) const {

@@ -67,8 +67,6 @@ class PersonSearch {
     std::optional<std::string> guess;
   };
   std::optional<Status> status(const std::string& person) const;
-  // The person a location condition is about, when the search looks for them.
-  std::optional<std::string> searched_person(const std::string& condition) const;
 
  private:
   struct Search {
