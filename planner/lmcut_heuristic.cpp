@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <functional>
 #include <limits>
-#include <queue>
 
 namespace alplan {
 namespace {
@@ -70,6 +69,7 @@ LmCutHeuristic::LmCutHeuristic(const TaskIndex& index, std::shared_ptr<const Lin
   unsatisfied_.resize(ops);
   pcf_.resize(ops);
   enabled_.resize(ops);
+  in_cut_.assign(ops, 0);
   hmax_.resize(nodes);
   root_.resize(nodes);
   zone_.resize(nodes);
@@ -90,15 +90,21 @@ bool LmCutHeuristic::compute_hmax() {
   std::fill(hmax_.begin(), hmax_.end(), kInfinity);
   std::fill(op_value_.begin(), op_value_.end(), kInfinity);
   for (std::uint32_t o = 0; o < operators_.size(); ++o) unsatisfied_[o] = static_cast<std::uint32_t>(operators_[o].pre.size());
-  using Entry = std::pair<double, Node>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  // A heap in a kept vector: this runs once per cut of every evaluation.
+  std::vector<HeapEntry>& open = heap_;
+  open.clear();
+  const auto push = [&](double value, Node node) {
+    open.emplace_back(value, node);
+    std::push_heap(open.begin(), open.end(), std::greater<>());
+  };
   for (Node r : roots_) {
     hmax_[r] = 0.0;
-    open.emplace(0.0, r);
+    push(0.0, r);
   }
   while (!open.empty()) {
-    const auto [value, node] = open.top();
-    open.pop();
+    std::pop_heap(open.begin(), open.end(), std::greater<>());
+    const auto [value, node] = open.back();
+    open.pop_back();
     if (value > hmax_[node]) continue;
     // Facts leave in order of their cost, so an operator's last
     // precondition to leave is its costliest.
@@ -108,7 +114,7 @@ bool LmCutHeuristic::compute_hmax() {
       for (Node e : operators_[o].add) {
         if (op_value_[o] < hmax_[e]) {
           hmax_[e] = op_value_[o];
-          open.emplace(op_value_[o], e);
+          push(op_value_[o], e);
         }
       }
     }
@@ -129,7 +135,8 @@ double LmCutHeuristic::cut_once() {
   }
   // The goal zone: what reaches the goal by operators that cost nothing.
   std::fill(zone_.begin(), zone_.end(), 0);
-  std::vector<Node> stack{goal_node_};
+  std::vector<Node>& stack = work_;
+  stack.assign(1, goal_node_);
   zone_[goal_node_] = 1;
   while (!stack.empty()) {
     const Node e = stack.back();
@@ -144,19 +151,20 @@ double LmCutHeuristic::cut_once() {
   // From the state, through chosen preconditions, short of the zone: the
   // operators that cross into it are the cut, a landmark.
   std::fill(reached_.begin(), reached_.end(), 0);
-  std::vector<Node> queue;
+  std::vector<Node>& queue = work_;
+  queue.clear();
   for (Node r : roots_) {
     if (!zone_[r] && !reached_[r]) reached_[r] = 1, queue.push_back(r);
   }
-  std::vector<std::uint32_t> cut;
-  std::vector<char> in_cut(operators_.size(), 0);
+  std::vector<std::uint32_t>& cut = cut_;
+  cut.clear();
   for (std::size_t next = 0; next < queue.size(); ++next) {
     const Node f = queue[next];
     for (std::uint32_t o : precondition_of_[f]) {
       if (!applicable(o) || pcf_[o] != f) continue;
       for (Node e : operators_[o].add) {
         if (zone_[e]) {
-          if (!in_cut[o]) in_cut[o] = 1, cut.push_back(o);
+          if (!in_cut_[o]) in_cut_[o] = 1, cut.push_back(o);
         } else if (!reached_[e]) {
           reached_[e] = 1;
           queue.push_back(e);
@@ -167,7 +175,10 @@ double LmCutHeuristic::cut_once() {
   if (cut.empty()) return 0.0;  // cannot happen while the goal costs something; stop rather than loop
   double least = kInfinity;
   for (std::uint32_t o : cut) least = std::min(least, cost_[o]);
-  for (std::uint32_t o : cut) cost_[o] -= least;
+  for (std::uint32_t o : cut) {
+    cost_[o] -= least;
+    in_cut_[o] = 0;
+  }
   return least;
 }
 

@@ -29,6 +29,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "planner/heuristic.h"
@@ -70,8 +71,11 @@ class LmCutHeuristic : public Heuristic {
   // Per evaluation.
   std::vector<double> cost_, hmax_, op_value_;
   std::vector<std::uint32_t> unsatisfied_, pcf_;
-  std::vector<char> enabled_, root_, zone_, reached_;
-  std::vector<Node> roots_;
+  std::vector<char> enabled_, root_, zone_, reached_, in_cut_;
+  std::vector<Node> roots_, work_;
+  std::vector<std::uint32_t> cut_;
+  using HeapEntry = std::pair<double, Node>;
+  std::vector<HeapEntry> heap_;
   std::vector<FactId> unreached_;
 };
 
