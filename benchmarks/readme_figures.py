@@ -203,6 +203,24 @@ def stability_by_domain(folder):
     return table(["mean distance"] + strategies, rows)
 
 
+def camera_search(folder=STUDY):
+    """The seniors who moved: comforted under iot and under camera, and the
+    places the camera-only robot looked in to find them (person_search.h)."""
+    by_model = {m: load(f"{folder}/{m}/runs.json") for m in MODELS}
+    steps_elsewhere = sum(r.get("search_steps", 0) for m in ("full", "iot") for r in by_model[m])
+    runs_elsewhere = sum(len(by_model[m]) for m in ("full", "iot"))
+    rows = []
+    for s in strategies_of(by_model["iot"]):
+        iot = [r for r in by_model["iot"] if r["strategy"] == s and r["kind"] == "moves"]
+        camera = [r for r in by_model["camera"] if r["strategy"] == s and r["kind"] == "moves"]
+        found = [r["search_steps"] for r in camera if r["comforted"]]
+        rows.append([s, f"{sum(r['comforted'] for r in iot)}/{len(iot)}", f"{len(found)}/{len(camera)}",
+                     f"{statistics.mean(found):.1f}" if found else "-", str(max(found)) if found else "-"])
+    return (f"Search steps under full and iot: {steps_elsewhere} in {runs_elsewhere} runs.\n\n"
+            + table(["strategy", "moves comforted, iot", "moves comforted, camera",
+                     "places looked in (comforted, camera)", "most"], rows))
+
+
 PROOF = "stable-proof-search-1-5-2026-11-28"
 
 
@@ -238,6 +256,7 @@ BLOCKS = {
     "stability-6-10": lambda: stability_block(STABILITY[1]),
     "stability-domains-1-5": lambda: stability_by_domain(STABILITY[0]),
     "stable-proof-search": proof_search_block,
+    "camera-search": camera_search,
 }
 
 
