@@ -10,11 +10,13 @@
 namespace alplan::cli {
 
 void add_fuzz_command(CLI::App& app, int& exit_code) {
-  CLI::App* fuzz = app.add_subcommand("fuzz", "Differential testing against brute force");
+  CLI::App* fuzz = app.add_subcommand("fuzz", "Differential testing against a brute force over the reference semantics");
   fuzz->require_subcommand(1);
   auto options = std::make_shared<differential::DifferentialOptions>();
   CLI::App* p = fuzz->add_subcommand(
-      "planner", "Random small temporal tasks: the planner against a brute-force search through the validator");
+      "planner",
+      "Random small temporal tasks: the planner against a brute-force search judged by the reference semantics "
+      "(oracle/), which shares no code with the planner; exit 0 with no disagreement, 1 with one");
   p->add_option("--tasks", options->tasks, "How many tasks (task k is generated from seed + k)");
   p->add_option("--seed", options->seed, "The first task's seed");
   p->add_option("--seconds", options->seconds, "Stop after this many seconds even if tasks remain")
@@ -23,8 +25,15 @@ void add_fuzz_command(CLI::App& app, int& exit_code) {
       ->check(CLI::PositiveNumber);
   p->add_option("--node-limit", options->planner_node_limit, "The planner's search nodes per task")
       ->check(CLI::PositiveNumber);
-  p->add_option("--max-steps", options->brute_force.max_steps, "The brute force's longest plan")
+  p->add_option("--max-steps", options->brute_force.max_steps, "The brute force's longest plan (default 3)")
       ->check(CLI::Range(1, 6));
+  p->add_option("--max-judgements", options->brute_force.max_judgements,
+                "Plans the brute force may judge per task before it is cut short (undecided)")
+      ->check(CLI::PositiveNumber);
+  p->add_option("--jobs", options->jobs, "Tasks checked at once (threads); the report is the same for any number")
+      ->check(CLI::Range(1, 64));
+  p->add_option("--write-tasks", options->all_dir, "Folder to write every task into, with the class it fell in");
+  p->add_flag("!--no-shrink", options->shrink, "Write disagreeing tasks as found, without reducing them");
   p->add_option("--out", options->out_dir, "Folder to write each disagreeing task into (domain, problem, plan)");
   p->callback([options, &exit_code] {
     const differential::DifferentialReport report = differential::run_differential(*options, std::cerr);

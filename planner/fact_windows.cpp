@@ -62,7 +62,7 @@ void FactWindows::find_windowed_facts() {
   // gives none keeps its span unused.
 }
 
-void FactWindows::reset(const SearchState& state, const PartialPlan& plan, bool running_ends) {
+void FactWindows::reset(const SearchState& state, const PartialPlan& plan, bool running_ends, double gap) {
   for (FactId f : touched_) {
     restricted_[f] = 0;
     windows_[f].clear();
@@ -89,7 +89,7 @@ void FactWindows::reset(const SearchState& state, const PartialPlan& plan, bool 
   std::sort(candidates.begin(), candidates.end());
   candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
   for (FactId f : candidates) {
-    double open = state.fact(f) ? plan.available_from(f) : kInfinity;
+    double open = state.fact(f) ? plan.available_from(f, gap) : kInfinity;
     double now_closes = kInfinity;
     for (const auto& [g, at] : closing) {
       if (g == f) now_closes = std::min(now_closes, at);
@@ -99,7 +99,7 @@ void FactWindows::reset(const SearchState& state, const PartialPlan& plan, bool 
     for (std::uint32_t t : literals_of_[f]) {
       if (t < state.next_timed_literal()) continue;
       const GroundTimedLiteral& til = task_.timed_literals[t];
-      if (til.positive && open == kInfinity) open = til.time + plan.epsilon();
+      if (til.positive && open == kInfinity) open = til.time + gap;
       if (!til.positive && open != kInfinity) {
         windows.emplace_back(open, first ? std::min(til.time, now_closes) : til.time);
         open = kInfinity;
@@ -119,7 +119,7 @@ void FactWindows::reset(const SearchState& state, const PartialPlan& plan, bool 
     spans_[f].clear();
     if (restricted_[f]) continue;
     restricted_[f] = 1;
-    if (state.fact(f)) windows_[f].emplace_back(plan.available_from(f), kInfinity);
+    if (state.fact(f)) windows_[f].emplace_back(plan.available_from(f, gap), kInfinity);
     touched_.push_back(f);
   }
 }

@@ -44,7 +44,9 @@ class FactWindows {
   // time those ends can come with every other step at its earliest (a
   // guess: the steps may move later); without it only timed literals close
   // windows, which is a bound.
-  void reset(const SearchState& state, const PartialPlan& plan, bool running_ends = true);
+  // `gap`: how long after its achiever (a timed literal, the last writer) a
+  // fact is usable.
+  void reset(const SearchState& state, const PartialPlan& plan, bool running_ends, double gap);
 
   bool restricted(FactId fact) const { return restricted_[fact]; }
   // An action achieves the fact at `time`: usable from then on. True if this

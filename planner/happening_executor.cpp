@@ -418,9 +418,8 @@ std::optional<Violation> HappeningExecutor::execute_happening() {
       if (auto v = check_conditions(e)) return v;
     }
     current = &events.front();
-    if (events.size() > 1) {
-      if (auto v = check_mutex(events)) return v;
-    }
+    // With one member too: VAL refuses an action that assigns a value twice.
+    if (auto v = check_mutex(events)) return v;
     for (const Event& e : events) {
       current = &e;
       if (e.point == Point::Start) start_rates(e.scheduled, state_);

@@ -14,13 +14,9 @@ bool intersects(const std::vector<std::uint32_t>& a, const std::vector<std::uint
   return false;
 }
 
-// Whether two snaps touch a common fact or variable with at least one
-// writing it: then they must be ordered.
-bool interfere(const Footprint& a, const Footprint& b) {
-  return intersects(a.writes, b.reads) || intersects(a.writes, b.writes) || intersects(a.reads, b.writes) ||
-         intersects(a.writes_values, b.reads_values) || intersects(a.writes_values, b.writes_values) ||
-         intersects(a.reads_values, b.writes_values);
-}
+bool contains(const std::vector<std::uint32_t>& v, std::uint32_t k) { return std::binary_search(v.begin(), v.end(), k); }
+
+const std::vector<std::uint32_t> kNoKeys;
 
 // Whether `ender`'s end deletes (and does not give back) a fact `holder`
 // needs over all: `ender` may not end while `holder` runs.
@@ -94,41 +90,89 @@ PartialPlan::PartialPlan(const TaskIndex& index, double epsilon, double release,
   }
 }
 
-std::optional<std::uint32_t> PartialPlan::Ledger::writer(std::uint32_t key) const {
-  auto it = std::lower_bound(writers.begin(), writers.end(), key,
-                             [](const Use& u, std::uint32_t k) { return u.key < k; });
-  if (it == writers.end() || it->key != key) return std::nullopt;
-  return it->step;
+PartialPlan::Touch PartialPlan::fact_touch(const Footprint& fp) {
+  return {fp.reads, fp.holds, fp.writes, fp.adds, fp.dels};
 }
 
-void PartialPlan::Ledger::add_constraints(const std::vector<std::uint32_t>& reads_keys,
-                                          const std::vector<std::uint32_t>& writes_keys, std::uint32_t node,
-                                          double epsilon, std::vector<TemporalEdge>& edges,
+PartialPlan::Touch PartialPlan::value_touch(const Footprint& fp) {
+  return {fp.reads_values, fp.holds_values, fp.writes_values, fp.additive_values, kNoKeys};
+}
+
+PartialPlan::WriteKind PartialPlan::Touch::kind_of(std::uint32_t key) const {
+  if (contains(adds, key)) return WriteKind::Add;
+  if (contains(dels, key)) return WriteKind::Delete;
+  return WriteKind::Other;
+}
+
+const PartialPlan::Use* PartialPlan::Ledger::last_write(std::uint32_t key) const {
+  auto it = std::lower_bound(writers.begin(), writers.end(), key,
+                             [](const Use& u, std::uint32_t k) { return u.key < k; });
+  if (it == writers.end() || it->key != key) return nullptr;
+  return &*it;
+}
+
+std::optional<std::uint32_t> PartialPlan::Ledger::writer(std::uint32_t key) const {
+  const Use* w = last_write(key);
+  if (!w) return std::nullopt;
+  return w->step;
+}
+
+// Readers come epsilon after the last writer, holders with no gap; a writer
+// comes after the last writer (no gap when both write the key the same one
+// way) and after every reader since (epsilon) and holder since (no gap).
+void PartialPlan::Ledger::add_constraints(const Touch& touch, std::uint32_t node, double epsilon,
+                                          std::vector<TemporalEdge>& edges,
                                           const std::vector<std::uint32_t>& node_of_step) const {
-  for (std::uint32_t key : reads_keys) {
-    if (auto w = writer(key)) edges.push_back({node_of_step[*w], node, epsilon});
+  for (std::uint32_t key : touch.reads) {
+    if (const Use* w = last_write(key)) edges.push_back({node_of_step[w->step], node, epsilon});
   }
-  for (std::uint32_t key : writes_keys) {
-    const std::optional<std::uint32_t> w = writer(key);
-    if (w) edges.push_back({node_of_step[*w], node, epsilon});
+  for (std::uint32_t key : touch.holds) {
+    if (const Use* w = last_write(key)) edges.push_back({node_of_step[w->step], node, 0.0});
+  }
+  for (std::uint32_t key : touch.writes) {
+    const Use* w = last_write(key);
+    const WriteKind kind = touch.kind_of(key);
+    if (w) {
+      const bool alike = kind != WriteKind::Other && kind == w->kind;
+      edges.push_back({node_of_step[w->step], node, alike ? 0.0 : epsilon});
+    }
     for (const Use& r : reads) {
-      if (r.key == key && (!w || r.step > *w)) edges.push_back({node_of_step[r.step], node, epsilon});
+      if (r.key == key && (!w || r.step > w->step)) {
+        edges.push_back({node_of_step[r.step], node, r.kind == WriteKind::Add ? 0.0 : epsilon});
+      }
     }
   }
 }
 
-void PartialPlan::Ledger::record(const std::vector<std::uint32_t>& reads_keys,
-                                 const std::vector<std::uint32_t>& writes_keys, std::uint32_t step) {
-  for (std::uint32_t key : reads_keys) reads.push_back({key, step});
-  for (std::uint32_t key : writes_keys) {
+void PartialPlan::Ledger::record(const Touch& touch, std::uint32_t step) {
+  for (std::uint32_t key : touch.reads) reads.push_back({key, step, WriteKind::Other});
+  for (std::uint32_t key : touch.holds) reads.push_back({key, step, WriteKind::Add});
+  for (std::uint32_t key : touch.writes) {
+    const WriteKind kind = touch.kind_of(key);
     auto it = std::lower_bound(writers.begin(), writers.end(), key,
                                [](const Use& u, std::uint32_t k) { return u.key < k; });
     if (it != writers.end() && it->key == key) {
       it->step = step;
+      it->kind = kind;
     } else {
-      writers.insert(it, {key, step});
+      writers.insert(it, {key, step, kind});
     }
   }
+}
+
+std::optional<double> PartialPlan::separation(const Footprint& a, const Footprint& b) const {
+  std::optional<double> gap;
+  auto need = [&](double g) { gap = std::max(gap.value_or(0.0), g); };
+  for (const auto& [ta, tb] : {std::pair{fact_touch(a), fact_touch(b)}, std::pair{value_touch(a), value_touch(b)}}) {
+    if (intersects(ta.writes, tb.reads) || intersects(ta.reads, tb.writes)) need(epsilon_);
+    if (intersects(ta.writes, tb.holds) || intersects(ta.holds, tb.writes)) need(0.0);
+    for (std::uint32_t key : ta.writes) {
+      if (!contains(tb.writes, key)) continue;
+      const WriteKind ka = ta.kind_of(key), kb = tb.kind_of(key);
+      need(ka != WriteKind::Other && ka == kb ? 0.0 : epsilon_);
+    }
+  }
+  return gap;
 }
 
 void PartialPlan::order_before_pending(const Footprint& fp, std::uint32_t node, std::size_t except,
@@ -136,7 +180,9 @@ void PartialPlan::order_before_pending(const Footprint& fp, std::uint32_t node, 
   for (std::size_t i = 0; i < pending_.size(); ++i) {
     const PendingEnd& p = pending_[i];
     if (i == except) continue;
-    if (interfere(fp, index_->footprint({SnapKind::End, p.action}))) edges.push_back({node, p.node, epsilon_});
+    if (const auto gap = separation(fp, index_->footprint({SnapKind::End, p.action}))) {
+      edges.push_back({node, p.node, *gap});
+    }
   }
 }
 
@@ -175,8 +221,8 @@ bool PartialPlan::append(const StepRecord& step) {
   } else {
     edges.push_back({0, node, release_});
   }
-  facts_.add_constraints(fp.reads, fp.writes, node, epsilon_, edges, node_of_step_);
-  values_.add_constraints(fp.reads_values, fp.writes_values, node, epsilon_, edges, node_of_step_);
+  facts_.add_constraints(fact_touch(fp), node, epsilon_, edges, node_of_step_);
+  values_.add_constraints(value_touch(fp), node, epsilon_, edges, node_of_step_);
   order_before_pending(fp, node, ending, edges);
   if (step.snap.kind == SnapKind::End && step.max_duration == 0.0 && step.start_step != kNoId &&
       !start_and_end_interfere(index_->task().actions[step.snap.index])) {
@@ -202,18 +248,19 @@ bool PartialPlan::append(const StepRecord& step) {
     edges.push_back({node, end, step.min_duration});
     if (step.max_duration < kInfiniteDuration) edges.push_back({end, node, -step.max_duration});
     const Footprint& end_fp = index_->footprint({SnapKind::End, step.snap.index});
-    facts_.add_constraints(end_fp.reads, end_fp.writes, end, epsilon_, edges, node_of_step_);
-    values_.add_constraints(end_fp.reads_values, end_fp.writes_values, end, epsilon_, edges, node_of_step_);
+    facts_.add_constraints(fact_touch(end_fp), end, epsilon_, edges, node_of_step_);
+    values_.add_constraints(value_touch(end_fp), end, epsilon_, edges, node_of_step_);
     // The new start itself precedes the ends of the others it touches.
     // An end that would break a running action's invariant can come only
-    // after that action's end (the successor generator refuses it before):
-    // said now, a start that cannot finish before such an end fails here,
-    // not many steps below (a bake in a firing too short for it).
+    // after that action's end (the successor generator refuses it before),
+    // or with it (VAL checks no invariant at its action's end): said now, a
+    // start that cannot finish before such an end fails here, not many
+    // steps below (a bake in a firing too short for it).
     const GroundAction& started = index_->task().actions[step.snap.index];
     for (const PendingEnd& p : pending_) {
       const GroundAction& other = index_->task().actions[p.action];
-      if (end_threatens(other, started)) edges.push_back({end, p.node, epsilon_});
-      if (end_threatens(started, other)) edges.push_back({p.node, end, epsilon_});
+      if (end_threatens(other, started)) edges.push_back({end, p.node, 0.0});
+      if (end_threatens(started, other)) edges.push_back({p.node, end, 0.0});
     }
   }
   std::vector<NumericVarId> invariant_reads;
@@ -222,7 +269,8 @@ bool PartialPlan::append(const StepRecord& step) {
     const SnapNodes at = snap_nodes(step, node);
     if (step.continuous) invariant_reads = continuous_->invariant_reads(*step.continuous, at);
     if (!invariant_reads.empty()) {
-      values_.add_constraints(invariant_reads, {}, node, epsilon_, edges, node_of_step_);
+      values_.add_constraints({invariant_reads, kNoKeys, kNoKeys, kNoKeys, kNoKeys}, node, epsilon_, edges,
+                              node_of_step_);
       Footprint reads;
       reads.reads_values = invariant_reads;
       order_before_pending(reads, node, ending, edges);
@@ -242,9 +290,9 @@ bool PartialPlan::append(const StepRecord& step) {
   } else if (!network_.add_nodes(new_nodes, edges)) {
     return false;
   }
-  values_.record(invariant_reads, {}, index);
-  facts_.record(fp.reads, fp.writes, index);
-  values_.record(fp.reads_values, fp.writes_values, index);
+  values_.record({invariant_reads, kNoKeys, kNoKeys, kNoKeys, kNoKeys}, index);
+  facts_.record(fact_touch(fp), index);
+  values_.record(value_touch(fp), index);
   steps_.push_back(step);
   node_of_step_.push_back(node);
   if (step.snap.kind == SnapKind::TimedLiteral) timed_literal_nodes_.push_back(node);
@@ -360,8 +408,8 @@ double PartialPlan::makespan() const {
   return latest;
 }
 
-double PartialPlan::available_from(FactId fact) const {
-  if (auto w = facts_.writer(fact)) return time_of(*w) + epsilon_;
+double PartialPlan::available_from(FactId fact, double gap) const {
+  if (auto w = facts_.writer(fact)) return time_of(*w) + gap;
   return release_;
 }
 

@@ -94,8 +94,10 @@ class PartialPlan {
   // The latest earliest time of a step that is not a timed literal, or of
   // the end of a running action.
   double makespan() const;
-  // The earliest time a new snap may use the fact as it now stands.
-  double available_from(FactId fact) const;
+  // The earliest time a new snap may use the fact as it now stands: `gap`
+  // after its last writer (the release when none wrote it).
+  double available_from(FactId fact, double gap) const;
+  double available_from(FactId fact) const { return available_from(fact, epsilon_); }
   double epsilon() const { return epsilon_; }
 
   // What the schedule allows of every step appended later. A later step is
@@ -121,27 +123,47 @@ class PartialPlan {
       double to_origin = 0.0;
     };
     std::vector<Target> targets;
+    // How each written key was last written, by writer source id (sorted).
+    std::vector<std::pair<std::uint64_t, unsigned char>> writer_kinds;
     bool allows_all_of(const Interface& other) const;
   };
   Interface interface(bool timed_literals_remain) const;
 
  private:
+  // How a snap wrote a key: one polarity, additively, or otherwise. Writers
+  // of one kind may share a happening (snap_action.h).
+  enum class WriteKind : unsigned char { Add, Delete, Additive, Other };
   struct Use {
     std::uint32_t key;   // fact or variable id
     std::uint32_t step;
+    WriteKind kind = WriteKind::Other;  // writers: how; readers: Other for a read, Add for a hold
   };
+  // What a snap does to the keys of one ledger: facts or variables.
+  struct Touch {
+    const std::vector<std::uint32_t>& reads;
+    const std::vector<std::uint32_t>& holds;
+    const std::vector<std::uint32_t>& writes;
+    const std::vector<std::uint32_t>& adds;  // facts: added; variables: written additively
+    const std::vector<std::uint32_t>& dels;  // facts: deleted; variables: none
+    WriteKind kind_of(std::uint32_t key) const;
+  };
+  static Touch fact_touch(const Footprint& fp);
+  static Touch value_touch(const Footprint& fp);
   // The last writer of each key touched so far (sorted by key), and every
-  // read, in order.
+  // read and hold, in order.
   struct Ledger {
     std::vector<Use> writers;
     std::vector<Use> reads;
     std::optional<std::uint32_t> writer(std::uint32_t key) const;
-    void add_constraints(const std::vector<std::uint32_t>& reads_keys, const std::vector<std::uint32_t>& writes_keys,
-                         std::uint32_t node, double epsilon, std::vector<TemporalEdge>& edges,
+    const Use* last_write(std::uint32_t key) const;
+    void add_constraints(const Touch& touch, std::uint32_t node, double epsilon, std::vector<TemporalEdge>& edges,
                          const std::vector<std::uint32_t>& node_of_step) const;
-    void record(const std::vector<std::uint32_t>& reads_keys, const std::vector<std::uint32_t>& writes_keys,
-                std::uint32_t step);
+    void record(const Touch& touch, std::uint32_t step);
   };
+  // The least gap between two snaps whose footprints touch a common key,
+  // `earlier` first: epsilon where VAL would call them a mutex, 0 where they
+  // may share a happening; nullopt when they touch nothing in common.
+  std::optional<double> separation(const Footprint& earlier, const Footprint& later) const;
 
   struct PendingEnd {
     ActionId action;

@@ -29,6 +29,17 @@ bool stands_at_origin_when_missing(std::uint64_t id) {
 
 bool PartialPlan::Interface::allows_all_of(const Interface& other) const {
   if (targets.size() != other.targets.size()) return false;
+  // A key last written one way in one plan and another way in the other
+  // asks different gaps of a later writer: the plans are not comparable.
+  for (std::size_t i = 0, j = 0; i < writer_kinds.size() && j < other.writer_kinds.size();) {
+    if (writer_kinds[i].first < other.writer_kinds[j].first) {
+      ++i;
+    } else if (other.writer_kinds[j].first < writer_kinds[i].first) {
+      ++j;
+    } else {
+      if (writer_kinds[i++].second != other.writer_kinds[j++].second) return false;
+    }
+  }
   for (std::size_t t = 0; t < targets.size(); ++t) {
     const Target& a = targets[t];
     const Target& b = other.targets[t];
@@ -60,24 +71,31 @@ PartialPlan::Interface PartialPlan::interface(bool timed_literals_remain) const 
   for (const auto& [run, i] : runs) targets.push_back(pending_[i].node);
   if (targets.empty()) return result;
 
-  // Sources, as (id, node).
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> sources;
+  // Sources, as (id, node, offset). A later writer comes epsilon after a
+  // reader since the last write but may coincide with a holder: a holder
+  // counts as a reader epsilon earlier, so that one id compares both.
+  struct Source {
+    std::uint64_t id;
+    std::uint32_t node;
+    double offset = 0.0;
+  };
+  std::vector<Source> sources;
   auto ledger_sources = [&](const Ledger& ledger, SourceKind writer, SourceKind touched) {
-    std::map<std::uint32_t, std::vector<std::uint32_t>> readers;  // key -> nodes read since the last write
     for (const Use& r : ledger.reads) {
       const std::optional<std::uint32_t> w = ledger.writer(r.key);
-      if (!w || r.step > *w) readers[r.key].push_back(node_of_step_[r.step]);
+      if (!w || r.step > *w) {
+        sources.push_back({source_id(touched, r.key), node_of_step_[r.step], r.kind == WriteKind::Add ? -epsilon_ : 0.0});
+      }
     }
     for (const Use& w : ledger.writers) {
       sources.push_back({source_id(writer, w.key), node_of_step_[w.step]});
       sources.push_back({source_id(touched, w.key), node_of_step_[w.step]});
-    }
-    for (const auto& [key, nodes] : readers) {
-      for (std::uint32_t n : nodes) sources.push_back({source_id(touched, key), n});
+      result.writer_kinds.emplace_back(source_id(writer, w.key), static_cast<unsigned char>(w.kind));
     }
   };
   ledger_sources(facts_, kFactWriter, kFactTouched);
   ledger_sources(values_, kValueWriter, kValueTouched);
+  std::sort(result.writer_kinds.begin(), result.writer_kinds.end());
   for (std::size_t r = 0; r < runs.size(); ++r) {
     const PendingEnd& p = pending_[runs[r].second];
     sources.push_back({source_id(kRunStart, r), p.start_node});
@@ -114,9 +132,10 @@ PartialPlan::Interface PartialPlan::interface(bool timed_literals_remain) const 
     Interface::Target t;
     t.to_origin = longest(0);
     std::map<std::uint64_t, double> by_source;
-    for (const auto& [id, node] : sources) {
-      auto [it, fresh] = by_source.try_emplace(id, kNoPath);
-      it->second = std::max(it->second, longest(node));
+    for (const Source& source : sources) {
+      auto [it, fresh] = by_source.try_emplace(source.id, kNoPath);
+      const double path = longest(source.node);
+      if (path != kNoPath) it->second = std::max(it->second, path + source.offset);
     }
     // A key read but not written since the origin also waits for the origin.
     for (auto& [id, value] : by_source) {

@@ -145,7 +145,14 @@ std::string format_plan_time(double x) {
   if (on_grid(x, grid)) {
     std::snprintf(buffer, sizeof buffer, "%.3f", grid == 0.0 ? 0.0 : grid);
   } else {
-    std::snprintf(buffer, sizeof buffer, "%.6f", x);
+    // Six decimals, or up to nine where six would move a time by more than
+    // 1e-9 (a plan whose happenings are only just over 0.0001 apart).
+    int decimals = 6;
+    for (; decimals < 9; ++decimals) {
+      const double scale = std::pow(10.0, decimals);
+      if (std::fabs(std::round(x * scale) / scale - x) < 1e-10) break;
+    }
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, x);
   }
   return buffer;
 }
@@ -153,7 +160,7 @@ std::string format_plan_time(double x) {
 double rounded_plan_time(double x) {
   const double grid = std::round(x * 1000.0) / 1000.0;
   if (on_grid(x, grid)) return grid == 0.0 ? 0.0 : grid;
-  return std::round(x * 1e6) / 1e6;
+  return std::stod(format_plan_time(x));
 }
 
 std::string write_plan(const Plan& plan, int decimals) {

@@ -320,7 +320,7 @@ class PlanChecker {
       : task_(std::move(task)), start_(start), index_(index), search_start_(search_start), options_(options),
         from_initial_(is_initial_start(*task_, start) && !options.validate_ground) {
     // The plan validator grounds the task again for itself: only from the start.
-    if (from_initial_) validator_.emplace(task_->lifted, ValidatorOptions{options.epsilon, false});
+    if (from_initial_) validator_.emplace(task_->lifted, ValidatorOptions{options.tolerance, false});
   }
 
   FoundPlan check(const Solution& solution, const std::string& engine) {
@@ -342,7 +342,7 @@ class PlanChecker {
     found.text = plan_text(found.plan);
     found.engine = engine;
     found.validation = from_initial_ ? validator_->validate(read_plan(found.text, "planner output").plan)
-                                     : validate_from(*task_, start_, solution, actions, found.text, options_.epsilon);
+                                     : validate_from(*task_, start_, solution, actions, found.text, options_.tolerance);
     return found;
   }
 
@@ -371,7 +371,7 @@ std::optional<PlannerResult> Planner::refused(const TaskIndex& index, const Plan
     result.message = "no plan exists: the goal can never hold (" + *task_->goal.never + ")";
     return result;
   }
-  if (const auto clash = clashing_timed_literals(*task_, start.next_timed_literal, options_.epsilon)) {
+  if (const auto clash = clashing_timed_literals(*task_, start.next_timed_literal, options_.tolerance)) {
     result.status = PlannerResult::Status::Unsolvable;
     result.message = "no plan exists: " + *clash;
     return result;
@@ -385,7 +385,64 @@ std::optional<PlannerResult> Planner::refused(const TaskIndex& index, const Plan
   return std::nullopt;
 }
 
+// The gap VAL needs to see two happenings, with its tolerance t: more than
+// t/10 (points within t/10 of a happening's first join it). 1e-7 over it,
+// so that the printed times (plan.h) keep the happenings apart.
+double closest_gap(double tolerance) { return tolerance / 10.0 + 1e-7; }
+
 PlannerResult Planner::search_from(const PlanningStart& start, const std::function<void(const FoundPlan&)>& on_plan) {
+  const Clock::time_point began = Clock::now();
+  bool by_search = false;
+  PlannerResult result = search_once(start, on_plan, by_search);
+  const bool retry = (result.status == PlannerResult::Status::Unsolvable && by_search) ||
+                     result.status == PlannerResult::Status::Exhausted;
+  if (!retry || !options_.close_gap_fallback || options_.epsilon <= closest_gap(options_.tolerance)) return result;
+  return search_closer(start, on_plan, std::move(result), since(began));
+}
+
+PlannerResult Planner::search_closer(const PlanningStart& start, const std::function<void(const FoundPlan&)>& on_plan,
+                                     PlannerResult first, double elapsed) {
+  PlannerOptions closer = options_;
+  closer.epsilon = closest_gap(options_.tolerance);
+  closer.search = alias("complete");
+  closer.time_limit = std::max(0.0, options_.time_limit - elapsed);
+  closer.close_gap_fallback = false;
+  bool by_search = false;
+  PlannerResult second = Planner(task_, closer, workspace_).search_once(start, on_plan, by_search);
+  second.statistics.expanded += first.statistics.expanded;
+  second.statistics.evaluated += first.statistics.evaluated;
+  second.times.setup += first.times.setup;
+  second.times.search += first.times.search;
+  second.times.validation += first.times.validation;
+  const std::string gap = format_plan_time(closer.epsilon);
+  const std::string at = "with dependent happenings " + format_plan_time(options_.epsilon) + " apart";
+  switch (second.status) {
+    case PlannerResult::Status::Solved:
+      second.message = "no plan " + at + "; this plan's are only " + gap + " apart (VAL separates happenings more than " +
+                       format_plan_time(options_.tolerance / 10.0) + " apart)";
+      return second;
+    case PlannerResult::Status::Unsolvable:
+      if (by_search) {
+        second.message = "no plan exists: the search space is exhausted " + at + " and again with them " + gap +
+                         " apart, the closest VAL (-t " + format_plan_time(options_.tolerance) + ") tells apart";
+      }
+      return second;
+    default:
+      // The first search's verdict stands, and says what it does not prove.
+      first.statistics = second.statistics;
+      first.times = second.times;
+      if (first.status == PlannerResult::Status::Unsolvable) {
+        first.status = PlannerResult::Status::Exhausted;
+        first.message = "the search space is exhausted " + at + "; this is not a proof: plans whose happenings are "
+                        "closer (VAL separates them when more than " + format_plan_time(options_.tolerance / 10.0) +
+                        " apart) were not all searched";
+      }
+      return first;
+  }
+}
+
+PlannerResult Planner::search_once(const PlanningStart& start, const std::function<void(const FoundPlan&)>& on_plan,
+                                   bool& by_search) {
   const Clock::time_point began = Clock::now();
   // The limit counts from here, setup included: a caller's budget is wall time.
   PipelineLimits limits{{}, options_.time_limit, options_.node_limit, options_.address_space_limit, options_.epsilon};
@@ -446,6 +503,7 @@ PlannerResult Planner::search_from(const PlanningStart& start, const std::functi
   result.search_memory = outcome.memory;
   result.times.search = since(search_began) - result.times.validation;
   finish(result, outcome);
+  by_search = outcome.proof_by_search;
   return result;
 }
 

@@ -42,6 +42,15 @@ struct PlannerOptions {
   // RLIMIT_AS, so a search ends before an allocation is refused.
   std::size_t address_space_limit = 0;
   double epsilon = 0.001;          // separation of dependent happenings
+  // VAL's -t, which every plan is validated against: happenings within a
+  // tenth of it are one happening.
+  double tolerance = 0.001;
+  // When no plan exists with dependent happenings `epsilon` apart, search
+  // once more with them only just over a tenth of `tolerance` apart (what
+  // VAL needs to see two happenings): a plan found then is valid, and an
+  // exhausted search then is a proof for every plan VAL would separate
+  // (planner/README.md, "When the planner says no plan exists").
+  bool close_gap_fallback = true;
   // Planning takes time the world does not stop for: with this set, no step
   // starts before now + time_limit, so deadlines (timed literals) shrink by
   // the budget and the plan is still executable when it arrives.
@@ -177,6 +186,14 @@ class Planner {
   // plan_from on the relevant actions' view, its ids mapped.
   PlannerResult plan_relevant(const PlanningStart& start, const std::function<void(const FoundPlan&)>& on_plan);
   PlannerResult search_from(const PlanningStart& start, const std::function<void(const FoundPlan&)>& on_plan);
+  // One search at options_.epsilon; `by_search` says whether an
+  // Unsolvable it returns rests on an exhausted search.
+  PlannerResult search_once(const PlanningStart& start, const std::function<void(const FoundPlan&)>& on_plan,
+                            bool& by_search);
+  // After a search at epsilon found nothing: the same search with
+  // happenings closer together (PlannerOptions::close_gap_fallback).
+  PlannerResult search_closer(const PlanningStart& start, const std::function<void(const FoundPlan&)>& on_plan,
+                              PlannerResult first, double elapsed);
   std::optional<PlannerResult> refused(const TaskIndex& index, const PlanningStart& start) const;
   void finish(PlannerResult& result, const PipelineOutcome& outcome) const;
 

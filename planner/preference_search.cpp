@@ -65,7 +65,7 @@ class Rounds {
   Rounds(std::shared_ptr<const GroundTask> task, const PlannerOptions& options, const PlanningStart& start,
          std::shared_ptr<const TrajectoryMonitor> seen, const std::function<void(const FoundPlan&)>& on_plan)
       : task_(std::move(task)), options_(options), start_(start), seen_(std::move(seen)), on_plan_(on_plan),
-        began_(Clock::now()), validator_(task_->lifted, ValidatorOptions{options.epsilon, false}) {}
+        began_(Clock::now()), validator_(task_->lifted, ValidatorOptions{options.tolerance, false}) {}
 
   double remaining() const { return options_.time_limit - since(began_); }
   PlannerResult& result() { return result_; }
@@ -151,7 +151,7 @@ class Rounds {
       if (id == action_ids_.end()) throw std::logic_error("a planned step the task lacks: " + name + ")");
       actions.push_back(id->second);
     }
-    return validate_printed_from(*task_, start_, printed, actions, {}, options_.epsilon, seen_);
+    return validate_printed_from(*task_, start_, printed, actions, {}, options_.tolerance, seen_);
   }
 
   void add_statistics(const PlannerResult& inner) {

@@ -86,28 +86,32 @@ class RelaxedDnf {
   std::vector<TypeId>& slot_types_;
 };
 
-bool added_at_start(const ActionSchema& schema, PredicateId predicate) {
-  return std::any_of(schema.effects.begin(), schema.effects.end(), [&](const PrimitiveEffect& e) {
-    return e.kind == PrimitiveEffect::Kind::Add && e.moment == Moment::Start && e.atom.predicate == predicate;
-  });
-}
-
-LiftedCondition relaxed_precondition(const ActionSchema& schema, const ReachabilityOptions& options) {
+// A durative action's relaxed precondition: its at-start condition and the
+// static atoms of its over-all condition. A fluent invariant is not needed
+// before the start: another action starting in the same happening may give
+// it (VAL checks invariants after the start's happening), so two actions can
+// hold up each other's invariants, and requiring them here once grounded
+// both away and called a solvable task unsolvable. A static atom holds at
+// the start if and only if it holds at all, and it binds the parameters only
+// the invariant mentions (a link between two places), so it stays.
+LiftedCondition relaxed_precondition(const NormalizedTask& task, const ActionSchema& schema,
+                                     const ReachabilityOptions& options) {
   if (!schema.durative || !options.require_over_all) return schema.at_start;
   LiftedCondition both;
   both.kind = LK::And;
   both.children.push_back(schema.at_start);
-  LiftedCondition invariant = schema.over_all;
-  // An invariant the action establishes itself at start is not required.
-  auto keep = [&](const LiftedCondition& c) {
-    return !(c.kind == LK::Atom && c.positive && added_at_start(schema, c.atom.predicate));
+  auto is_static = [&](const LiftedCondition& c) {
+    return c.kind == LK::Atom && c.positive && !task.predicates[c.atom.predicate].fluent &&
+           !task.predicates[c.atom.predicate].derived;
   };
+  const LiftedCondition& invariant = schema.over_all;
   if (invariant.kind == LK::And) {
-    std::erase_if(invariant.children, [&](const LiftedCondition& c) { return !keep(c); });
-  } else if (!keep(invariant)) {
-    invariant = LiftedCondition{};
+    for (const LiftedCondition& c : invariant.children) {
+      if (is_static(c)) both.children.push_back(c);
+    }
+  } else if (is_static(invariant)) {
+    both.children.push_back(invariant);
   }
-  both.children.push_back(std::move(invariant));
   return both;
 }
 
@@ -124,7 +128,7 @@ std::vector<Rule> make_rules(const NormalizedTask& task, const ReachabilityOptio
   };
   for (std::uint32_t a = 0; a < task.actions.size(); ++a) {
     const ActionSchema& s = task.actions[a];
-    add(false, a, s.parameters, s.variable_slots, relaxed_precondition(s, options));
+    add(false, a, s.parameters, s.variable_slots, relaxed_precondition(task, s, options));
   }
   for (std::uint32_t r = 0; r < task.derived_rules.size(); ++r) {
     const DerivedRule& d = task.derived_rules[r];

@@ -20,10 +20,10 @@
 namespace alplan {
 
 struct ReachabilityOptions {
-  // The planner requires the at-start and over-all atoms of a durative action
-  // (over-all ones unless the action adds them itself at start). The
-  // validator, which must follow any plan it is given, requires only
-  // at-start atoms: a superset.
+  // The planner requires the at-start atoms of a durative action and the
+  // static atoms of its over-all condition (a fluent invariant may come from
+  // another action starting in the same happening). The validator, which
+  // must follow any plan it is given, requires only at-start atoms.
   bool require_over_all = true;
   // Disjunctive preconditions whose DNF would exceed this many disjuncts are
   // relaxed to true instead of split.

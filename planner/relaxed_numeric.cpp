@@ -28,7 +28,12 @@ Interval operator/(Interval a, Interval b) {
 }  // namespace
 
 RelaxedNumeric::RelaxedNumeric(std::size_t variables)
-    : bounds_(variables), greatest_now_(variables), up_(variables, kNoId), down_(variables, kNoId), first_(variables, kNoId) {}
+    : bounds_(variables),
+      greatest_now_(variables),
+      up_(variables, kNoId),
+      down_(variables, kNoId),
+      first_(variables, kNoId),
+      changes_(variables, 0) {}
 
 void RelaxedNumeric::reset(const SearchState& state, const PartialPlan& plan, const ContinuousModel* continuous) {
   for (NumericVarId v = 0; v < bounds_.size(); ++v) {
@@ -44,6 +49,7 @@ void RelaxedNumeric::reset(const SearchState& state, const PartialPlan& plan, co
       }
     }
     up_[v] = down_[v] = first_[v] = kNoId;
+    changes_[v] = 0;
   }
 }
 
@@ -107,6 +113,7 @@ bool RelaxedNumeric::apply(const NumericAssignment& a, ActionId source) {
     default: b = {}; break;
   }
   if (b.lo == before.lo && b.hi == before.hi) return false;
+  if (++changes_[a.variable] > kWidenAfter) b = {};
   if (first_[a.variable] == kNoId) first_[a.variable] = source;
   const bool undefined_before = before.undefined();
   if (up_[a.variable] == kNoId && (undefined_before || b.hi > before.hi)) up_[a.variable] = source;

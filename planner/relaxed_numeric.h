@@ -7,6 +7,7 @@
 // relaxation stands for.
 #pragma once
 
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -52,6 +53,11 @@ class RelaxedNumeric {
   std::vector<Interval> bounds_;
   std::vector<double> greatest_now_;
   std::vector<ActionId> up_, down_, first_;  // supporters by direction, and either way
+  // Changes of each variable in this evaluation: past kWidenAfter, a change
+  // widens it to everything (an assignment cycle, x := y + 1 and y := x + 1,
+  // would otherwise widen it by one a round for ever).
+  std::vector<std::uint32_t> changes_;
+  static constexpr std::uint32_t kWidenAfter = 16;
 };
 
 }  // namespace alplan

@@ -251,6 +251,7 @@ PipelineOutcome run_pipeline(const SearchConfiguration& configuration, const Pip
         result.not_proven = proof_limits(context.index);
         if (result.not_proven.empty()) {
           result.proof = "the search space is exhausted";
+          result.proof_by_search = true;
           return result;
         }
       }

@@ -50,6 +50,10 @@ struct PipelineContext {
 struct PipelineOutcome {
   bool stopped_at_limit = false;  // time, nodes or memory
   std::string proof;              // why no plan exists; empty: no proof
+  // The proof is an exhausted complete search, which holds for plans whose
+  // dependent happenings are the search's epsilon apart (not the relaxation
+  // or the grounding, which hold for any gap).
+  bool proof_by_search = false;
   std::string not_proven;         // why an exhausted search is no proof
   SearchStatistics statistics;
   // The search a limit stopped, handed over unfreed (planner.h says why).

@@ -19,6 +19,10 @@ double updated(double current, pddl::AssignOperator op, double value) {
   return value;
 }
 
+bool additive(pddl::AssignOperator op) {
+  return op == pddl::AssignOperator::Increase || op == pddl::AssignOperator::Decrease;
+}
+
 void narrow(DurationWindow& window, pddl::Comparison comparison, double v) {
   if (comparison != pddl::Comparison::LessEqual) window.min = std::max(window.min, v);
   if (comparison != pddl::Comparison::GreaterEqual) window.max = std::min(window.max, v);
@@ -80,6 +84,16 @@ bool SuccessorGenerator::apply_effects(const HappeningEffects& effects, const Se
     std::vector<std::pair<const NumericAssignment*, double>> updates;
     for (const auto* list : numeric) {
       for (const NumericAssignment& a : *list) updates.emplace_back(&a, evaluate(a.value, before, context));
+    }
+    // A snap that changes one value twice, not both times additively, is
+    // a mutex with itself in VAL (its Ownership.cpp): never applicable.
+    for (std::size_t i = 0; i < updates.size(); ++i) {
+      for (std::size_t j = i + 1; j < updates.size(); ++j) {
+        if (updates[i].first->variable == updates[j].first->variable &&
+            !(additive(updates[i].first->assign) && additive(updates[j].first->assign))) {
+          return false;
+        }
+      }
     }
     for (const auto* list : dels) {
       for (FactId f : *list) after.set_fact(f, false);

@@ -33,22 +33,51 @@ void condition_reads(const ConditionSet& c, Footprint& fp) {
   for (const GroundFormula& f : c.complex) formula_reads(f, fp);
 }
 
+// An over-all condition: held, not read (snap_action.h).
+void condition_holds(const ConditionSet& c, Footprint& fp) {
+  Footprint held;
+  condition_reads(c, held);
+  fp.holds.insert(fp.holds.end(), held.reads.begin(), held.reads.end());
+  fp.holds_values.insert(fp.holds_values.end(), held.reads_values.begin(), held.reads_values.end());
+}
+
+bool additive(pddl::AssignOperator op) {
+  return op == pddl::AssignOperator::Increase || op == pddl::AssignOperator::Decrease;
+}
+
 void effect_footprint(const HappeningEffects& e, Footprint& fp) {
-  auto numeric = [&](const std::vector<NumericAssignment>& assignments) {
+  std::vector<NumericVarId> other_values;  // written otherwise than additively, unconditionally
+  auto numeric = [&](const std::vector<NumericAssignment>& assignments, bool conditional) {
     for (const NumericAssignment& a : assignments) {
       fp.writes_values.push_back(a.variable);
       append_variables(a.value, fp.reads_values);
+      (additive(a.assign) && !conditional ? fp.additive_values : other_values).push_back(a.variable);
     }
   };
   fp.writes.insert(fp.writes.end(), e.add.begin(), e.add.end());
   fp.writes.insert(fp.writes.end(), e.del.begin(), e.del.end());
-  numeric(e.numeric);
+  fp.adds.insert(fp.adds.end(), e.add.begin(), e.add.end());
+  fp.dels.insert(fp.dels.end(), e.del.begin(), e.del.end());
+  numeric(e.numeric, false);
+  std::vector<FactId> conditional_writes;
   for (const ConditionalEffect& c : e.conditional) {
     condition_reads(c.condition, fp);
     fp.writes.insert(fp.writes.end(), c.add.begin(), c.add.end());
     fp.writes.insert(fp.writes.end(), c.del.begin(), c.del.end());
-    numeric(c.numeric);
+    conditional_writes.insert(conditional_writes.end(), c.add.begin(), c.add.end());
+    conditional_writes.insert(conditional_writes.end(), c.del.begin(), c.del.end());
+    numeric(c.numeric, true);
   }
+  // A key written two ways (or conditionally) is written neither way only.
+  auto drop = [](std::vector<std::uint32_t>& from, const std::vector<std::uint32_t>& keys) {
+    std::erase_if(from, [&](std::uint32_t k) { return std::find(keys.begin(), keys.end(), k) != keys.end(); });
+  };
+  const std::vector<FactId> adds = fp.adds, dels = fp.dels;
+  drop(fp.adds, dels);
+  drop(fp.adds, conditional_writes);
+  drop(fp.dels, adds);
+  drop(fp.dels, conditional_writes);
+  drop(fp.additive_values, other_values);
 }
 
 template <typename T>
@@ -62,6 +91,21 @@ void finish(Footprint& fp) {
   unique(fp.writes);
   unique(fp.reads_values);
   unique(fp.writes_values);
+  unique(fp.holds);
+  unique(fp.holds_values);
+  unique(fp.adds);
+  unique(fp.dels);
+  unique(fp.additive_values);
+  // What is read is not merely held; what is read is not written one way
+  // only (a reader and writer of one key conflicts with any other writer).
+  auto drop = [](std::vector<std::uint32_t>& from, const std::vector<std::uint32_t>& keys) {
+    std::erase_if(from, [&](std::uint32_t k) { return std::binary_search(keys.begin(), keys.end(), k); });
+  };
+  drop(fp.holds, fp.reads);
+  drop(fp.holds_values, fp.reads_values);
+  drop(fp.adds, fp.reads);
+  drop(fp.dels, fp.reads);
+  drop(fp.additive_values, fp.reads_values);
 }
 
 bool effects_mention_duration(const HappeningEffects& e) {
@@ -95,9 +139,16 @@ class DerivedReads {
   }
 
   void expand(Footprint& fp) const {
+    expand(fp.reads, fp.reads, fp.reads_values);
+    expand(fp.holds, fp.holds, fp.holds_values);
+  }
+
+ private:
+  void expand(const std::vector<FactId>& derived_from, std::vector<FactId>& facts,
+              std::vector<NumericVarId>& values) const {
     std::vector<PredicateId> predicates;
     std::vector<FunctionId> functions;
-    for (FactId f : fp.reads) {
+    for (FactId f : derived_from) {
       if (!task_.is_derived(f)) continue;
       const PredicateId p = task_.facts.key(f).head;
       predicates.insert(predicates.end(), lifted_.predicates(p).begin(), lifted_.predicates(p).end());
@@ -105,10 +156,8 @@ class DerivedReads {
     }
     unique(predicates);
     unique(functions);
-    for (PredicateId p : predicates) fp.reads.insert(fp.reads.end(), facts_of_[p].begin(), facts_of_[p].end());
-    for (FunctionId f : functions) {
-      fp.reads_values.insert(fp.reads_values.end(), variables_of_[f].begin(), variables_of_[f].end());
-    }
+    for (PredicateId p : predicates) facts.insert(facts.end(), facts_of_[p].begin(), facts_of_[p].end());
+    for (FunctionId f : functions) values.insert(values.end(), variables_of_[f].begin(), variables_of_[f].end());
   }
 
  private:
@@ -179,15 +228,23 @@ std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const Gr
   x.start.resize(t.actions.size());
   x.end.resize(t.actions.size());
   std::vector<std::size_t> load(t.facts.size(), 0);
+  // With continuous change an invariant's support stays epsilon before its
+  // start, as a read: coincident events made the schedule's linear programs
+  // degenerate (robot-battery p04 unsolved in 180 s with them, solved in
+  // 24 s without, 2026-12-02), and with continuous change an exhausted
+  // search is no proof anyway (search_pipeline.h).
+  const bool continuous = std::any_of(t.actions.begin(), t.actions.end(),
+                                      [](const GroundAction& g) { return !g.continuous.empty(); });
+  const auto over_all = continuous ? condition_reads : condition_holds;
   for (ActionId a = 0; a < t.actions.size(); ++a) {
     const GroundAction& action = t.actions[a];
     if (action.durative) {
       condition_reads(action.at_start, x.start[a]);
-      condition_reads(action.over_all, x.start[a]);
+      over_all(action.over_all, x.start[a]);
       for (const GroundDurationConstraint& d : action.duration) append_variables(d.value, x.start[a].reads_values);
       effect_footprint(action.start, x.start[a]);
       condition_reads(action.at_end, x.end[a]);
-      condition_reads(action.over_all, x.end[a]);
+      over_all(action.over_all, x.end[a]);
       effect_footprint(action.end, x.end[a]);
       // A continuous effect changes its variable from the start to the end:
       // both snaps write it, so readers and writers are ordered around them.
@@ -261,7 +318,10 @@ void TaskIndex::index_rest() {
   const GroundTask& t = *task_;
   unsupported_ = actions_->unsupported;
   til_.resize(t.timed_literals.size());
-  for (std::size_t i = 0; i < t.timed_literals.size(); ++i) til_[i].writes.push_back(t.timed_literals[i].fact);
+  for (std::size_t i = 0; i < t.timed_literals.size(); ++i) {
+    til_[i].writes.push_back(t.timed_literals[i].fact);
+    (t.timed_literals[i].positive ? til_[i].adds : til_[i].dels).push_back(t.timed_literals[i].fact);
+  }
   if (const AlwaysReads always(t); !always.empty()) {
     for (Footprint& fp : til_) always.expand(fp);
   }

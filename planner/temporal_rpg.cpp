@@ -32,9 +32,11 @@ TemporalRpg::TemporalRpg(const TaskIndex& index, TemporalRpgOptions options, std
       actions_(graph_->actions),
       comparisons_(graph_->comparisons),
       start_watchers_(graph_->start_watchers),
+      sound_start_watchers_(graph_->sound_start_watchers),
       end_watchers_(graph_->end_watchers),
       axiom_watchers_(graph_->axiom_watchers),
       numeric_watchers_(graph_->numeric_watchers),
+      amount_readers_(graph_->amount_readers),
       comparison_variables_(graph_->comparison_variables),
       goal_facts_(graph_->goal_facts),
       goal_numeric_(graph_->goal_numeric) {
@@ -59,6 +61,7 @@ TemporalRpg::TemporalRpg(const TaskIndex& index, TemporalRpgOptions options, std
   x.parked_on_.resize(facts);
   x.started_at_.resize(actions, 0.0);
   x.start_time_.resize(actions, kInfinity);
+  x.ended_.resize(actions, 0);
 }
 
 TemporalRpg::~TemporalRpg() = default;
@@ -117,10 +120,32 @@ void TemporalRpg::Exploration::reach(FactId f, double time, Achiever achiever, d
 
 
 void TemporalRpg::Exploration::apply_numeric(const std::vector<const NumericAssignment*>& effects, ActionId source) {
+  std::vector<NumericVarId> changed;
   for (const NumericAssignment* a : effects) {
-    if (!numeric_.apply(*a, source)) continue;
+    if (numeric_.apply(*a, source)) changed.push_back(a->variable);
+  }
+  while (!changed.empty()) {
+    const NumericVarId v = changed.back();
+    changed.pop_back();
+    // Effects whose amounts read the variable apply again with the wider
+    // amount: (increase (x) (y)) reached before y grew adds more now. The
+    // bounds only widen, and widen to infinity after a few rounds
+    // (relaxed_numeric.h), so this ends.
+    for (const auto& [reader, end] : rpg_.amount_readers_[v]) {
+      const bool applied = end ? ended_.at(reader, generation_) != 0 : start_time_.at(reader, generation_) < kInfinity;
+      if (!applied) continue;
+      const RelaxedAction& r = rpg_.actions_[reader];
+      for (const NumericAssignment* n : end ? r.end_numeric_effects : r.start_numeric_effects) {
+        if (numeric_.apply(*n, reader)) changed.push_back(n->variable);
+      }
+      if (end && running_.at(reader, generation_)) {
+        for (const NumericAssignment* n : r.end_returns) {
+          if (numeric_.apply(*n, reader)) changed.push_back(n->variable);
+        }
+      }
+    }
     // Actions waiting for a comparison on this variable try again.
-    for (ActionId waiting : rpg_.numeric_watchers_[a->variable]) {
+    for (ActionId waiting : rpg_.numeric_watchers_[v]) {
       if (parked_start_.at(waiting, generation_)) {
         parked_start_.at(waiting, generation_) = 0;
         try_start(waiting, enabled_time_.at(waiting, generation_));
@@ -168,24 +193,45 @@ double TemporalRpg::Exploration::cost_of(const std::vector<FactId>& facts) {
 }
 
 void TemporalRpg::Exploration::park(FactId fact, ActionId a, bool end) {
-  if (parked_on_[fact].empty()) parked_facts_.push_back(fact);
-  parked_on_[fact].emplace_back(a, end);
+  std::vector<std::pair<ActionId, bool>>& waiting = parked_on_[fact];
+  if (waiting.empty()) parked_facts_.push_back(fact);
+  // Once per fact: an action parked on several facts and woken by one parks
+  // on the others again.
+  if (std::find(waiting.begin(), waiting.end(), std::pair{a, end}) == waiting.end()) waiting.emplace_back(a, end);
+}
+
+// A fit that fails may fail on several facts, and any of them opening anew
+// (an action achieving it again) can make it fit: the action waits on every
+// restricted fact it needs, not only the one the fit stopped at.
+void TemporalRpg::Exploration::park_on_windows(ActionId a, bool end,
+                                               std::initializer_list<const std::vector<FactId>*> lists) {
+  for (const std::vector<FactId>* list : lists) {
+    for (FactId f : *list) {
+      if (windows_.restricted(f)) park(f, a, end);
+    }
+  }
 }
 
 void TemporalRpg::Exploration::try_start(ActionId a, double time) {
   const RelaxedAction& r = rpg_.actions_[a];
   const GroundAction& g = rpg_.index_.task().actions[a];
   enabled_time_.at(a, generation_) = time;
-  if (!satisfiable(r.start_numeric)) {
+  const bool sound = mode_ == Relaxation::Sound;
+  if (!satisfiable(sound ? r.sound_start_numeric : r.start_numeric)) {
     parked_start_.at(a, generation_) = 1;
     return;
   }
-  const double epsilon = plan_->epsilon();
+  const double epsilon = gap();
   const double duration = r.durative ? duration_of(a) : 0.0;
   if (duration < 0.0) return;
-  const FactWindows::Fit fit = windows_.fit(time, duration, g.at_start.positive, r.held_over_all, r.held_at_end);
+  // The sound relaxation fits only the start's own condition: what the
+  // invariant and the end need is the end's to wait for.
+  static const std::vector<FactId> kNone;
+  const std::vector<FactId>& over_all = sound ? kNone : r.held_over_all;
+  const std::vector<FactId>& at_end = sound ? kNone : r.held_at_end;
+  const FactWindows::Fit fit = windows_.fit(time, duration, g.at_start.positive, over_all, at_end);
   if (!fit.ok) {
-    park(fit.blocking, a, false);
+    park_on_windows(a, false, {&g.at_start.positive, &over_all, &at_end});
     return;
   }
   const double start = fit.start;
@@ -210,7 +256,7 @@ void TemporalRpg::Exploration::try_start(ActionId a, double time) {
 
 void TemporalRpg::Exploration::try_end(ActionId a) {
   const RelaxedAction& r = rpg_.actions_[a];
-  if (!satisfiable(r.end_numeric)) {
+  if (!satisfiable(mode_ == Relaxation::Sound ? r.sound_end_numeric : r.end_numeric)) {
     parked_end_.at(a, generation_) = 1;
     return;
   }
@@ -224,23 +270,24 @@ void TemporalRpg::Exploration::try_end(ActionId a) {
     // invariant need only fit the shortest run ending then (or later).
     const double start = started_at_.at(a, generation_);
     const double shortest = duration_of(a);
-    static const std::vector<FactId> kNone;
+    static const std::vector<FactId> kNoFacts;
     const FactWindows::Fit fit =
-        windows_.fit(std::max(start, end - shortest), shortest, kNone, r.held_over_all, r.held_at_end);
+        windows_.fit(std::max(start, end - shortest), shortest, kNoFacts, r.held_over_all, r.held_at_end);
     if (!fit.ok) {
-      park(fit.blocking, a, true);
+      park_on_windows(a, true, {&r.held_over_all, &r.held_at_end});
       return;
     }
     end = std::max(end, fit.start + shortest);
   } else {
     const FactWindows::Fit fit = windows_.fit(end, 0.0, g.at_end.positive, {}, {});
     if (!fit.ok) {
-      park(fit.blocking, a, true);
+      park_on_windows(a, true, {&g.at_end.positive});
       return;
     }
   }
   const double cost = (running ? 1.0 : start_cost_.at(a, generation_) + 1.0) + cost_of(r.end_pre);
-  for (FactId f : r.end_add) reach(f, end + plan_->epsilon(), {AchieverKind::End, a}, cost);
+  for (FactId f : r.end_add) reach(f, end + gap(), {AchieverKind::End, a}, cost);
+  ended_.at(a, generation_) = 1;
   apply_numeric(r.end_numeric_effects, a);
   if (running) apply_numeric(r.end_returns, a);
 }
@@ -256,7 +303,7 @@ bool TemporalRpg::Exploration::process_next() {
 }
 
 void TemporalRpg::Exploration::process(FactId f, double time) {
-  for (ActionId a : rpg_.start_watchers_[f]) {
+  for (ActionId a : (mode_ == Relaxation::Sound ? rpg_.sound_start_watchers_ : rpg_.start_watchers_)[f]) {
     if (--start_count_.at(a, generation_) == 0) try_start(a, time);
   }
   for (ActionId a : rpg_.end_watchers_[f]) {
@@ -283,7 +330,8 @@ void TemporalRpg::Exploration::start_counters(const SearchState& state, const Pa
   goals_left_ = rpg_.goal_facts_.size();
   start_count_.fallback = 0;
   for (ActionId a = 0; a < rpg_.actions_.size(); ++a) {
-    start_count_.values[a] = static_cast<std::uint32_t>(rpg_.actions_[a].start_pre.size());
+    const RelaxedAction& r = rpg_.actions_[a];
+    start_count_.values[a] = static_cast<std::uint32_t>((mode_ == Relaxation::Sound ? r.sound_start_pre : r.start_pre).size());
     start_count_.stamps[a] = generation_;
     end_count_.values[a] = static_cast<std::uint32_t>(rpg_.actions_[a].end_pre.size()) + 1;
     end_count_.stamps[a] = generation_;
@@ -295,7 +343,7 @@ void TemporalRpg::Exploration::start_counters(const SearchState& state, const Pa
   numeric_.reset(state, plan, continuous_);
   for (FactId f : parked_facts_) parked_on_[f].clear();
   parked_facts_.clear();
-  windows_.reset(state, plan, mode_ == Relaxation::Guiding);
+  windows_.reset(state, plan, mode_ == Relaxation::Guiding, gap());
 }
 
 // What holds now, what timed literals will give, what running actions owe,
@@ -305,12 +353,12 @@ void TemporalRpg::Exploration::seed(const SearchState& state, const PartialPlan&
   for (std::size_t word = 0; word < state.bits().size(); ++word) {
     for (std::uint64_t w = state.bits()[word]; w != 0; w &= w - 1) {
       const FactId f = static_cast<FactId>(word * 64 + static_cast<std::size_t>(__builtin_ctzll(w)));
-      reach(f, plan.available_from(f), {AchieverKind::State, 0}, 0.0);
+      reach(f, plan.available_from(f, gap()), {AchieverKind::State, 0}, 0.0);
     }
   }
   for (std::uint32_t t = state.next_timed_literal(); t < task.timed_literals.size(); ++t) {
     const GroundTimedLiteral& til = task.timed_literals[t];
-    if (til.positive) reach(til.fact, til.time + plan.epsilon(), {AchieverKind::TimedLiteral, t}, 0.0);
+    if (til.positive) reach(til.fact, til.time + gap(), {AchieverKind::TimedLiteral, t}, 0.0);
   }
   for (const RunningAction& running : state.running()) {
     if (running_.at(running.action, generation_)) continue;  // the earliest run of it counts
@@ -325,7 +373,8 @@ void TemporalRpg::Exploration::seed(const SearchState& state, const PartialPlan&
   // run, and a provider started again at once would open spans a holder
   // cannot use: temporal-machine-shop's firings).
   for (ActionId a = 0; a < rpg_.actions_.size(); ++a) {
-    if (!rpg_.actions_[a].start_pre.empty()) continue;
+    const RelaxedAction& r = rpg_.actions_[a];
+    if (!(mode_ == Relaxation::Sound ? r.sound_start_pre : r.start_pre).empty()) continue;
     const bool running = running_.at(a, generation_);
     try_start(a, running && mode_ == Relaxation::Guiding ? plan.pending_end_time(a) : 0.0);
   }

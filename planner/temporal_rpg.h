@@ -64,6 +64,11 @@ class TemporalRpg : public Heuristic {
  private:
   struct RelaxedAction {
     std::vector<FactId> start_pre, end_pre;
+    // What the sound relaxation waits for before a start: its at-start
+    // facts only. An invariant may come from another start in the same
+    // happening, and what the end needs waits for the end.
+    std::vector<FactId> sound_start_pre;
+    std::vector<std::uint32_t> sound_start_numeric, sound_end_numeric;
     std::vector<std::uint32_t> start_numeric, end_numeric;  // indices into comparisons_
     std::vector<FactId> start_add, end_add;
     // The over-all and at-end facts whose windows the action must fit: those
@@ -111,9 +116,11 @@ class TemporalRpg : public Heuristic {
   const std::vector<RelaxedAction>& actions_;
   const std::vector<const GroundComparison*>& comparisons_;
   const std::vector<std::vector<ActionId>>& start_watchers_;
+  const std::vector<std::vector<ActionId>>& sound_start_watchers_;
   const std::vector<std::vector<ActionId>>& end_watchers_;
   const std::vector<std::vector<std::uint32_t>>& axiom_watchers_;
   const std::vector<std::vector<ActionId>>& numeric_watchers_;
+  const std::vector<std::vector<std::pair<ActionId, bool>>>& amount_readers_;
   const std::vector<std::vector<NumericVarId>>& comparison_variables_;
   const std::vector<FactId>& goal_facts_;
   const std::vector<std::uint32_t>& goal_numeric_;
@@ -125,8 +132,13 @@ struct TemporalRpg::Graph {
   std::vector<RelaxedAction> actions;
   std::vector<const GroundComparison*> comparisons;
   std::vector<std::vector<ActionId>> start_watchers, end_watchers;  // by fact
+  std::vector<std::vector<ActionId>> sound_start_watchers;           // by fact
   std::vector<std::vector<std::uint32_t>> axiom_watchers;            // by fact
   std::vector<std::vector<ActionId>> numeric_watchers;                // by variable
+  // By variable: the snaps whose numeric effects read it in their amounts
+  // ((increase (x) (y)) reads y), as (action, end?): when the variable
+  // widens, their effects apply again with the wider amount.
+  std::vector<std::vector<std::pair<ActionId, bool>>> amount_readers;
   std::vector<std::vector<NumericVarId>> comparison_variables;
   std::vector<FactId> goal_facts;  // sorted
   std::vector<std::uint32_t> goal_numeric;

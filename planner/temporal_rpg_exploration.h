@@ -6,6 +6,7 @@
 // Internal to the heuristic: temporal_rpg.cpp and relaxed_plan.cpp only.
 #pragma once
 
+#include <initializer_list>
 #include <optional>
 #include <queue>
 #include <vector>
@@ -98,10 +99,17 @@ class TemporalRpg::Exploration {
   void apply_numeric(const std::vector<const NumericAssignment*>& effects, ActionId source);
   bool satisfiable(const std::vector<std::uint32_t>& comparisons) const;
   void park(FactId fact, ActionId a, bool end);
+  void park_on_windows(ActionId a, bool end, std::initializer_list<const std::vector<FactId>*> lists);
   double duration_of(ActionId a);
   void start_counters(const SearchState& state, const PartialPlan& plan);
   void seed(const SearchState& state, const PartialPlan& plan);
   bool goals_reached() const { return goals_left_ == 0 && satisfiable(rpg_.goal_numeric_); }
+  // How long after its achiever a fact is usable. The guiding relaxation
+  // keeps the search's epsilon; the sound one none: VAL needs only more than
+  // a tenth of its tolerance between dependent happenings, and an invariant
+  // may start with its achiever, so any positive gap could close a window a
+  // real plan fits.
+  double gap() const { return mode_ == Relaxation::Sound ? 0.0 : plan_->epsilon(); }
 
   TemporalRpg& rpg_;
   Relaxation mode_ = Relaxation::Guiding;
@@ -114,6 +122,7 @@ class TemporalRpg::Exploration {
   Stamped<Achiever> achiever_;
   Stamped<std::uint32_t> start_count_, end_count_, axiom_count_;
   Stamped<char> processed_, parked_start_, parked_end_;
+  Stamped<char> ended_;  // the end was reached (its effects applied)
   // The state's running actions, as a lookup: SearchState::is_running scans
   // its list, and try_end asks for every end the exploration reaches.
   Stamped<char> running_;

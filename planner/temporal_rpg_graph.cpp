@@ -30,6 +30,7 @@ std::shared_ptr<const TemporalRpg::Graph> TemporalRpg::build(const TaskIndex& in
   };
   const std::size_t facts = task.facts.size();
   graph->start_watchers.resize(facts);
+  graph->sound_start_watchers.resize(facts);
   graph->end_watchers.resize(facts);
   graph->axiom_watchers.resize(facts);
   graph->numeric_watchers.resize(task.numeric.size());
@@ -93,6 +94,7 @@ std::shared_ptr<const TemporalRpg::Graph> TemporalRpg::build(const TaskIndex& in
     }
     r.start_pre = g.at_start.positive;
     numeric_list(g.at_start, r.start_numeric);
+    r.sound_start_numeric = r.start_numeric;
     if (g.durative) {
       // An invariant the start establishes itself is not needed before it.
       for (FactId f : g.over_all.positive) {
@@ -103,6 +105,7 @@ std::shared_ptr<const TemporalRpg::Graph> TemporalRpg::build(const TaskIndex& in
       const std::uint32_t first = add_comparisons(g.over_all.numeric);
       for (std::uint32_t i = 0; i < g.over_all.numeric.size(); ++i) over_all_comparisons.emplace_back(a, first + i);
       numeric_list(g.at_end, r.end_numeric);
+      r.sound_end_numeric = r.end_numeric;
       auto own = [&](FactId f) { return std::find(r.start_add.begin(), r.start_add.end(), f) != r.start_add.end(); };
       for (FactId f : g.over_all.positive) {
         if (!own(f)) r.held_over_all.push_back(f);
@@ -115,7 +118,11 @@ std::shared_ptr<const TemporalRpg::Graph> TemporalRpg::build(const TaskIndex& in
     r.start_pre.erase(std::unique(r.start_pre.begin(), r.start_pre.end()), r.start_pre.end());
     std::sort(r.end_pre.begin(), r.end_pre.end());
     r.end_pre.erase(std::unique(r.end_pre.begin(), r.end_pre.end()), r.end_pre.end());
+    r.sound_start_pre = g.at_start.positive;
+    std::sort(r.sound_start_pre.begin(), r.sound_start_pre.end());
+    r.sound_start_pre.erase(std::unique(r.sound_start_pre.begin(), r.sound_start_pre.end()), r.sound_start_pre.end());
     for (FactId f : r.start_pre) graph->start_watchers[f].push_back(a);
+    for (FactId f : r.sound_start_pre) graph->sound_start_watchers[f].push_back(a);
     for (FactId f : r.end_pre) graph->end_watchers[f].push_back(a);
   }
   for (std::uint32_t x = 0; x < task.axioms.size(); ++x) {
@@ -145,9 +152,24 @@ std::shared_ptr<const TemporalRpg::Graph> TemporalRpg::build(const TaskIndex& in
       own = own || std::find(reads.begin(), reads.end(), n->variable) != reads.end();
     }
     (own ? r.end_numeric : r.start_numeric).push_back(c);
+    r.sound_end_numeric.push_back(c);
+  }
+  graph->amount_readers.resize(task.numeric.size());
+  for (ActionId a = 0; a < graph->actions.size(); ++a) {
+    const RelaxedAction& r = graph->actions[a];
+    for (const bool end : {false, true}) {
+      std::vector<NumericVarId> read;
+      for (const auto* list : end ? std::vector{&r.end_numeric_effects, &r.end_returns} : std::vector{&r.start_numeric_effects}) {
+        for (const NumericAssignment* n : *list) append_variables(n->value, read);
+      }
+      std::sort(read.begin(), read.end());
+      read.erase(std::unique(read.begin(), read.end()), read.end());
+      for (NumericVarId v : read) graph->amount_readers[v].emplace_back(a, end);
+    }
   }
   for (ActionId a = 0; a < graph->actions.size(); ++a) {
-    for (const auto* list : {&graph->actions[a].start_numeric, &graph->actions[a].end_numeric}) {
+    const RelaxedAction& r = graph->actions[a];
+    for (const auto* list : {&r.start_numeric, &r.end_numeric, &r.sound_start_numeric, &r.sound_end_numeric}) {
       for (std::uint32_t c : *list) {
         for (NumericVarId v : graph->comparison_variables[c]) graph->numeric_watchers[v].push_back(a);
       }

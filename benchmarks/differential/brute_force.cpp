@@ -6,9 +6,8 @@
 #include <set>
 #include <vector>
 
-#include "pddl_parser/type_hierarchy.h"
-#include "planner/normalize.h"
-#include "planner/validator.h"
+#include "oracle/judge.h"
+#include "oracle/world.h"
 
 namespace alplan::differential {
 namespace {
@@ -17,46 +16,16 @@ struct GroundStep {
   std::string action;
   std::vector<std::string> args;
   bool durative = false;
-  std::vector<double> durations;  // candidates, for durative steps
+  std::vector<double> durations;  // fixed candidates
+  double min_duration = 0.0, max_duration = 0.0;  // the range end-aligned durations must lie in
 };
 
-struct NamedObject {
-  std::string name;
-  pddl::TypeNames types;
-};
-
-// Every object of a type expression (an either-list; empty: object).
-std::vector<std::string> objects_of(const pddl::TypeNames& wanted, const std::vector<NamedObject>& objects,
-                                    const pddl::TypeHierarchy& types) {
-  std::vector<std::string> out;
-  for (const NamedObject& o : objects) {
-    const bool fits = o.types.empty() ? wanted.empty() || types.fits("object", wanted)
-                                      : std::any_of(o.types.begin(), o.types.end(),
-                                                    [&](const std::string& t) { return types.fits(t, wanted); });
-    if (fits) out.push_back(o.name);
-  }
-  return out;
-}
-
-void tuples(const std::vector<std::vector<std::string>>& domains, std::vector<std::string>& current,
-            std::vector<std::vector<std::string>>& out) {
-  if (current.size() == domains.size()) {
-    out.push_back(current);
-    return;
-  }
-  for (const std::string& o : domains[current.size()]) {
-    current.push_back(o);
-    tuples(domains, current, out);
-    current.pop_back();
-  }
-}
-
-// Numbers a duration constraint names, when all of it is constant; empty
-// when it reads something else.
-std::optional<std::vector<double>> constant_durations(const std::vector<pddl::DurationConstraint>& constraints) {
+// Fixed candidates and the admissible range of a duration constraint whose
+// every bound is a number; nullopt when a bound reads the state.
+bool constant_durations(const std::vector<pddl::DurationConstraint>& constraints, GroundStep& step) {
   double lo = 0.0, hi = std::numeric_limits<double>::infinity();
   for (const pddl::DurationConstraint& c : constraints) {
-    if (c.value.kind != pddl::NumericExpression::Kind::Number) return std::nullopt;
+    if (c.value.kind != pddl::NumericExpression::Kind::Number) return false;
     const double v = c.value.value;
     switch (c.comparison) {
       case pddl::Comparison::Equal: lo = std::max(lo, v); hi = std::min(hi, v); break;
@@ -66,136 +35,207 @@ std::optional<std::vector<double>> constant_durations(const std::vector<pddl::Du
       case pddl::Comparison::Less: hi = std::min(hi, v); break;
     }
   }
-  if (lo > hi || !std::isfinite(hi)) return std::nullopt;
-  std::set<double> candidates{lo, hi};
-  for (double d = std::ceil(lo); d < hi; d += 1.0) candidates.insert(d);
-  return std::vector<double>(candidates.begin(), candidates.end());
+  if (lo > hi) {
+    step.durations.clear();  // no duration at all: the step is never tried
+    return true;
+  }
+  step.min_duration = lo;
+  step.max_duration = hi;
+  step.durations = {lo};
+  if (std::isfinite(hi) && hi > lo) step.durations.push_back(hi);
+  return true;
 }
 
-std::vector<GroundStep> ground_steps(const pddl::Domain& domain, const pddl::Problem& problem,
-                                     const BruteForceOptions& options) {
-  const pddl::TypeHierarchy types(domain);
-  std::vector<NamedObject> objects;
-  for (const pddl::TypedName& c : domain.constants) objects.push_back({c.name, c.types});
-  for (const pddl::TypedName& o : problem.objects) objects.push_back({o.name, o.types});
+std::vector<GroundStep> ground_steps(oracle::World& world, const BruteForceOptions& options) {
   std::vector<GroundStep> steps;
-  auto instantiate = [&](const std::string& name, const std::vector<pddl::TypedName>& parameters, bool durative,
-                         const std::vector<double>& durations) {
+  auto instantiate = [&](const std::string& name, const std::vector<pddl::TypedName>& parameters,
+                         const GroundStep& pattern) {
     std::vector<std::vector<std::string>> domains;
-    for (const pddl::TypedName& p : parameters) domains.push_back(objects_of(p.types, objects, types));
-    std::vector<std::vector<std::string>> all;
-    std::vector<std::string> current;
-    tuples(domains, current, all);
-    for (std::vector<std::string>& args : all) steps.push_back({name, std::move(args), durative, durations});
-  };
-  for (const pddl::Action& a : domain.actions) instantiate(a.name, a.parameters, false, {});
-  for (const pddl::DurativeAction& a : domain.durative_actions) {
-    std::vector<double> durations;
-    if (const auto constant = constant_durations(a.duration)) {
-      durations = *constant;
-    } else {
-      for (int d = 0; d <= options.max_duration; ++d) durations.push_back(d);
+    for (const pddl::TypedName& p : parameters) domains.push_back(world.objects_of(p.types));
+    std::vector<std::size_t> index(domains.size(), 0);
+    for (const auto& d : domains) {
+      if (d.empty()) return;
     }
-    instantiate(a.name, a.parameters, true, durations);
+    while (true) {
+      GroundStep s = pattern;
+      s.action = name;
+      for (std::size_t k = 0; k < domains.size(); ++k) s.args.push_back(domains[k][index[k]]);
+      steps.push_back(std::move(s));
+      std::size_t k = 0;
+      while (k < domains.size() && ++index[k] == domains[k].size()) index[k++] = 0;
+      if (k == domains.size()) return;
+    }
+  };
+  for (const pddl::Action& a : world.domain().actions) instantiate(a.name, a.parameters, GroundStep{});
+  for (const pddl::DurativeAction& a : world.domain().durative_actions) {
+    GroundStep pattern;
+    pattern.durative = true;
+    if (!constant_durations(a.duration, pattern)) {
+      pattern.min_duration = 0.0;
+      pattern.max_duration = options.max_duration;
+      for (double d = 0.0; d <= options.max_duration + 1e-9; d += options.quantum) pattern.durations.push_back(d);
+    }
+    instantiate(a.name, a.parameters, pattern);
   }
   return steps;
 }
 
+// Times within `offsets` epsilons of each anchor, rounded to 1e-9 so that
+// sums of the same times compare equal.
+std::vector<double> around(const std::vector<double>& anchors, int offsets, double epsilon) {
+  std::set<double> out;
+  for (double a : anchors) {
+    for (int m = -offsets; m <= offsets; ++m) {
+      const double t = std::round((a + m * epsilon) * 1e9) / 1e9;
+      if (t >= 0.0) out.insert(t);
+    }
+  }
+  return {out.begin(), out.end()};
+}
+
 class Enumeration {
  public:
-  Enumeration(PlanValidator& validator, std::vector<GroundStep> steps, std::vector<double> times,
+  Enumeration(oracle::Judge& judge, std::vector<GroundStep> steps, std::vector<double> til_times,
               const BruteForceOptions& options)
-      : validator_(validator), steps_(std::move(steps)), times_(std::move(times)), options_(options) {}
+      : judge_(judge), steps_(std::move(steps)), til_times_(std::move(til_times)), options_(options) {}
 
-  // Plans of exactly `length` steps extending `prefix`; true when one is valid.
-  bool extend(Plan& prefix, std::size_t length, std::size_t first_time, std::size_t first_action) {
-    for (std::size_t t = first_time; t < times_.size(); ++t) {
-      for (std::size_t a = t == first_time ? first_action : 0; a < steps_.size(); ++a) {
-        const GroundStep& g = steps_[a];
-        const std::vector<double> instant{0.0};
-        for (double d : g.durative ? g.durations : instant) {
-          if (result_.validations >= options_.max_validations) {
-            result_.cut_short = true;
-            return false;
-          }
-          PlanStep step;
-          step.time = times_[t];
-          step.action = g.action;
-          step.args = g.args;
-          if (g.durative) step.duration = d;
-          prefix.steps.push_back(step);
-          const bool found = try_prefix(prefix, length, t, a);
-          if (found) return true;
-          prefix.steps.pop_back();
-        }
-      }
-    }
-    return false;
-  }
-
+  // True when a valid plan extends `prefix`.
+  bool extend(oracle::TimedPlan& prefix);
   BruteForceResult& result() { return result_; }
 
  private:
-  bool try_prefix(Plan& prefix, std::size_t length, std::size_t t, std::size_t a) {
-    ++result_.validations;
-    const ValidationResult v = validator_.validate(prefix);
-    if (prefix.steps.size() == length) {
-      if (v.valid) result_.plan = prefix;
-      return v.valid;
+  bool try_plan(oracle::TimedPlan& plan);
+  std::vector<double> anchors(const oracle::TimedPlan& prefix) const {
+    std::vector<double> a{0.0};
+    a.insert(a.end(), til_times_.begin(), til_times_.end());
+    for (const oracle::TimedStep& s : prefix.steps) {
+      a.push_back(s.time);
+      if (s.duration) a.push_back(s.time + *s.duration);
     }
-    if (v.violation && v.violation->kind != Violation::Kind::GoalNotReached &&
-        v.violation->time <= times_[t] + options_.epsilon / 20.0) {
-      return false;  // nothing starting at or after this step can repair it
-    }
-    // The next step starts no earlier; at the same time only a later action
-    // (the order of simultaneous steps does not matter to the validator).
-    return extend(prefix, length, t, a + 1);
+    return a;
   }
 
-  PlanValidator& validator_;
+  oracle::Judge& judge_;
   std::vector<GroundStep> steps_;
-  std::vector<double> times_;
+  std::vector<double> til_times_;
   BruteForceOptions options_;
   BruteForceResult result_;
+  std::vector<std::size_t> step_index_;  // the ground step of each step of the prefix
 };
+
+// A failure no step starting at or after the last start can mend: one at an
+// earlier happening, or at the last start's own happening when it lies in
+// the state before it (a condition, a duration) or in its members (a
+// mutex; more members cannot undo one). An over-all condition failing after
+// the last start's happening could be mended by a step joining it, and a
+// failure at a later happening by a later step.
+bool beyond_repair(const oracle::Verdict& v, double last_start, double epsilon) {
+  using oracle::Failure;
+  if (v.failure == Failure::Goal || v.failure == Failure::Constraint) return false;
+  if (v.failure == Failure::BadPlan || v.failure == Failure::NotJudged) return true;
+  const double window = epsilon / 10.0;
+  if (v.time < last_start - window) return true;
+  if (v.time > last_start + window) return false;
+  return v.failure == Failure::Precondition || v.failure == Failure::Duration || v.failure == Failure::Mutex;
+}
+
+bool Enumeration::try_plan(oracle::TimedPlan& plan) {
+  if (result_.judgements >= options_.max_judgements) {
+    result_.cut_short = true;
+    return false;
+  }
+  ++result_.judgements;
+  const oracle::Verdict v = judge_.judge(plan);
+  if (v.valid()) {
+    result_.plan = plan;
+    return true;
+  }
+  if (static_cast<int>(plan.steps.size()) >= options_.max_steps) return false;
+  if (beyond_repair(v, plan.steps.back().time, options_.epsilon)) return false;
+  return extend(plan);
+}
+
+bool Enumeration::extend(oracle::TimedPlan& prefix) {
+  const double last_time = prefix.steps.empty() ? 0.0 : prefix.steps.back().time;
+  const std::size_t last_step = step_index_.empty() ? 0 : step_index_.back();
+  const std::vector<double> anchor_times = anchors(prefix);
+  const std::vector<double> starts = around(anchor_times, options_.offsets, options_.epsilon);
+  for (std::size_t g = 0; g < steps_.size(); ++g) {
+    const GroundStep& step = steps_[g];
+    std::vector<std::pair<double, double>> choices;  // (start, duration)
+    for (double t : starts) {
+      if (!step.durative) {
+        choices.emplace_back(t, 0.0);
+        continue;
+      }
+      for (double d : step.durations) choices.emplace_back(t, d);
+      for (double end : starts) {
+        const double d = std::round((end - t) * 1e9) / 1e9;
+        if (d >= step.min_duration && d <= step.max_duration) choices.emplace_back(t, d);
+      }
+    }
+    for (double end : starts) {
+      if (!step.durative) break;
+      for (double d : step.durations) choices.emplace_back(std::round((end - d) * 1e9) / 1e9, d);
+    }
+    std::sort(choices.begin(), choices.end());
+    choices.erase(std::unique(choices.begin(), choices.end()), choices.end());
+    for (const auto& [t, d] : choices) {
+      // Steps in order of start time, simultaneous ones in order of ground step.
+      if (t < 0.0 || t < last_time || (!prefix.steps.empty() && t == last_time && g < last_step)) continue;
+      oracle::TimedStep s;
+      s.time = t;
+      s.action = step.action;
+      s.args = step.args;
+      if (step.durative) s.duration = d;
+      prefix.steps.push_back(s);
+      step_index_.push_back(g);
+      const bool found = try_plan(prefix);
+      prefix.steps.pop_back();
+      step_index_.pop_back();
+      if (found) return true;
+      if (result_.cut_short) return false;
+    }
+  }
+  return false;
+}
 
 }  // namespace
 
-BruteForceResult brute_force_plan(const pddl::Domain& domain, const pddl::Problem& problem,
-                                  const BruteForceOptions& options) {
-  std::shared_ptr<const NormalizedTask> lifted;
+std::string describe_bound(const BruteForceOptions& o) {
+  return "plans of up to " + std::to_string(o.max_steps) + " steps, each starting or ending within " +
+         std::to_string(o.offsets) + " epsilon of 0, a timed literal or an earlier step's start or end";
+}
+
+BruteForceResult brute_force_plan(std::shared_ptr<const pddl::Domain> domain,
+                                  std::shared_ptr<const pddl::Problem> problem, const BruteForceOptions& options) {
   try {
-    lifted = std::make_shared<const NormalizedTask>(normalize(domain, problem));
-  } catch (const std::exception& e) {
+    oracle::JudgeOptions judge_options;
+    judge_options.tolerance = options.epsilon;
+    judge_options.exact = true;
+    oracle::Judge judge(domain, problem, judge_options);
+    oracle::World world(domain, problem);
+    std::vector<double> til_times;
+    for (const pddl::TimedInitialLiteral& til : problem->timed_literals) til_times.push_back(til.time);
+    Enumeration enumeration(judge, ground_steps(world, options), til_times, options);
+    oracle::TimedPlan empty;
+    ++enumeration.result().judgements;
+    const oracle::Verdict v = judge.judge(empty);
+    if (!v.judged()) {
+      enumeration.result().error = v.reason;
+      return enumeration.result();
+    }
+    if (v.valid()) {
+      enumeration.result().plan = empty;
+      return enumeration.result();
+    }
+    enumeration.extend(empty);
+    return enumeration.result();
+  } catch (const oracle::NotJudged& e) {
     BruteForceResult r;
     r.error = e.what();
     return r;
   }
-  // Exact comparisons: the planner promises plans that hold without VAL's
-  // slack, and a plan that needs it is not one the planner missed.
-  PlanValidator validator(lifted, {options.epsilon, false, 0.0});
-  std::set<double> grid;
-  std::vector<double> anchors;
-  for (int n = 0; n <= options.horizon; ++n) anchors.push_back(n);
-  for (const pddl::TimedInitialLiteral& til : problem.timed_literals) anchors.push_back(til.time);
-  for (double anchor : anchors) {
-    for (int m = 0; m <= options.offsets; ++m) grid.insert(anchor + m * options.epsilon);
-  }
-  Enumeration enumeration(validator, ground_steps(domain, problem, options),
-                          std::vector<double>(grid.begin(), grid.end()), options);
-  // The empty plan first: the goal may hold from the start.
-  Plan plan;
-  ++enumeration.result().validations;
-  if (validator.validate(plan).valid) {
-    enumeration.result().plan = plan;
-    return enumeration.result();
-  }
-  for (int length = 1; length <= options.max_steps; ++length) {
-    Plan prefix;
-    if (enumeration.extend(prefix, static_cast<std::size_t>(length), 0, 0)) break;
-    if (enumeration.result().cut_short) break;
-  }
-  return enumeration.result();
 }
 
 }  // namespace alplan::differential

@@ -1,49 +1,58 @@
 // A brute-force planner for tiny temporal tasks, the oracle of the
-// differential tester: it shares nothing with the planner but the parser and
-// the validator. It grounds the actions itself (every schema on every tuple
-// of objects of the right types), and enumerates timed plans of up to
-// `max_steps` steps whose start times lie on a grid (integers 0..horizon,
-// and the timed literals' times, each plus 0..offsets epsilons) and whose
-// durations are the constants of the duration constraint (or 0..max_duration
-// when it reads anything else), asking the validator about each.
+// differential tester. It shares no code with the planner: it grounds the
+// actions itself (every action on every tuple of objects of its parameters'
+// types, through the reference semantics' World) and asks the reference
+// semantics (oracle/judge.h, exact comparisons) about every timed plan it
+// enumerates.
 //
-// Steps are enumerated in order of start time (ties by action), depth by
-// depth, so the shortest plans come first. A prefix whose first violation
-// lies at or before its last start is not extended: later steps start at or
-// after it, and a happening cannot repair the state before it, nor undo a
-// mutex or a broken invariant at its own time (VAL's semantics).
-//
-// What it finds is a plan (valid by construction: the validator said so);
-// what it does not find says nothing beyond its grid and length.
+// The bound, within which it is complete (it tries every plan in it, and
+// prunes only prefixes no extension can mend; see brute_force.cpp):
+//  - at most `max_steps` steps;
+//  - each step starts within `offsets` epsilons of an anchor, or ends within
+//    `offsets` epsilons of one, where the anchors are 0, every timed
+//    literal's time and every start and end of the steps that start no
+//    later than it;
+//  - a durative step lasts a duration its constraints name (the bounds of a
+//    range, its fixed value), or one that ends it within `offsets` epsilons
+//    of an anchor; where the constraint reads the state, a duration from
+//    the lattice 0, q, 2q, .. `max_duration` (q = `quantum`).
+// Plans whose times are chains of durations, literal times and epsilon
+// gaps lie inside; a plan whose step must start at a time no such chain
+// gives (halfway through a gap, say) does not. What it finds is a plan (the
+// reference semantics said so); what it does not find says nothing beyond
+// the bound, and a search cut short by `max_judgements` says nothing at all.
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 
+#include "oracle/timed_plan.h"
 #include "pddl_parser/ast.h"
-#include "planner/plan.h"
 
 namespace alplan::differential {
 
 struct BruteForceOptions {
   int max_steps = 3;
-  int horizon = 12;      // integer start times 0..horizon
-  int offsets = 3;       // each plus 0..offsets epsilons
-  int max_duration = 5;  // durations tried when the constraint is not constant
+  int offsets = 1;
   double epsilon = 0.001;
-  // The enumeration stops here; the result then says it was cut short.
-  std::uint64_t max_validations = 400000;
+  double quantum = 0.5;
+  double max_duration = 5.0;
+  std::uint64_t max_judgements = 300000;
 };
 
 struct BruteForceResult {
-  std::optional<Plan> plan;
-  std::uint64_t validations = 0;
-  bool cut_short = false;  // max_validations reached before the grid was covered
-  std::string error;       // the task could not be validated at all (normalisation refused it)
+  std::optional<oracle::TimedPlan> plan;
+  std::uint64_t judgements = 0;
+  bool cut_short = false;  // max_judgements reached before the bound was covered
+  std::string error;       // the task could not be judged at all
 };
 
-BruteForceResult brute_force_plan(const pddl::Domain& domain, const pddl::Problem& problem,
-                                  const BruteForceOptions& options = {});
+BruteForceResult brute_force_plan(std::shared_ptr<const pddl::Domain> domain,
+                                  std::shared_ptr<const pddl::Problem> problem, const BruteForceOptions& options = {});
+
+// The bound in words, for reports.
+std::string describe_bound(const BruteForceOptions& options);
 
 }  // namespace alplan::differential

@@ -1,49 +1,25 @@
 #include "benchmarks/differential/differential.h"
 
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <ostream>
+#include <set>
+#include <mutex>
+#include <thread>
 
-#include "pddl_parser/checker.h"
-#include "pddl_parser/parser.h"
+#include "benchmarks/differential/shrink.h"
+#include "oracle/judge.h"
+#include "oracle/load.h"
 #include "planner/grounder.h"
-#include "planner/normalize.h"
 #include "planner/planner.h"
-#include "planner/validator.h"
 
 namespace alplan::differential {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-struct ParsedTask {
-  std::shared_ptr<const pddl::Domain> domain;
-  std::shared_ptr<const pddl::Problem> problem;
-  std::string error;
-};
-
-ParsedTask parse(const RandomTask& task) {
-  ParsedTask parsed;
-  const pddl::DomainParseResult d = pddl::parse_domain(task.domain, "domain.pddl");
-  const pddl::ProblemParseResult p = pddl::parse_problem(task.problem, "problem.pddl");
-  std::vector<pddl::Diagnostic> diagnostics = d.diagnostics;
-  diagnostics.insert(diagnostics.end(), p.diagnostics.begin(), p.diagnostics.end());
-  if (d.ok() && p.ok()) {
-    const std::vector<pddl::Diagnostic> domain_checks = pddl::check_domain(*d.ast, "domain.pddl");
-    const std::vector<pddl::Diagnostic> problem_checks = pddl::check_problem(*d.ast, *p.ast, "problem.pddl");
-    diagnostics.insert(diagnostics.end(), domain_checks.begin(), domain_checks.end());
-    diagnostics.insert(diagnostics.end(), problem_checks.begin(), problem_checks.end());
-  }
-  // Warnings count too: the generator declares what it uses.
-  if (!d.ok() || !p.ok() || !diagnostics.empty()) {
-    for (const pddl::Diagnostic& diagnostic : diagnostics) parsed.error += diagnostic.to_string() + "\n";
-    return parsed;
-  }
-  parsed.domain = d.ast;
-  parsed.problem = p.ast;
-  return parsed;
-}
 
 struct PlannerOutcome {
   std::string status;
@@ -51,7 +27,7 @@ struct PlannerOutcome {
   std::string plan;
 };
 
-PlannerOutcome run_planner(const ParsedTask& task, const DifferentialOptions& options) {
+PlannerOutcome run_planner(const oracle::LoadedTask& task, const DifferentialOptions& options) {
   PlannerOutcome outcome;
   const std::shared_ptr<const GroundTask> ground_task = ground(*task.domain, *task.problem);
   PlannerOptions planner;
@@ -65,6 +41,104 @@ PlannerOutcome run_planner(const ParsedTask& task, const DifferentialOptions& op
   return outcome;
 }
 
+std::string plan_text(const oracle::TimedPlan& plan) {
+  return plan.steps.empty() ? "; the empty plan: the goal holds from the start\n" : oracle::write_timed_plan(plan, 4);
+}
+
+// Whether a plan of one step or none solves the task (then it is trivial).
+bool solved_in_one_step(const oracle::LoadedTask& task, const DifferentialOptions& options, std::uint64_t& judgements) {
+  BruteForceOptions one = options.brute_force;
+  one.max_steps = 1;
+  const BruteForceResult r = brute_force_plan(task.domain, task.problem, one);
+  judgements += r.judgements;
+  return r.plan.has_value();
+}
+
+TaskOutcome disagree(TaskOutcome outcome, Disagreement d, const std::string& kind) {
+  d.kind = kind;
+  outcome.cls = kind;
+  outcome.disagreement = std::move(d);
+  return outcome;
+}
+
+}  // namespace
+
+TaskOutcome check_task(const std::string& domain, const std::string& problem, const DifferentialOptions& options) {
+  TaskOutcome outcome;
+  Disagreement d;
+  d.domain = domain;
+  d.problem = problem;
+  const oracle::LoadedTask task = oracle::load_task_text(domain, problem);
+  if (!task.ok()) {
+    d.message = task.error;
+    return disagree(outcome, d, "generator_error");
+  }
+  PlannerOutcome planner;
+  try {
+    planner = run_planner(task, options);
+  } catch (const std::exception& e) {
+    d.message = e.what();
+    return disagree(outcome, d, "crash");
+  }
+  d.planner_status = planner.status;
+  d.message = planner.message;
+  if (planner.status == "internal_error" || planner.status == "unsupported") return disagree(outcome, d, planner.status);
+  if (planner.status == "solved") {
+    // The planner's plan as it printed it, judged exactly: the planner
+    // promises plans that need no slack.
+    oracle::JudgeOptions exact;
+    exact.exact = true;
+    exact.tolerance = options.brute_force.epsilon;
+    const oracle::TimedPlanRead read = oracle::read_timed_plan(planner.plan);
+    oracle::Verdict v;
+    if (read.ok()) {
+      v = oracle::Judge(task.domain, task.problem, exact).judge(read.plan);
+    } else {
+      v.failure = oracle::Failure::BadPlan;
+      v.reason = read.error;
+    }
+    d.plan = planner.plan;
+    if (!v.judged()) {
+      d.message = v.reason;
+      return disagree(outcome, d, "unjudged_plan");
+    }
+    if (!v.valid()) {
+      d.message = std::string(oracle::to_string(v.failure)) + ": " + v.reason;
+      return disagree(outcome, d, "invalid_plan");
+    }
+  }
+  const BruteForceResult brute = brute_force_plan(task.domain, task.problem, options.brute_force);
+  outcome.judgements += brute.judgements;
+  if (!brute.error.empty()) {
+    d.message = "the reference semantics cannot judge the task: " + brute.error;
+    return disagree(outcome, d, "unjudged_task");
+  }
+  const bool grounded_away = planner.message.find("the goal can never hold") != std::string::npos;
+  if (brute.plan) {
+    outcome.non_trivial = !solved_in_one_step(task, options, outcome.judgements);
+    if (planner.status == "solved") {
+      outcome.cls = "agree_solved";
+      return outcome;
+    }
+    d.plan = plan_text(*brute.plan);
+    return disagree(outcome, d, planner.status == "unsolvable" ? "false_unsolvable" : "missed_plan");
+  }
+  if (planner.status == "solved") {
+    outcome.non_trivial = !solved_in_one_step(task, options, outcome.judgements);
+    outcome.cls = brute.cut_short ? "solved_brute_force_cut_short" : "planner_only_solved";
+    return outcome;
+  }
+  if (brute.cut_short) {
+    outcome.cls = "undecided";
+    return outcome;
+  }
+  outcome.non_trivial = !grounded_away;
+  outcome.cls = planner.status == "unsolvable" ? "agree_unsolvable" : "agree_unsolved";
+  return outcome;
+}
+
+namespace {
+
 void write_task(const Disagreement& d, const std::string& dir) {
   if (dir.empty()) return;
   const std::filesystem::path folder = std::filesystem::path(dir) / ("fuzz-" + std::to_string(d.seed));
@@ -75,66 +149,36 @@ void write_task(const Disagreement& d, const std::string& dir) {
   std::ofstream(folder / "finding.txt") << d.kind << "\nplanner: " << d.planner_status << "\n" << d.message << "\n";
 }
 
-std::string plan_text(const Plan& plan) {
-  return plan.steps.empty() ? "; the empty plan: the goal holds from the start\n" : write_plan(plan, 3);
-}
+}  // namespace
 
-// One task: the planner, then (where it found nothing) the brute force.
-void check_task(std::uint64_t seed, const DifferentialOptions& options, DifferentialReport& report) {
-  const RandomTask task = random_task(seed, options.generator);
-  Disagreement d;
-  d.seed = seed;
-  d.domain = task.domain;
-  d.problem = task.problem;
-  const ParsedTask parsed = parse(task);
-  if (!parsed.domain) {
-    d.kind = "generator_error";
-    d.message = parsed.error;
-    report.disagreements.push_back(d);
-    return;
+namespace {
+
+struct Checked {
+  GeneratedTask task;
+  TaskOutcome outcome;
+};
+
+void record(const DifferentialOptions& options, Checked& c, DifferentialReport& report) {
+  const TaskOutcome& outcome = c.outcome;
+  ++report.tasks;
+  report.judgements += outcome.judgements;
+  if (!options.all_dir.empty()) {
+    const std::filesystem::path folder = std::filesystem::path(options.all_dir) / c.task.name;
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder / "domain.pddl") << c.task.domain;
+    std::ofstream(folder / "problem.pddl") << c.task.problem;
+    std::ofstream(folder / "class.txt") << outcome.cls << (outcome.non_trivial ? " non-trivial" : "") << "\n";
   }
-  PlannerOutcome planner;
-  try {
-    planner = run_planner(parsed, options);
-  } catch (const std::exception& e) {
-    d.kind = "crash";
-    d.message = e.what();
-    report.disagreements.push_back(d);
-    return;
+  ClassCounts& counts = report.by_class[outcome.cls];
+  ++counts.tasks;
+  counts.non_trivial += outcome.non_trivial ? 1 : 0;
+  for (const std::string& f : c.task.features) {
+    ++report.by_feature[f].tasks;
+    report.by_feature[f].non_trivial += outcome.non_trivial ? 1 : 0;
   }
-  d.planner_status = planner.status;
-  d.message = planner.message;
-  if (planner.status == "solved") {
-    ++report.planner_solved;
-    // The planner validated its plan; a validator of our own reads the text,
-    // exactly (the planner promises plans that need no slack).
-    PlanValidator validator(std::make_shared<const NormalizedTask>(normalize(*parsed.domain, *parsed.problem)),
-                            {options.brute_force.epsilon, false, 0.0});
-    const ValidationResult v = validator.validate(read_plan(planner.plan, "planner plan").plan);
-    if (!v.valid) {
-      d.kind = "invalid_plan";
-      d.message = v.violation ? v.violation->message() : "invalid";
-      d.plan = planner.plan;
-      report.disagreements.push_back(d);
-    }
-    return;
-  }
-  if (planner.status == "internal_error" || planner.status == "unsupported") {
-    d.kind = planner.status;
-    report.disagreements.push_back(d);
-    return;
-  }
-  if (planner.status == "unsolvable") ++report.planner_unsolvable;
-  if (planner.status == "exhausted") ++report.planner_exhausted;
-  if (planner.status == "limit_reached") ++report.planner_limit;
-  ++report.brute_force_runs;
-  const BruteForceResult brute = brute_force_plan(*parsed.domain, *parsed.problem, options.brute_force);
-  report.validations += brute.validations;
-  if (brute.cut_short) ++report.brute_force_cut_short;
-  if (!brute.plan) return;
-  ++report.brute_force_solved;
-  d.kind = planner.status == "unsolvable" ? "false_unsolvable" : "missed_plan";
-  d.plan = plan_text(*brute.plan);
+  if (!outcome.disagreement) return;
+  const Disagreement& d = *outcome.disagreement;
+  write_task(d, options.out_dir);
   report.disagreements.push_back(d);
 }
 
@@ -142,31 +186,63 @@ void check_task(std::uint64_t seed, const DifferentialOptions& options, Differen
 
 DifferentialReport run_differential(const DifferentialOptions& options, std::ostream& progress) {
   DifferentialReport report;
+  report.bound = describe_bound(options.brute_force);
   const Clock::time_point began = Clock::now();
-  for (std::uint64_t k = 0; k < options.tasks; ++k) {
-    const double elapsed = std::chrono::duration<double>(Clock::now() - began).count();
-    if (elapsed > options.seconds) break;
-    const std::size_t before = report.disagreements.size();
-    check_task(options.seed + k, options, report);
-    ++report.tasks;
-    for (std::size_t i = before; i < report.disagreements.size(); ++i) {
-      const Disagreement& d = report.disagreements[i];
-      progress << "task " << d.seed << ": " << d.kind << " (planner: " << d.planner_status << ")\n";
-      write_task(d, options.out_dir);
+  std::map<std::uint64_t, Checked> checked;  // by task number; a run may name a million tasks and stop at a minute
+  std::mutex lock;
+  std::atomic<std::uint64_t> next{0};
+  // Each worker takes the next task until none is left or time is up; the
+  // report reads the tasks in order, so it does not depend on the threads.
+  auto work = [&] {
+    while (true) {
+      const std::uint64_t k = next++;
+      if (k >= options.tasks) return;
+      if (std::chrono::duration<double>(Clock::now() - began).count() > options.seconds) return;
+      Checked c;
+      const std::uint64_t seed = options.seed + k;
+      c.task = generate_task(seed, options.generator);
+      c.outcome = check_task(c.task.domain, c.task.problem, options);
+      if (c.outcome.disagreement) {
+        Disagreement& d = *c.outcome.disagreement;
+        d.seed = seed;
+        d.features = c.task.features;
+        {
+          const std::lock_guard<std::mutex> guard(lock);
+          progress << "task " << d.seed << ": " << d.kind << " (planner: " << d.planner_status << ")" << std::endl;
+        }
+        if (options.shrink) d = shrink(d, options);
+      }
+      const std::lock_guard<std::mutex> guard(lock);
+      checked.emplace(k, std::move(c));
     }
-  }
+  };
+  std::vector<std::thread> workers;
+  for (int j = 1; j < std::max(1, options.jobs); ++j) workers.emplace_back(work);
+  work();
+  for (std::thread& w : workers) w.join();
+  for (auto& [k, c] : checked) record(options, c, report);
   report.seconds = std::chrono::duration<double>(Clock::now() - began).count();
   return report;
 }
 
 void print_report(const DifferentialReport& r, std::ostream& out) {
-  out << "tasks: " << r.tasks << " in " << r.seconds << " s\n"
-      << "planner: " << r.planner_solved << " solved, " << r.planner_unsolvable << " unsolvable, "
-      << r.planner_exhausted << " exhausted, " << r.planner_limit << " at a limit\n"
-      << "brute force (where the planner found no plan): " << r.brute_force_runs << " runs, "
-      << r.brute_force_solved << " solved, " << r.brute_force_cut_short << " cut short, " << r.validations
-      << " plans validated\n"
-      << "disagreements: " << r.disagreements.size() << "\n";
+  out << "tasks: " << r.tasks << " in " << r.seconds << " s; " << r.judgements
+      << " plans judged by the reference semantics\nbrute force bound: " << r.bound << "\n";
+  std::uint64_t non_trivial = 0, undecided = 0, disagreements = 0;
+  static const std::set<std::string> agreeing = {"agree_solved", "planner_only_solved", "agree_unsolvable",
+                                                 "agree_unsolved", "solved_brute_force_cut_short"};
+  for (const auto& [cls, c] : r.by_class) {
+    non_trivial += c.non_trivial;
+    if (cls == "undecided") undecided += c.tasks;
+    else if (!agreeing.count(cls)) disagreements += c.tasks;
+    out << "  " << cls << ": " << c.tasks << " (" << c.non_trivial << " non-trivial)\n";
+  }
+  auto share = [&](std::uint64_t n) { return r.tasks ? 100.0 * static_cast<double>(n) / static_cast<double>(r.tasks) : 0.0; };
+  out << "undecided: " << undecided << " (" << share(undecided) << " %), never counted as agreement\n"
+      << "non-trivial: " << non_trivial << " (" << share(non_trivial) << " %)\n"
+      << "by planted structure (tasks, non-trivial):\n";
+  for (const auto& [feature, c] : r.by_feature) out << "  " << feature << ": " << c.tasks << ", " << c.non_trivial << "\n";
+  out << "disagreements: " << disagreements << "\n";
   for (const Disagreement& d : r.disagreements) {
     out << "\n== task " << d.seed << ": " << d.kind << " (planner: " << d.planner_status << ")\n";
     if (!d.message.empty()) out << d.message << "\n";

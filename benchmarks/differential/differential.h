@@ -1,25 +1,42 @@
-// The differential tester: random tasks (random_task.h) given to the planner
-// and, where the planner finds no plan, to the brute-force search
-// (brute_force.h). A disagreement is any of:
-// - invalid_plan: the planner returned a plan the validator rejects (checked
-//   again here, from the printed text, by a validator of its own);
-// - false_unsolvable: the planner said "no plan exists" and the brute force
-//   found one;
-// - missed_plan: the planner gave up (search space exhausted, or a limit)
-//   on a task the brute force solves;
-// - internal_error, unsupported, crash: the planner failed on a task the
-//   generator means to be well within what it supports.
-// Task k of a run is random_task(seed + k): `--tasks 1 --seed S+k` replays it.
+// The differential tester: random tasks (task_generator.h) given to the
+// planner and to a brute force (brute_force.h) that asks the reference
+// semantics (oracle/), which shares no code with the planner.
+//
+// Each task ends in one class:
+//  agree_solved         the planner's plan is valid, and the brute force
+//                       found a plan too;
+//  planner_only_solved  the planner's plan is valid; the brute force
+//                       exhausted its bound without one (the plan is longer
+//                       or its times lie outside the bound);
+//  agree_unsolvable     the planner proved "no plan", and the brute force
+//                       exhausted its bound without one;
+//  agree_unsolved       the planner gave up (no proof), and the brute force
+//                       exhausted its bound without one;
+//  undecided            the brute force was cut short where its answer was
+//                       needed: never counted as agreement;
+// or in a disagreement:
+//  invalid_plan         the reference semantics rejects the planner's plan;
+//  unjudged_plan        it cannot judge it (an undefined value is read);
+//  false_unsolvable     the planner said "no plan exists", the brute force
+//                       found one;
+//  missed_plan          the planner gave up (search exhausted, or a limit)
+//                       on a task the brute force solves;
+//  internal_error, unsupported, crash, generator_error.
+// A task is non-trivial when it is solvable only with two steps or more
+// (no plan of one step exists), or unsolvable for a reason other than
+// grounding.
+// Task k of a run is generate_task(seed + k): `--tasks 1 --seed S+k` replays it.
 #pragma once
 
 #include <cstdint>
 #include <iosfwd>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "benchmarks/differential/brute_force.h"
-#include "benchmarks/differential/random_task.h"
+#include "benchmarks/differential/task_generator.h"
 
 namespace alplan::differential {
 
@@ -28,35 +45,58 @@ struct DifferentialOptions {
   std::uint64_t seed = 1;
   // Stops after this many seconds even if tasks remain (CI's minute).
   double seconds = std::numeric_limits<double>::infinity();
-  // Per task, for the planner: generous against the tasks' size.
-  double planner_time_limit = 10.0;
+  // Per task, for the planner: generous against the tasks' size (no more
+  // than five ground actions; the brute force's search takes a tenth of it).
+  double planner_time_limit = 2.0;
   std::size_t planner_node_limit = 200000;
-  RandomTaskOptions generator;
+  GeneratorOptions generator;
   BruteForceOptions brute_force;
   std::string out_dir;  // where each disagreeing task is written ("": nowhere)
+  std::string all_dir;  // where every task is written, with its class ("": nowhere)
+  bool shrink = true;   // reduce each disagreeing task before writing it
+  int jobs = 1;         // tasks checked at once, each in its own thread
 };
 
 struct Disagreement {
   std::uint64_t seed = 0;
-  std::string kind;            // invalid_plan, false_unsolvable, missed_plan, ...
+  std::string kind;
   std::string planner_status;  // as status_name() prints it
   std::string message;
-  std::string plan;            // the planner's (invalid_plan) or the brute force's
+  std::string plan;  // the planner's (invalid_plan) or the brute force's
   std::string domain, problem;
+  std::vector<std::string> features;
+};
+
+struct ClassCounts {
+  std::uint64_t tasks = 0, non_trivial = 0;
 };
 
 struct DifferentialReport {
   std::uint64_t tasks = 0;
-  std::uint64_t planner_solved = 0, planner_unsolvable = 0, planner_exhausted = 0, planner_limit = 0;
-  std::uint64_t brute_force_runs = 0, brute_force_solved = 0, brute_force_cut_short = 0;
-  std::uint64_t validations = 0;
+  std::map<std::string, ClassCounts> by_class;    // agree_solved, ..., and each disagreement kind
+  std::map<std::string, ClassCounts> by_feature;  // tasks with each planted structure
+  std::uint64_t judgements = 0;
   double seconds = 0.0;
+  std::string bound;
   std::vector<Disagreement> disagreements;
+  std::uint64_t count(const std::string& cls) const {
+    auto it = by_class.find(cls);
+    return it == by_class.end() ? 0 : it->second.tasks;
+  }
 };
+
+// One task: its class (and, for a disagreement, the record).
+struct TaskOutcome {
+  std::string cls;
+  bool non_trivial = false;
+  std::uint64_t judgements = 0;
+  std::optional<Disagreement> disagreement;
+};
+TaskOutcome check_task(const std::string& domain, const std::string& problem, const DifferentialOptions& options);
 
 DifferentialReport run_differential(const DifferentialOptions& options, std::ostream& progress);
 
-// One line per count and one paragraph per disagreement.
+// One line per class and feature, and one paragraph per disagreement.
 void print_report(const DifferentialReport& report, std::ostream& out);
 
 }  // namespace alplan::differential

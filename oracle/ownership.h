@@ -1,0 +1,54 @@
+// Interference between the actions of one happening, as VAL judges it
+// (VAL's Ownership.cpp; the rule of Fox & Long 2003, section 8.2: no two
+// actions at one instant may touch what the other reads or writes, except
+// that several may add one fact, delete one fact, or increase or decrease
+// one fluent). The members are the happening's actions: instantaneous
+// steps, starts, ends and timed initial literals alike, a start and the end
+// of one step being two members.
+//
+// Claims are made in VAL's order (every member's reads first, then each
+// member's effects), and the table below decides each one; the first claim
+// refused is the mutex the verdict names.
+//
+// fact p, claim by member a          refused when p is already
+//   read                             added or deleted by another member
+//   add                              read (by another, or by two members),
+//                                    deleted by another, or read and then
+//                                    added or deleted by a itself
+//   delete                           read by another or by two, added by
+//                                    another
+// fluent v, claim by member a
+//   read                             written by another member
+//   write (increase, decrease)       read by another, assigned by anyone,
+//                                    or additively written by a and now
+//                                    assigned
+//   write (assign, scale-up/-down)   claimed by anyone else in any way, or
+//                                    assigned by a already
+#pragma once
+
+#include <map>
+#include <string>
+
+namespace alplan::oracle {
+
+class Ownership {
+ public:
+  // Member numbers are the happening's; kShared marks a read by two.
+  static constexpr int kShared = -1;
+
+  bool read_fact(int member, int atom);
+  bool add_fact(int member, int atom);
+  bool delete_fact(int member, int atom);
+  bool read_fluent(int member, int fluent);
+  bool write_fluent(int member, int fluent, bool additive);
+
+ private:
+  enum class Kind : unsigned char { Read, Add, Delete, ReadAdd, ReadDelete, Assign };
+  struct Claim {
+    int owner;
+    Kind kind;
+  };
+  std::map<int, Claim> facts_, fluents_;
+};
+
+}  // namespace alplan::oracle
