@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
 """Re-derives the repair figures of benchmarks/README.md from the committed
-runs (issue 32): the README's figures must match their files.
+runs (issue 32), and the differential tester's (issue 42): the README's
+figures must match their files.
 
 Each block of figures in the README stands between
     <!-- figures:NAME -->  and  <!-- /figures:NAME -->
 and is exactly what this script prints for NAME, computed from the runs.json
-files under benchmarks/results/ alone (not from summary.md, which the same
+files under benchmarks/results/ alone (the differential blocks: a run's
+report.txt and counts.json) (not from summary.md, which the same
 program wrote with the numbers). Usage:
 
     benchmarks/readme_figures.py             print every block
@@ -34,6 +36,8 @@ SCATTERS = [("scatter-0", "0"), ("scatter-0.5", "0.5"), ("scatter-1", "1"),
             ("scatter-1-min-weight-1-adapt-1", "1, repairs and adapt to weight 1")]
 STABILITY = ["stability-ipc2002-1-5-2026-11-28", "stability-ipc2002-6-10-2026-11-28"]
 MODELS = ["full", "iot", "camera"]
+FUZZ = "fuzz-planner-2000-issue42-2026-12-02"
+ORACLE_VAL = "oracle-against-val-300-2026-12-02"
 
 
 def load(path):
@@ -246,7 +250,38 @@ def proof_search_block():
                      "median s"], rows))
 
 
+def differential_block(folder=FUZZ):
+    """The differential tester's run: each class, with the non-trivial
+    tasks, from the report `alplan fuzz planner` printed."""
+    with open(os.path.join(RESULTS, folder, "report.txt")) as f:
+        text = f.read()
+    head = re.search(r"tasks: (\d+) in ([\d.]+) s; (\d+) plans judged", text)
+    classes = re.findall(r"^  (\w+): (\d+) \((\d+) non-trivial\)$", text.split("by planted structure")[0], re.M)
+    undecided = re.search(r"^undecided: (\d+)", text, re.M)
+    non_trivial = re.search(r"^non-trivial: (\d+)", text, re.M)
+    tasks = int(head.group(1))
+    rows = [[name, count, trivial] for name, count, trivial in classes if name != "undecided"]
+    rows.append(["undecided (never agreement)", undecided.group(1), ""])
+    disagreements = re.search(r"^disagreements: (\d+)", text, re.M)
+    rows.append(["**disagreements**", f"**{disagreements.group(1)}**", ""])
+    return (f"{tasks} tasks in {float(head.group(2)):.0f} s, {int(head.group(3)):,} plans judged by the reference "
+            f"semantics; non-trivial {non_trivial.group(1)} ({100 * int(non_trivial.group(1)) / tasks:.1f} %), "
+            f"undecided {undecided.group(1)} ({100 * int(undecided.group(1)) / tasks:.1f} %).\n\n"
+            + table(["class", "tasks", "non-trivial"], rows))
+
+
+def oracle_against_val_block(folder=ORACLE_VAL):
+    """The reference semantics against VAL on the tester's tasks and plans."""
+    counts = load(f"{folder}/counts.json")
+    return table(["plans judged", "agree (valid)", "agree (invalid)", "disagree", "VAL cannot judge",
+                  "oracle cannot judge"],
+                 [[counts["plans"], counts["agree_valid"], counts["agree_invalid"], counts["disagree"],
+                   counts["val_cannot_judge"], counts["oracle_cannot_judge"]]])
+
+
 BLOCKS = {
+    "differential": differential_block,
+    "oracle-against-val": oracle_against_val_block,
     "study-mix": study_mix,
     "study-switch": study_switch,
     "study-wins": study_wins,

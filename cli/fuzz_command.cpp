@@ -32,7 +32,7 @@ void add_fuzz_command(CLI::App& app, int& exit_code) {
       ->check(CLI::PositiveNumber);
   p->add_option("--jobs", options->jobs, "Tasks checked at once (threads); the report is the same for any number")
       ->check(CLI::Range(1, 64));
-  p->add_option("--write-tasks", options->all_dir, "Folder to write every task into, with the class it fell in");
+  p->add_option("--write-tasks", options->all_dir, "Folder to write every task into, with the class it fell in and the planner's and the brute force's plans");
   p->add_flag("!--no-shrink", options->shrink, "Write disagreeing tasks as found, without reducing them");
   p->add_option("--out", options->out_dir, "Folder to write each disagreeing task into (domain, problem, plan)");
   p->callback([options, &exit_code] {

@@ -276,7 +276,9 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
     std::cout << j.dump(2) << "\n";
   } else {
     if (planner_options.search.engine.kind == EngineSpec::Kind::Anytime && result.best()) print_best(result, std::cout);
-    if (result.status != PlannerResult::Status::Solved) std::cout << "; " << result.message << "\n";
+    // A solved task has a message only when how it was solved needs saying
+    // (happenings closer than epsilon).
+    if (result.status != PlannerResult::Status::Solved || !result.message.empty()) std::cout << "; " << result.message << "\n";
     std::cout << "; status: " << status_name(result.status) << "; expanded " << result.statistics.expanded
               << ", evaluated " << result.statistics.evaluated << ", grounding "
               << readable(grounding) << " s, search " << readable(result.times.search)

@@ -169,7 +169,10 @@ void Judge::Run::build_happenings() {
     if (happenings_.empty() || m.time > happenings_.back().time + window) happenings_.push_back({m.time, {}, false});
     happenings_.back().members.push_back(m);
   }
-  for (Happening& h : happenings_) h.after_plan = any_action && h.time > last_action;
+  // With no step, every happening is a timed literal after the plan: the
+  // value is the initial state's, at time 0 (VAL reads an undefined bound
+  // here and measures after the first literal; see the README).
+  for (Happening& h : happenings_) h.after_plan = !any_action || h.time > last_action;
   verdict_.makespan = any_action ? last_action : 0.0;
 }
 
@@ -316,6 +319,7 @@ void Judge::Run::execute() {
   double now = 0.0;
   std::optional<State> frozen;
   double frozen_time = 0.0;
+  if (!happenings_.empty() && happenings_.front().after_plan) frozen = state;
   for (std::size_t i = 0; i < happenings_.size(); ++i) {
     const Happening& h = happenings_[i];
     if (!monitor_.observe(state, now)) return void(fail(Failure::Constraint, monitor_.reason(), now));

@@ -67,6 +67,14 @@ struct ConditionSet {
   // counts every proposition a precondition names, so the planner orders
   // snaps by them too. Sorted; never in `positive` or `negative`.
   std::vector<FactId> mentioned;
+  // Atoms the condition names that are no fact at all (never true, so the
+  // grounding kept no id for them), as ids of GroundTask::ghosts. VAL's
+  // mutex rule counts them too: a start reading (not f), f never true,
+  // clashes with an end deleting f in one happening.
+  std::vector<std::uint32_t> ghost_mentioned;
+  // Numeric variables named where they decide nothing (a precondition
+  // preference a round does not enforce): read, for VAL's mutex rule.
+  std::vector<NumericVarId> mentioned_values;
 
   bool empty() const {
     return positive.empty() && negative.empty() && numeric.empty() && complex.empty() && !never;
@@ -83,11 +91,13 @@ struct ConditionalEffect {
   ConditionSet condition;
   Moment condition_moment = Moment::Start;
   std::vector<FactId> add, del;
+  std::vector<std::uint32_t> ghost_del;  // deletes of atoms that are never facts (GroundTask::ghosts)
   std::vector<NumericAssignment> numeric;
 };
 
 struct HappeningEffects {
   std::vector<FactId> add, del;
+  std::vector<std::uint32_t> ghost_del;  // deletes of atoms that are never facts (GroundTask::ghosts)
   std::vector<NumericAssignment> numeric;
   std::vector<ConditionalEffect> conditional;
 
@@ -172,6 +182,10 @@ struct GroundingTimes {
 struct GroundTask {
   std::shared_ptr<const NormalizedTask> lifted;
   GroundKeyTable facts;    // head: PredicateId
+  // Atoms some action deletes or some condition names that can never be
+  // true (no fact): kept only for the footprints of VAL's mutex rule
+  // (task_index.cpp). Head: PredicateId.
+  GroundKeyTable ghosts;
   GroundKeyTable numeric;  // head: FunctionId
   std::vector<FactId> initial_facts;
   std::vector<double> initial_values;  // per numeric variable; NaN when undefined

@@ -132,6 +132,7 @@ std::shared_ptr<GroundTask> build(std::shared_ptr<const NormalizedTask> lifted, 
   }
   const StaticFacts statics = StaticFacts::of(*lifted);
   Instantiator instantiate(*lifted, statics, task->facts, task->numeric, {true, false});
+  instantiate.set_ghosts(&task->ghosts);
 
   Clock::time_point start = Clock::now();
   instantiate_actions(*lifted, reachable, instantiate, *task, Deadline(options.deadline));

@@ -219,6 +219,7 @@ bool GroundingCache::extend(Reference& reference, const std::vector<GroundKey>& 
     if (lifted.predicates[reachable.atoms.key(a).head].fluent) task->facts.intern(reachable.atoms.key(a));
   }
   Instantiator instantiate(lifted, reference.statics, task->facts, task->numeric, {true, false});
+  instantiate.set_ghosts(&task->ghosts);
   for (std::size_t i = actions_before; i < reachable.actions.size(); ++i) {
     const Instantiation& n = reachable.actions[i];
     if (!lifted.actions[n.schema].unsupported.empty()) continue;

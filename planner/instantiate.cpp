@@ -312,23 +312,28 @@ bool plain_conjunction(const LiftedCondition& c) {
 }  // namespace
 
 void Instantiator::mentioned_facts(const LiftedCondition& c, std::vector<ObjectId>& binding,
-                                   std::vector<FactId>& out) {
+                                   std::vector<FactId>& out, std::vector<std::uint32_t>& ghosts) {
   switch (c.kind) {
     case LK::And:
     case LK::Or:
-      for (const LiftedCondition& child : c.children) mentioned_facts(child, binding, out);
+      for (const LiftedCondition& child : c.children) mentioned_facts(child, binding, out, ghosts);
       return;
     case LK::Forall:
     case LK::Exists:
       for_each_assignment(task_, c.variables, binding, [&] {
-        mentioned_facts(c.children.front(), binding, out);
+        mentioned_facts(c.children.front(), binding, out, ghosts);
         return true;
       });
       return;
     case LK::Atom:
       if (task_.predicates[c.atom.predicate].fluent) {
-        // Unreachable facts are in no effect, so they cannot interfere.
-        if (std::optional<FactId> id = facts_.find(scratch(c.atom.predicate, c.atom.args, binding))) out.push_back(*id);
+        const GroundKey& k = scratch(c.atom.predicate, c.atom.args, binding);
+        if (std::optional<FactId> id = facts_.find(k)) {
+          out.push_back(*id);
+        } else if (ghosts_) {
+          // Never true, but an action may delete it: VAL's mutex rule counts it.
+          ghosts.push_back(ghosts_->intern(k));
+        }
       }
       return;
     default:
@@ -341,12 +346,16 @@ ConditionSet Instantiator::condition(const LiftedCondition& c, std::vector<Objec
 }
 
 void Instantiator::add_mentions(const LiftedCondition& c, std::vector<ObjectId>& binding, ConditionSet& set) {
-  // In a plain conjunction nothing can be simplified away but the action
-  // itself, so only disjunctions and quantifiers need the second walk.
-  if (!options_.simplify_static || set.never || plain_conjunction(c)) return;
+  // A literal simplified away still counts: VAL marks what a condition
+  // names, true or not, so a statically true (not f) read by a start is a
+  // mutex with its zero-duration end deleting f (differential tester).
+  if (!options_.simplify_static || set.never) return;
   std::vector<FactId> named;
-  mentioned_facts(c, binding, named);
+  std::vector<std::uint32_t> ghosts;
+  mentioned_facts(c, binding, named, ghosts);
   sort_unique(named);
+  sort_unique(ghosts);
+  set.ghost_mentioned = std::move(ghosts);
   std::vector<FactId> kept = set.positive;
   kept.insert(kept.end(), set.negative.begin(), set.negative.end());
   sort_unique(kept);
@@ -373,10 +382,12 @@ void Instantiator::primitive(const PrimitiveEffect& e, std::vector<ObjectId>& bi
   std::vector<FactId>* add = &target.add;
   std::vector<FactId>* del = &target.del;
   std::vector<NumericAssignment>* numeric = &target.numeric;
+  std::vector<std::uint32_t>* ghost_del = &target.ghost_del;
   if (!condition.empty()) {
-    target.conditional.push_back({std::move(condition), e.condition_moment, {}, {}, {}});
+    target.conditional.push_back({std::move(condition), e.condition_moment, {}, {}, {}, {}});
     add = &target.conditional.back().add;
     del = &target.conditional.back().del;
+    ghost_del = &target.conditional.back().ghost_del;
     numeric = &target.conditional.back().numeric;
   }
   switch (e.kind) {
@@ -387,7 +398,13 @@ void Instantiator::primitive(const PrimitiveEffect& e, std::vector<ObjectId>& bi
       break;
     }
     case PrimitiveEffect::Kind::Delete:
-      if (std::optional<FactId> id = fact(key(e.atom, binding))) del->push_back(*id);
+      if (std::optional<FactId> id = fact(key(e.atom, binding))) {
+        del->push_back(*id);
+      } else if (ghosts_) {
+        // Deleting what is never true changes nothing, but VAL's mutex rule
+        // still counts the delete (ghost_mentioned says how).
+        ghost_del->push_back(ghosts_->intern(key(e.atom, binding)));
+      }
       break;
     case PrimitiveEffect::Kind::Continuous: break;  // handled above
     case PrimitiveEffect::Kind::Numeric:

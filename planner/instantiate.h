@@ -50,6 +50,9 @@ class Instantiator {
   GroundExpression expression(const LiftedExpression& expression, const std::vector<ObjectId>& binding);
   // The id of a ground atom if it is (or, when interning, becomes) a fact.
   std::optional<FactId> fact(const GroundKey& key);
+  // Where atoms that are no fact but are deleted or named get their ids
+  // (ConditionSet::ghost_mentioned); null: nowhere (they are dropped).
+  void set_ghosts(GroundKeyTable* ghosts) { ghosts_ = ghosts; }
 
  private:
   void effects(const ActionSchema& schema, std::vector<ObjectId>& binding, GroundAction& action);
@@ -62,11 +65,13 @@ class Instantiator {
                            const std::vector<ObjectId>& binding);
   std::string name(const GroundKey& key, bool function) const;
   // Every fluent fact the condition names, quantifiers expanded.
-  void mentioned_facts(const LiftedCondition& condition, std::vector<ObjectId>& binding, std::vector<FactId>& out);
+  void mentioned_facts(const LiftedCondition& condition, std::vector<ObjectId>& binding, std::vector<FactId>& out,
+                       std::vector<std::uint32_t>& ghosts);
   // Fills set.mentioned (ground_task.h) for one of an action's conditions.
   void add_mentions(const LiftedCondition& condition, std::vector<ObjectId>& binding, ConditionSet& set);
 
   const NormalizedTask& task_;
+  GroundKeyTable* ghosts_ = nullptr;
   const StaticFacts& statics_;
   GroundKeyTable& facts_;
   GroundKeyTable& numeric_;

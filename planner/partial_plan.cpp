@@ -30,49 +30,6 @@ bool end_threatens(const GroundAction& ender, const GroundAction& holder) {
   return false;
 }
 
-// Whether an action's start and end interfere when they fall in one
-// happening, as VAL judges two members of a happening (one writes a fact or
-// value the other reads, or they write it in ways that do not commute): a
-// zero-duration action whose snaps interfere has no valid schedule.
-bool start_and_end_interfere(const GroundAction& a) {
-  auto reads = [](const ConditionSet& c, std::vector<FactId>& facts) {
-    facts.insert(facts.end(), c.positive.begin(), c.positive.end());
-    facts.insert(facts.end(), c.negative.begin(), c.negative.end());
-    facts.insert(facts.end(), c.mentioned.begin(), c.mentioned.end());
-  };
-  auto contains = [](const std::vector<FactId>& v, FactId f) { return std::find(v.begin(), v.end(), f) != v.end(); };
-  std::vector<FactId> start_reads, end_reads;
-  reads(a.at_start, start_reads);
-  reads(a.at_end, end_reads);
-  for (const HappeningEffects* e : {&a.start, &a.end}) {
-    if (!e->conditional.empty()) return true;  // judged conservatively
-  }
-  const auto writes_read = [&](const HappeningEffects& e, const std::vector<FactId>& read) {
-    return std::any_of(e.add.begin(), e.add.end(), [&](FactId f) { return contains(read, f); }) ||
-           std::any_of(e.del.begin(), e.del.end(), [&](FactId f) { return contains(read, f); });
-  };
-  if (writes_read(a.start, end_reads) || writes_read(a.end, start_reads)) return true;
-  for (FactId f : a.start.add) {
-    if (contains(a.end.del, f)) return true;
-  }
-  for (FactId f : a.start.del) {
-    if (contains(a.end.add, f)) return true;
-  }
-  // Numeric: any value written by one and touched by the other, unless both
-  // only increase or decrease it (VAL lets additive updates commute).
-  for (const NumericAssignment& w : a.start.numeric) {
-    for (const NumericAssignment& x : a.end.numeric) {
-      const bool additive = [](const NumericAssignment& n) {
-        return n.assign == pddl::AssignOperator::Increase || n.assign == pddl::AssignOperator::Decrease;
-      }(w) && (x.assign == pddl::AssignOperator::Increase || x.assign == pddl::AssignOperator::Decrease);
-      if (w.variable == x.variable && !additive) return true;
-    }
-  }
-  const bool numeric_reads = !a.at_start.numeric.empty() || !a.at_end.numeric.empty();
-  const bool numeric_writes = !a.start.numeric.empty() || !a.end.numeric.empty();
-  return numeric_reads && numeric_writes;  // judged conservatively
-}
-
 }  // namespace
 
 PartialPlan::PartialPlan(const TaskIndex& index, double epsilon, double release,
@@ -121,25 +78,27 @@ std::optional<std::uint32_t> PartialPlan::Ledger::writer(std::uint32_t key) cons
 // comes after the last writer (no gap when both write the key the same one
 // way) and after every reader since (epsilon) and holder since (no gap).
 void PartialPlan::Ledger::add_constraints(const Touch& touch, std::uint32_t node, double epsilon,
-                                          std::vector<TemporalEdge>& edges,
+                                          std::vector<TemporalEdge>& edges, std::vector<TemporalEdge>& loose,
                                           const std::vector<std::uint32_t>& node_of_step) const {
+  auto add = [&](std::uint32_t from, double gap) {
+    edges.push_back({from, node, gap});
+    if (gap == 0.0) loose.push_back({from, node, epsilon});
+  };
   for (std::uint32_t key : touch.reads) {
-    if (const Use* w = last_write(key)) edges.push_back({node_of_step[w->step], node, epsilon});
+    if (const Use* w = last_write(key)) add(node_of_step[w->step], epsilon);
   }
   for (std::uint32_t key : touch.holds) {
-    if (const Use* w = last_write(key)) edges.push_back({node_of_step[w->step], node, 0.0});
+    if (const Use* w = last_write(key)) add(node_of_step[w->step], 0.0);
   }
   for (std::uint32_t key : touch.writes) {
     const Use* w = last_write(key);
     const WriteKind kind = touch.kind_of(key);
     if (w) {
       const bool alike = kind != WriteKind::Other && kind == w->kind;
-      edges.push_back({node_of_step[w->step], node, alike ? 0.0 : epsilon});
+      add(node_of_step[w->step], alike ? 0.0 : epsilon);
     }
     for (const Use& r : reads) {
-      if (r.key == key && (!w || r.step > w->step)) {
-        edges.push_back({node_of_step[r.step], node, r.kind == WriteKind::Add ? 0.0 : epsilon});
-      }
+      if (r.key == key && (!w || r.step > w->step)) add(node_of_step[r.step], r.kind == WriteKind::Add ? 0.0 : epsilon);
     }
   }
 }
@@ -221,14 +180,25 @@ bool PartialPlan::append(const StepRecord& step) {
   } else {
     edges.push_back({0, node, release_});
   }
-  facts_.add_constraints(fact_touch(fp), node, epsilon_, edges, node_of_step_);
-  values_.add_constraints(value_touch(fp), node, epsilon_, edges, node_of_step_);
+  std::vector<TemporalEdge> loose;
+  facts_.add_constraints(fact_touch(fp), node, epsilon_, edges, loose, node_of_step_);
+  values_.add_constraints(value_touch(fp), node, epsilon_, edges, loose, node_of_step_);
   order_before_pending(fp, node, ending, edges);
+  if (step.simultaneous_with != kNoId) {
+    // One happening with that step: the same time, and members VAL would
+    // not call a mutex.
+    const StepRecord& other = steps_[step.simultaneous_with];
+    if (separation(index_->footprint(other.snap), fp).value_or(0.0) > 0.0) return false;
+    const std::uint32_t other_node = node_of_step_[step.simultaneous_with];
+    edges.push_back({other_node, node, 0.0});
+    edges.push_back({node, other_node, 0.0});
+  }
   if (step.snap.kind == SnapKind::End && step.max_duration == 0.0 && step.start_step != kNoId &&
-      !start_and_end_interfere(index_->task().actions[step.snap.index])) {
+      separation(index_->footprint({SnapKind::Start, step.snap.index}), fp).value_or(0.0) == 0.0) {
     // A zero-duration action's start and end form one happening; unless
-    // they interfere (then the separation makes it unschedulable, as VAL
-    // refuses it), nothing separates them.
+    // they interfere as VAL judges two members of a happening (then the
+    // separation makes it unschedulable, as VAL refuses it), nothing
+    // separates them.
     const std::uint32_t start_node = node_of_step_[step.start_step];
     std::erase_if(edges, [&](const TemporalEdge& e) { return e.from == start_node && e.to == node && e.weight > 0.0; });
   }
@@ -248,8 +218,8 @@ bool PartialPlan::append(const StepRecord& step) {
     edges.push_back({node, end, step.min_duration});
     if (step.max_duration < kInfiniteDuration) edges.push_back({end, node, -step.max_duration});
     const Footprint& end_fp = index_->footprint({SnapKind::End, step.snap.index});
-    facts_.add_constraints(fact_touch(end_fp), end, epsilon_, edges, node_of_step_);
-    values_.add_constraints(value_touch(end_fp), end, epsilon_, edges, node_of_step_);
+    facts_.add_constraints(fact_touch(end_fp), end, epsilon_, edges, loose, node_of_step_);
+    values_.add_constraints(value_touch(end_fp), end, epsilon_, edges, loose, node_of_step_);
     // The new start itself precedes the ends of the others it touches.
     // An end that would break a running action's invariant can come only
     // after that action's end (the successor generator refuses it before),
@@ -259,8 +229,14 @@ bool PartialPlan::append(const StepRecord& step) {
     const GroundAction& started = index_->task().actions[step.snap.index];
     for (const PendingEnd& p : pending_) {
       const GroundAction& other = index_->task().actions[p.action];
-      if (end_threatens(other, started)) edges.push_back({end, p.node, 0.0});
-      if (end_threatens(started, other)) edges.push_back({p.node, end, 0.0});
+      if (end_threatens(other, started)) {
+        edges.push_back({end, p.node, 0.0});
+        loose.push_back({end, p.node, epsilon_});
+      }
+      if (end_threatens(started, other)) {
+        edges.push_back({p.node, end, 0.0});
+        loose.push_back({p.node, end, epsilon_});
+      }
     }
   }
   std::vector<NumericVarId> invariant_reads;
@@ -269,7 +245,7 @@ bool PartialPlan::append(const StepRecord& step) {
     const SnapNodes at = snap_nodes(step, node);
     if (step.continuous) invariant_reads = continuous_->invariant_reads(*step.continuous, at);
     if (!invariant_reads.empty()) {
-      values_.add_constraints({invariant_reads, kNoKeys, kNoKeys, kNoKeys, kNoKeys}, node, epsilon_, edges,
+      values_.add_constraints({invariant_reads, kNoKeys, kNoKeys, kNoKeys, kNoKeys}, node, epsilon_, edges, loose,
                               node_of_step_);
       Footprint reads;
       reads.reads_values = invariant_reads;
@@ -290,6 +266,7 @@ bool PartialPlan::append(const StepRecord& step) {
   } else if (!network_.add_nodes(new_nodes, edges)) {
     return false;
   }
+  loose_.insert(loose_.end(), loose.begin(), loose.end());
   values_.record({invariant_reads, kNoKeys, kNoKeys, kNoKeys, kNoKeys}, index);
   facts_.record(fact_touch(fp), index);
   values_.record(value_touch(fp), index);
@@ -389,6 +366,23 @@ std::vector<double> PartialPlan::latest_end_times(const std::vector<RunningActio
     }
   }
   return latest_end;
+}
+
+std::vector<double> PartialPlan::preferred_times() const {
+  std::vector<double> times;
+  if (continuous_ && continuous_->active()) {
+    for (std::uint32_t s = 0; s < steps_.size(); ++s) times.push_back(time_of(s));
+    return times;
+  }
+  // Epsilon on each loose edge in turn, kept where the network stays
+  // consistent: greedy, so the first edges of the plan get it first.
+  SimpleTemporalNetwork preferred = network_;
+  for (const TemporalEdge& e : loose_) {
+    if (preferred.earliest(e.to) >= preferred.earliest(e.from) + e.weight - 1e-12) continue;
+    preferred.add_edges({e});
+  }
+  for (std::uint32_t s = 0; s < steps_.size(); ++s) times.push_back(preferred.earliest(node_of_step_[s]));
+  return times;
 }
 
 double PartialPlan::frontier() const {

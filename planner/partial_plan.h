@@ -42,6 +42,9 @@ struct StepRecord {
   // keeps the record trivially copyable: partial plans copy their steps for
   // every child).
   const ContinuousStep* continuous = nullptr;
+  // A step in the happening of this earlier step (a start whose invariant
+  // it gives): the same time, and not interfering with it (kNoId: free).
+  std::uint32_t simultaneous_with = kNoId;
 };
 
 class PartialPlan {
@@ -64,6 +67,11 @@ class PartialPlan {
   std::size_t size() const { return steps_.size(); }
   const std::vector<StepRecord>& steps() const { return steps_; }
   double time_of(std::uint32_t step) const { return node_time(node_of_step_[step]); }
+  // The times to print: the earliest schedule that keeps epsilon between
+  // snaps that may share a happening wherever the constraints allow (VAL
+  // accepts them together, but a plan that can keep them apart reads as
+  // POPF's and OPTIC's do); with continuous change, time_of's.
+  std::vector<double> preferred_times() const;
   // With continuous change: the conditions every plan from here must meet at
   // its end (the goal's on changing variables); false when they cannot.
   bool require_final(const std::vector<LinearCondition>& conditions);
@@ -156,8 +164,10 @@ class PartialPlan {
     std::vector<Use> reads;
     std::optional<std::uint32_t> writer(std::uint32_t key) const;
     const Use* last_write(std::uint32_t key) const;
+    // Edges of no gap (holders, writers of one kind) also go to `loose`:
+    // the schedule keeps epsilon there where it can (preferred_times).
     void add_constraints(const Touch& touch, std::uint32_t node, double epsilon, std::vector<TemporalEdge>& edges,
-                         const std::vector<std::uint32_t>& node_of_step) const;
+                         std::vector<TemporalEdge>& loose, const std::vector<std::uint32_t>& node_of_step) const;
     void record(const Touch& touch, std::uint32_t step);
   };
   // The least gap between two snaps whose footprints touch a common key,
@@ -188,6 +198,7 @@ class PartialPlan {
   std::vector<std::uint32_t> timed_literal_nodes_;  // few: the timed literals applied so far
   std::vector<PendingEnd> pending_;
   SimpleTemporalNetwork network_;
+  std::vector<TemporalEdge> loose_;  // edges of no gap that could take epsilon
   Ledger facts_, values_;
   std::optional<ContinuousSchedule> continuous_;
   bool replaying_ = false;

@@ -21,10 +21,43 @@ void merge(ConditionSet& into, const ConditionSet& from) {
   into.numeric.insert(into.numeric.end(), from.numeric.begin(), from.numeric.end());
   into.complex.insert(into.complex.end(), from.complex.begin(), from.complex.end());
   into.mentioned.insert(into.mentioned.end(), from.mentioned.begin(), from.mentioned.end());
+  into.mentioned_values.insert(into.mentioned_values.end(), from.mentioned_values.begin(), from.mentioned_values.end());
+  into.ghost_mentioned.insert(into.ghost_mentioned.end(), from.ghost_mentioned.begin(), from.ghost_mentioned.end());
   if (from.never && !into.never) into.never = from.never;
   sort_unique(into.positive);
   sort_unique(into.negative);
   sort_unique(into.mentioned);
+  sort_unique(into.mentioned_values);
+  sort_unique(into.ghost_mentioned);
+}
+
+// What a condition reads, named in `into` without deciding anything there:
+// a preference a round does not enforce still counts in VAL's mutex rule.
+void mention(ConditionSet& into, const ConditionSet& from) {
+  into.mentioned.insert(into.mentioned.end(), from.positive.begin(), from.positive.end());
+  into.mentioned.insert(into.mentioned.end(), from.negative.begin(), from.negative.end());
+  into.mentioned.insert(into.mentioned.end(), from.mentioned.begin(), from.mentioned.end());
+  into.mentioned_values.insert(into.mentioned_values.end(), from.mentioned_values.begin(), from.mentioned_values.end());
+  std::vector<const GroundFormula*> stack;
+  for (const GroundFormula& f : from.complex) stack.push_back(&f);
+  while (!stack.empty()) {
+    const GroundFormula* f = stack.back();
+    stack.pop_back();
+    if (f->kind == GroundFormula::Kind::Literal) into.mentioned.push_back(f->fact);
+    if (f->kind == GroundFormula::Kind::Comparison) {
+      append_variables(f->comparison.left, into.mentioned_values);
+      append_variables(f->comparison.right, into.mentioned_values);
+    }
+    for (const GroundFormula& c : f->children) stack.push_back(&c);
+  }
+  for (const GroundComparison& c : from.numeric) {
+    append_variables(c.left, into.mentioned_values);
+    append_variables(c.right, into.mentioned_values);
+  }
+  into.ghost_mentioned.insert(into.ghost_mentioned.end(), from.ghost_mentioned.begin(), from.ghost_mentioned.end());
+  sort_unique(into.mentioned);
+  sort_unique(into.mentioned_values);
+  sort_unique(into.ghost_mentioned);
 }
 
 // A condition as the disjunction of conditions a witness each can read: a
@@ -280,14 +313,19 @@ class Compiler {
   }
 
   // Enforced precondition preferences join the action's conditions; the
-  // others leave the action (the validator counts them on the plan).
+  // others leave the action (the validator counts them on the plan), what
+  // they read still named for VAL's mutex rule.
   void action_preferences() {
     const bool any = std::any_of(source_.actions.begin(), source_.actions.end(),
                                  [](const GroundAction& a) { return !a.preferences.empty(); });
     if (!any) return;
     for (GroundAction& a : out_->actions.mutate()) {
       for (const GroundPreference& p : a.preferences) {
-        if (!selection_.contains(p.preference)) continue;
+        if (!selection_.contains(p.preference)) {
+          if (!a.durative || p.time == pddl::TimeSpecifier::AtStart) mention(a.at_start, p.condition);
+          if (a.durative && p.time == pddl::TimeSpecifier::AtEnd) mention(a.at_end, p.condition);
+          continue;
+        }
         if (!a.durative || p.time == pddl::TimeSpecifier::AtStart) {
           merge(a.at_start, p.condition);
         } else if (p.time == pddl::TimeSpecifier::AtEnd) {

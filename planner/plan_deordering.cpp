@@ -164,15 +164,17 @@ class Deordering {
 
   // A causal link from `from` to a consumer at step `to`, the fact held
   // until step `until`: steps that undo it stay outside.
-  bool protect(std::uint32_t from, std::uint32_t until, FactId f, bool positive, bool read_at_until) {
+  bool protect(std::uint32_t from, std::uint32_t until, FactId f, bool positive) {
     for (std::uint32_t k = 0; k < n_; ++k) {
       if (k == from || k == until || !undoes(k, f, positive)) continue;
       if (from != kInitial && k < from) {
         edge(k, from, input_.epsilon);
       } else if (k > until) {
-        // After an invariant ends, its fact may go at that very time (VAL
-        // checks an invariant on the open interval); after a condition, not.
-        edge(until, k, read_at_until ? input_.epsilon : 0.0);
+        // VAL would let an invariant's fact go at its action's very end (it
+        // checks invariants on the open interval), but a plan a robot runs
+        // keeps epsilon there, as the search's preferred schedule does;
+        // where that costs a deadline, validation keeps the plan as found.
+        edge(until, k, input_.epsilon);
       } else {
         return false;
       }
@@ -180,35 +182,36 @@ class Deordering {
     return true;
   }
 
-  bool link(std::uint32_t j, FactId f, bool positive, std::uint32_t until, bool read_at_until, double weight) {
+  bool link(std::uint32_t j, FactId f, bool positive, std::uint32_t until) {
     const std::optional<std::uint32_t> a = achiever(j, f, positive);
     if (!a) return false;
-    if (*a != kInitial && *a != j) edge(*a, j, weight);
-    return protect(*a, until, f, positive, read_at_until);
+    if (*a != kInitial && *a != j) edge(*a, j, input_.epsilon);
+    return protect(*a, until, f, positive);
   }
 
   bool link_all() {
     for (std::uint32_t j = 0; j < n_; ++j) {
       const StepFacts& s = steps_[j];
       for (FactId f : s.pre_pos) {
-        if (!link(j, f, true, j, true, input_.epsilon)) return false;
+        if (!link(j, f, true, j)) return false;
       }
       for (FactId f : s.pre_neg) {
-        if (!link(j, f, false, j, true, input_.epsilon)) return false;
+        if (!link(j, f, false, j)) return false;
       }
       if (s.end == kNoId) continue;
-      const StepFacts& end = steps_[s.end];
       // An invariant holds from its start (which may give it itself) to its
-      // end; the start is no precondition of it in VAL's mutex rule.
+      // end; the start is no precondition of it in VAL's mutex rule. Given
+      // by another step, it keeps epsilon after it too (the search gives no
+      // gap only where a window needs it, partial_plan.h).
       for (FactId f : s.inv_pos) {
         if (has(s.add, f)) {
-          if (!protect(j, s.end, f, true, has(end.pre_pos, f))) return false;
-        } else if (!link(j, f, true, s.end, has(end.pre_pos, f), 0.0)) {
+          if (!protect(j, s.end, f, true)) return false;
+        } else if (!link(j, f, true, s.end)) {
           return false;
         }
       }
       for (FactId f : s.inv_neg) {
-        if (!link(j, f, false, s.end, has(end.pre_neg, f), 0.0)) return false;
+        if (!link(j, f, false, s.end)) return false;
       }
     }
     return true;

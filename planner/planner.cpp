@@ -390,13 +390,44 @@ std::optional<PlannerResult> Planner::refused(const TaskIndex& index, const Plan
 // so that the printed times (plan.h) keep the happenings apart.
 double closest_gap(double tolerance) { return tolerance / 10.0 + 1e-7; }
 
+// Whether a timed literal opens a fact for less than `width` before one
+// takes it away (or one takes away an initial fact that soon): a snap that
+// reads it fits there only with gaps under epsilon on both sides.
+bool has_narrow_windows(const GroundTask& task, double width) {
+  std::vector<double> opened(task.facts.size(), -1.0);
+  for (FactId f : task.initial_facts) opened[f] = 0.0;
+  for (const GroundTimedLiteral& til : task.timed_literals) {  // in order of time
+    if (til.positive) {
+      if (opened[til.fact] < 0.0) opened[til.fact] = til.time;
+    } else {
+      if (opened[til.fact] >= 0.0 && til.time - opened[til.fact] < width) return true;
+      opened[til.fact] = -1.0;
+    }
+  }
+  return false;
+}
+
 PlannerResult Planner::search_from(const PlanningStart& start, const std::function<void(const FoundPlan&)>& on_plan) {
   const Clock::time_point began = Clock::now();
+  const bool fallback = options_.close_gap_fallback && options_.epsilon > closest_gap(options_.tolerance);
+  // Windows too narrow for epsilon gaps: the search at epsilon may never
+  // end (its space need not be finite), so it gets a third of the time and
+  // the closer search the rest.
+  const bool narrow = fallback && std::isfinite(options_.time_limit) &&
+                      has_narrow_windows(*task_, 3.0 * options_.epsilon);
   bool by_search = false;
-  PlannerResult result = search_once(start, on_plan, by_search);
+  PlannerResult result;
+  if (narrow) {
+    PlannerOptions first = options_;
+    first.time_limit = options_.time_limit / 3.0;
+    result = Planner(task_, first, workspace_).search_once(start, on_plan, by_search);
+  } else {
+    result = search_once(start, on_plan, by_search);
+  }
   const bool retry = (result.status == PlannerResult::Status::Unsolvable && by_search) ||
-                     result.status == PlannerResult::Status::Exhausted;
-  if (!retry || !options_.close_gap_fallback || options_.epsilon <= closest_gap(options_.tolerance)) return result;
+                     result.status == PlannerResult::Status::Exhausted ||
+                     (narrow && result.status == PlannerResult::Status::LimitReached);
+  if (!retry || !fallback) return result;
   return search_closer(start, on_plan, std::move(result), since(began));
 }
 

@@ -17,6 +17,11 @@ using Conjunctions = std::vector<std::vector<LiftedAtom>>;
 // variables (each of its type), the head instantiation is reachable.
 struct Rule {
   bool axiom = false;
+  // A durative action's start alone: reachable on its at-start condition
+  // (and static invariant), it gives only its at-start adds. The action
+  // itself needs its invariant's atoms reachable too, which starts in the
+  // same happening may give (two actions can hold up each other's).
+  bool start_only = false;
   std::uint32_t owner = 0;          // schema or derived-rule index
   std::uint32_t parameters = 0;     // slots [0, parameters) form the head
   std::vector<TypeId> slot_types;   // kNoId for slots the rule does not use
@@ -86,30 +91,29 @@ class RelaxedDnf {
   std::vector<TypeId>& slot_types_;
 };
 
-// A durative action's relaxed precondition: its at-start condition and the
-// static atoms of its over-all condition. A fluent invariant is not needed
-// before the start: another action starting in the same happening may give
-// it (VAL checks invariants after the start's happening), so two actions can
-// hold up each other's invariants, and requiring them here once grounded
-// both away and called a solvable task unsolvable. A static atom holds at
-// the start if and only if it holds at all, and it binds the parameters only
-// the invariant mentions (a link between two places), so it stays.
+// What a durative action's start needs (at_start_only) or the whole action
+// (its at-start condition and every positive atom of its invariant): the
+// invariant need not hold before the start, since another start in the same
+// happening may give it (VAL checks it after that happening), but it must
+// be reachable at all for the action to be of use, and requiring it keeps
+// actions whose invariant can never hold out of the grounding.
 LiftedCondition relaxed_precondition(const NormalizedTask& task, const ActionSchema& schema,
-                                     const ReachabilityOptions& options) {
+                                     const ReachabilityOptions& options, bool at_start_only) {
   if (!schema.durative || !options.require_over_all) return schema.at_start;
   LiftedCondition both;
   both.kind = LK::And;
   both.children.push_back(schema.at_start);
-  auto is_static = [&](const LiftedCondition& c) {
+  auto keep = [&](const LiftedCondition& c) {
+    if (!at_start_only) return true;
     return c.kind == LK::Atom && c.positive && !task.predicates[c.atom.predicate].fluent &&
            !task.predicates[c.atom.predicate].derived;
   };
   const LiftedCondition& invariant = schema.over_all;
   if (invariant.kind == LK::And) {
     for (const LiftedCondition& c : invariant.children) {
-      if (is_static(c)) both.children.push_back(c);
+      if (keep(c)) both.children.push_back(c);
     }
-  } else if (is_static(invariant)) {
+  } else if (keep(invariant)) {
     both.children.push_back(invariant);
   }
   return both;
@@ -117,22 +121,28 @@ LiftedCondition relaxed_precondition(const NormalizedTask& task, const ActionSch
 
 std::vector<Rule> make_rules(const NormalizedTask& task, const ReachabilityOptions& options) {
   std::vector<Rule> rules;
-  auto add = [&](bool axiom, std::uint32_t owner, const std::vector<Parameter>& parameters, std::uint32_t slots,
-                 const LiftedCondition& condition) {
+  auto add = [&](bool axiom, bool start_only, std::uint32_t owner, const std::vector<Parameter>& parameters,
+                 std::uint32_t slots, const LiftedCondition& condition) {
     std::vector<TypeId> slot_types(std::max<std::size_t>(slots, parameters.size()), kNoId);
     for (std::size_t i = 0; i < parameters.size(); ++i) slot_types[i] = parameters[i].type;
     RelaxedDnf dnf(options.max_disjuncts, slot_types);
     for (std::vector<LiftedAtom>& body : dnf.of(condition)) {
-      rules.push_back({axiom, owner, static_cast<std::uint32_t>(parameters.size()), slot_types, std::move(body)});
+      rules.push_back({axiom, start_only, owner, static_cast<std::uint32_t>(parameters.size()), slot_types, std::move(body)});
     }
   };
   for (std::uint32_t a = 0; a < task.actions.size(); ++a) {
     const ActionSchema& s = task.actions[a];
-    add(false, a, s.parameters, s.variable_slots, relaxed_precondition(task, s, options));
+    add(false, false, a, s.parameters, s.variable_slots, relaxed_precondition(task, s, options, false));
+    const bool starts_give = std::any_of(s.effects.begin(), s.effects.end(), [](const PrimitiveEffect& e) {
+      return e.kind == PrimitiveEffect::Kind::Add && e.moment == Moment::Start;
+    });
+    if (s.durative && options.require_over_all && starts_give) {
+      add(false, true, a, s.parameters, s.variable_slots, relaxed_precondition(task, s, options, true));
+    }
   }
   for (std::uint32_t r = 0; r < task.derived_rules.size(); ++r) {
     const DerivedRule& d = task.derived_rules[r];
-    add(true, r, d.parameters, d.variable_slots, d.body);
+    add(true, false, r, d.parameters, d.variable_slots, d.body);
   }
   return rules;
 }
@@ -303,13 +313,19 @@ class Fixpoint {
       reach({d.head, std::move(args)});
       return;
     }
-    if (!seen_actions_.insert({rule.owner, args}).second) return;
-    result_.actions.push_back({rule.owner, args});
+    if (rule.start_only) {
+      if (!seen_starts_.insert({rule.owner, args}).second) return;
+    } else {
+      if (!seen_actions_.insert({rule.owner, args}).second) return;
+      result_.actions.push_back({rule.owner, args});
+    }
     const ActionSchema& schema = task_.actions[rule.owner];
     std::vector<ObjectId> full(std::max<std::size_t>(schema.variable_slots, args.size()), kNoId);
     std::copy(args.begin(), args.end(), full.begin());
     for (const PrimitiveEffect& e : schema.effects) {
-      if (e.kind == PrimitiveEffect::Kind::Add) add_effect(e, full, 0);
+      if (e.kind != PrimitiveEffect::Kind::Add) continue;
+      if (rule.start_only && e.moment != Moment::Start) continue;
+      add_effect(e, full, 0);
     }
   }
 
@@ -333,7 +349,7 @@ class Fixpoint {
   std::vector<std::vector<std::uint32_t>> tuples_;  // per predicate: atom ids
   std::vector<std::vector<Watch>> watchers_;
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> index_;
-  std::unordered_set<GroundKey, GroundKeyHash> seen_actions_, seen_axioms_;
+  std::unordered_set<GroundKey, GroundKeyHash> seen_actions_, seen_axioms_, seen_starts_;
   std::deque<std::uint32_t> queue_;
   ReachableSet result_;
   Deadline deadline_;

@@ -20,10 +20,12 @@
 namespace alplan {
 
 struct ReachabilityOptions {
-  // The planner requires the at-start atoms of a durative action and the
-  // static atoms of its over-all condition (a fluent invariant may come from
-  // another action starting in the same happening). The validator, which
-  // must follow any plan it is given, requires only at-start atoms.
+  // The planner requires the at-start atoms of a durative action and those
+  // of its over-all condition, the latter reachable with the help of starts
+  // (a start is reachable on its at-start atoms and gives its at-start adds:
+  // an invariant may come from another start in the same happening). The
+  // validator, which must follow any plan it is given, requires only
+  // at-start atoms.
   bool require_over_all = true;
   // Disjunctive preconditions whose DNF would exceed this many disjuncts are
   // relaxed to true instead of split.

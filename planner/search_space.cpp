@@ -26,7 +26,7 @@ bool SearchSpace::timed_literals_remain(const SearchState& state) const {
 
 SearchSpace::SearchSpace(const TaskIndex& index, const SearchStart& start, double epsilon, SearchSpaceOptions options)
     : index_(index),
-      successors_(index, options.self_overlap),
+      successors_(index, options.self_overlap, options.simultaneous_invariants),
       epsilon_(epsilon),
       release_(start.release),
       options_(options),
@@ -220,9 +220,14 @@ std::optional<Solution> SearchSpace::goal_reached(NodeId id, const PartialPlan& 
     }
   }
   Solution solution;
+  solution.search_makespan = n.makespan;
+  solution.final_state = state;
   solution.steps = complete.steps();
-  for (std::uint32_t s = 0; s < complete.size(); ++s) solution.times.push_back(complete.time_of(s));
-  solution.makespan = complete.makespan();
+  solution.times = complete.preferred_times();
+  solution.makespan = 0.0;
+  for (std::uint32_t s = 0; s < complete.size(); ++s) {
+    if (solution.steps[s].snap.kind != SnapKind::TimedLiteral) solution.makespan = std::max(solution.makespan, solution.times[s]);
+  }
   return solution;
 }
 

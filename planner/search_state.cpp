@@ -23,7 +23,7 @@ bool SearchState::is_running(ActionId action) const {
 }
 
 std::size_t SearchState::hash() const {
-  std::uint64_t h = 0x9E3779B97F4A7C15ull ^ next_til_;
+  std::uint64_t h = 0x9E3779B97F4A7C15ull ^ next_til_ ^ (std::uint64_t{pending_} << 32);
   auto mix = [&](std::uint64_t x) {
     h ^= x + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
   };
@@ -37,7 +37,10 @@ std::size_t SearchState::hash() const {
 }
 
 bool SearchState::same_as(const SearchState& other) const {
-  if (next_til_ != other.next_til_ || bits_ != other.bits_ || running_.size() != other.running_.size()) return false;
+  if (next_til_ != other.next_til_ || pending_ != other.pending_ || bits_ != other.bits_ ||
+      running_.size() != other.running_.size()) {
+    return false;
+  }
   for (std::size_t i = 0; i < running_.size(); ++i) {
     const RunningAction& a = running_[i];
     const RunningAction& b = other.running_[i];

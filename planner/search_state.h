@@ -52,6 +52,14 @@ class SearchState {
   std::uint32_t next_timed_literal() const { return next_til_; }
   void set_next_timed_literal(std::uint32_t next) { next_til_ = next; }
 
+  // A running action just started whose over-all condition does not hold
+  // yet: starts and instantaneous actions in its own happening may still
+  // give it (VAL checks an invariant after its start's happening), and
+  // until one does, nothing else happens (successor_generator.h). kNoId:
+  // none.
+  ActionId pending() const { return pending_; }
+  void set_pending(ActionId action) { pending_ = action; }
+
   std::size_t hash() const;
   bool same_as(const SearchState& other) const;
 
@@ -62,6 +70,7 @@ class SearchState {
   // at once) in the order they started.
   std::vector<RunningAction> running_;
   std::uint32_t next_til_ = 0;
+  ActionId pending_ = kNoId;
 };
 
 struct SearchStateHash {

@@ -4,20 +4,10 @@
 #include <cmath>
 
 #include "planner/evaluation.h"
+#include "planner/happening_effects.h"
 
 namespace alplan {
 namespace {
-
-double updated(double current, pddl::AssignOperator op, double value) {
-  switch (op) {
-    case pddl::AssignOperator::Assign: return value;
-    case pddl::AssignOperator::Increase: return current + value;
-    case pddl::AssignOperator::Decrease: return current - value;
-    case pddl::AssignOperator::ScaleUp: return current * value;
-    case pddl::AssignOperator::ScaleDown: return current / value;
-  }
-  return value;
-}
 
 bool additive(pddl::AssignOperator op) {
   return op == pddl::AssignOperator::Increase || op == pddl::AssignOperator::Decrease;
@@ -102,9 +92,8 @@ bool SuccessorGenerator::apply_effects(const HappeningEffects& effects, const Se
       for (FactId f : *list) after.set_fact(f, true);
     }
     for (const auto& [a, v] : updates) {
-      const double current = after.value(a->variable);
-      // Increasing an undefined value is as VAL does: from 0.
-      after.set_value(a->variable, updated(std::isnan(current) ? 0.0 : current, a->assign, v));
+      // The executor's operator semantics (an undefined value counts as 0).
+      after.set_value(a->variable, updated_value(after.value(a->variable), a->assign, v));
     }
   } catch (const EvaluationError&) {
     return false;
@@ -124,13 +113,18 @@ bool SuccessorGenerator::condition_holds(const ConditionSet& c, const SearchStat
   }
 }
 
-SuccessorGenerator::SuccessorGenerator(const TaskIndex& index, bool self_overlap)
-    : index_(index), self_overlap_(self_overlap), continuous_(index.continuous().get()) {
+SuccessorGenerator::SuccessorGenerator(const TaskIndex& index, bool self_overlap, bool pending_invariants)
+    : index_(index), self_overlap_(self_overlap), pending_invariants_(pending_invariants),
+      continuous_(index.continuous().get()) {
   const auto& actions = index.task().actions;
   constant_start_window_.reserve(actions.size());
   for (const GroundAction& a : actions) constant_start_window_.push_back(constant_duration_window(a, Moment::Start));
   for (const GroundConstraint& g : index.task().pddl3.constraints) {
     if (g.op == ModalOperator::Always && !g.preference && !g.requirement.empty()) always_.push_back(&g.requirement);
+  }
+  givers_at_start_.assign(index.task().facts.size(), {});
+  for (ActionId a = 0; a < actions.size(); ++a) {
+    for (FactId f : actions[a].start.add) givers_at_start_[f].push_back(a);
   }
 }
 
@@ -143,16 +137,54 @@ bool SuccessorGenerator::attach_continuous(const GroundAction& action, const Sea
   return true;
 }
 
-bool SuccessorGenerator::invariants_hold(const SearchState& state) const {
+bool SuccessorGenerator::invariants_hold(const SearchState& state, ActionId except) const {
   for (const RunningAction& r : state.running()) {
     // A zero-duration action's invariant spans an empty interval: VAL never
     // checks it, and nothing running alongside can break it.
-    if (r.max_duration == 0.0) continue;
+    if (r.max_duration == 0.0 || r.action == except) continue;
     if (!condition_holds(index_.task().actions[r.action].over_all, state, r.min_duration)) return false;
   }
   for (const ConditionSet* always : always_) {
     if (!condition_holds(*always, state, std::nan(""))) return false;
   }
+  return true;
+}
+
+bool SuccessorGenerator::settle_invariants(const SearchState& before, ActionId started, Successor& s) const {
+  const ActionId pending = before.pending();
+  if (pending != kNoId) {
+    // In the pending start's happening: every other invariant must hold.
+    for (const RunningAction& r : before.running()) {
+      if (r.action == pending && r.start_step != kStepNotYetKnown) s.step.simultaneous_with = r.start_step;
+    }
+    if (!invariants_hold(s.state, pending)) return false;
+    const GroundAction& waiting = index_.task().actions[pending];
+    if (condition_holds(waiting.over_all, s.state, std::nan(""))) s.state.set_pending(kNoId);
+    return true;
+  }
+  if (invariants_hold(s.state)) return true;
+  if (!pending_invariants_ || started == kNoId || continuous_ || !invariants_hold(s.state, started)) return false;
+  // Only the new start's invariant fails: pending, if each false fact has
+  // a start (or instantaneous action) that can join the happening to give
+  // it. Members of one happening do not interfere, so such a giver's
+  // condition holds in the state before the happening, which this checks.
+  const GroundAction& action = index_.task().actions[started];
+  bool supportable = false;
+  const std::vector<FactId>& deleted = action.start.del;
+  for (FactId f : action.over_all.positive) {
+    if (s.state.fact(f)) continue;
+    // Its own start deletes it: another member adding it is a mutex.
+    if (std::find(deleted.begin(), deleted.end(), f) != deleted.end()) return false;
+    const std::vector<ActionId>& givers = givers_at_start_[f];
+    if (std::none_of(givers.begin(), givers.end(), [&](ActionId g) {
+          return g != started && condition_holds(index_.task().actions[g].at_start, before, std::nan(""));
+        })) {
+      return false;
+    }
+    supportable = true;
+  }
+  if (!supportable) return false;
+  s.state.set_pending(started);
   return true;
 }
 
@@ -198,7 +230,7 @@ void SuccessorGenerator::add_action(const SearchState& state, ActionId id, std::
     if (!condition_holds(action.at_start, state, std::nan(""))) return;
     Successor s{{{SnapKind::Instant, id}}, state};
     if (!attach_continuous(action, state, std::nan(""), s.step)) return;
-    if (apply_effects(action.start, state, std::nan(""), s.state) && invariants_hold(s.state)) {
+    if (apply_effects(action.start, state, std::nan(""), s.state) && settle_invariants(state, kNoId, s)) {
       out.push_back(std::move(s));
     }
     return;
@@ -222,17 +254,21 @@ void SuccessorGenerator::add_action(const SearchState& state, ActionId id, std::
     if (!condition_holds(action.at_start, state, duration)) continue;
     if (!attach_continuous(action, state, duration, s.step)) continue;
     if (!apply_effects(action.start, state, duration, s.state)) continue;
-    // The new action's invariant must hold right after its start, and so
-    // must everyone else's.
+    // The new action's invariant must hold right after its start (or come
+    // from a start in its happening: settle_invariants), and so must
+    // everyone else's.
     s.state.start({id, kStepNotYetKnown, min, max});
-    if (!invariants_hold(s.state)) continue;
+    if (!settle_invariants(state, max > 0.0 ? id : kNoId, s)) continue;
     out.push_back(std::move(s));
   }
 }
 
 void SuccessorGenerator::generate(const SearchState& state, std::vector<Successor>& out) const {
-  for (std::size_t r = 0; r < state.running().size(); ++r) add_end(state, r, out);
-  add_timed_literal(state, out);
+  // A pending invariant: only starts and instantaneous actions, in its happening.
+  if (state.pending() == kNoId) {
+    for (std::size_t r = 0; r < state.running().size(); ++r) add_end(state, r, out);
+    add_timed_literal(state, out);
+  }
   const std::vector<std::uint64_t>& bits = state.bits();
   for (std::size_t word = 0; word < bits.size(); ++word) {
     for (std::uint64_t w = bits[word]; w != 0; w &= w - 1) {

@@ -11,7 +11,11 @@
 //   VAL allows, which a search that must not miss a plan needs (a counter
 //   raised by two overlapping runs of one action). Actions with continuous
 //   effects never overlap themselves (their schedule tracks one run each);
-// - no state breaks a hard PDDL 3 `always` constraint.
+// - no state breaks a hard PDDL 3 `always` constraint;
+// - with `pending_invariants` (a search that must not miss a plan), a start
+//   whose invariant fails may wait for a start or instantaneous action of
+//   its own happening to give it, as VAL checks invariants after the
+//   happening; by default, as POPF, it must hold right after the start.
 // Conditions are evaluated exactly (no slack), so plans hold under VAL's
 // slightly more lenient comparisons too.
 #pragma once
@@ -40,7 +44,7 @@ struct DurationWindow {
 
 class SuccessorGenerator {
  public:
-  explicit SuccessorGenerator(const TaskIndex& index, bool self_overlap = false);
+  explicit SuccessorGenerator(const TaskIndex& index, bool self_overlap = false, bool pending_invariants = false);
 
   // Every applicable snap: ends of running actions first, then the next
   // timed literal, then starts and instantaneous actions.
@@ -52,9 +56,21 @@ class SuccessorGenerator {
   // Whether every running action's over-all condition holds, and every
   // hard PDDL 3 `always` constraint (pddl3_compilation.h): a state that
   // breaks one is in no valid plan, as VAL observes each happening's state.
-  bool invariants_hold(const SearchState& state) const;
+  bool invariants_hold(const SearchState& state) const { return invariants_hold(state, kNoId); }
+
+  // A start whose invariant fails may still be applied when another start
+  // or instantaneous action can give it in the same happening: the state is
+  // then `pending` (search_state.h), and its successors are only such
+  // snaps, each at the pending start's time, until the invariant holds.
+  // Two actions holding up each other's invariants start together so.
 
  private:
+  bool invariants_hold(const SearchState& state, ActionId except) const;
+  // Whether the state after a new snap may stand: every invariant holds (the
+  // pending one, if any, may still fail; then it stays pending), or only the
+  // new start's fails and a start could give it. Sets the pending action
+  // and the step's happening.
+  bool settle_invariants(const SearchState& before, ActionId started, Successor& s) const;
   void add_end(const SearchState& state, std::size_t running_index, std::vector<Successor>& out) const;
   void add_timed_literal(const SearchState& state, std::vector<Successor>& out) const;
   void add_action(const SearchState& state, ActionId action, std::vector<Successor>& out) const;
@@ -70,6 +86,7 @@ class SuccessorGenerator {
 
   const TaskIndex& index_;
   bool self_overlap_;
+  bool pending_invariants_;  // starts may wait for their happening to give their invariant
   const ContinuousModel* continuous_;  // null without continuous change
   // Per action, its start's duration window when it is the same in every
   // state (constant_duration_window), read instead of evaluated.
@@ -78,6 +95,8 @@ class SuccessorGenerator {
   // did not reduce to true (storage's compatible pairs, for one), checked in
   // every state made.
   std::vector<const ConditionSet*> always_;
+  // By fact: the starts and instantaneous actions that add it unconditionally.
+  std::vector<std::vector<ActionId>> givers_at_start_;
   // The continuous parts of the steps generated so far, which the steps
   // point to. Only grows, and only with continuous change; generating is
   // otherwise free of side effects.

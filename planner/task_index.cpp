@@ -26,6 +26,7 @@ void condition_reads(const ConditionSet& c, Footprint& fp) {
   fp.reads.insert(fp.reads.end(), c.positive.begin(), c.positive.end());
   fp.reads.insert(fp.reads.end(), c.negative.begin(), c.negative.end());
   fp.reads.insert(fp.reads.end(), c.mentioned.begin(), c.mentioned.end());
+  fp.reads_values.insert(fp.reads_values.end(), c.mentioned_values.begin(), c.mentioned_values.end());
   for (const GroundComparison& cmp : c.numeric) {
     append_variables(cmp.left, fp.reads_values);
     append_variables(cmp.right, fp.reads_values);
@@ -78,6 +79,30 @@ void effect_footprint(const HappeningEffects& e, Footprint& fp) {
   drop(fp.dels, adds);
   drop(fp.dels, conditional_writes);
   drop(fp.additive_values, other_values);
+}
+
+template <typename T>
+void unique(std::vector<T>& v);
+void finish(Footprint& fp);
+
+// Atoms that are never facts but that a snap's condition names or its
+// effects delete (GroundTask::ghosts), under keys after the facts': VAL's
+// mutex rule counts them, so they order snaps like facts do.
+void add_ghosts(const GroundTask& t, const ConditionSet& condition, const HappeningEffects& effects, Footprint& fp) {
+  const std::uint32_t base = t.facts.size();
+  auto reads = [&](const ConditionSet& c) {
+    for (std::uint32_t g : c.ghost_mentioned) fp.reads.push_back(base + g);
+  };
+  reads(condition);
+  for (std::uint32_t g : effects.ghost_del) {
+    fp.writes.push_back(base + g);
+    fp.dels.push_back(base + g);
+  }
+  for (const ConditionalEffect& c : effects.conditional) {
+    reads(c.condition);
+    for (std::uint32_t g : c.ghost_del) fp.writes.push_back(base + g);
+  }
+  finish(fp);
 }
 
 template <typename T>
@@ -246,6 +271,11 @@ std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const Gr
       condition_reads(action.at_end, x.end[a]);
       over_all(action.over_all, x.end[a]);
       effect_footprint(action.end, x.end[a]);
+      // Preferences are soft, but VAL's mutex rule counts what they read.
+      for (const GroundPreference& p : action.preferences) {
+        if (p.time == pddl::TimeSpecifier::AtStart) condition_reads(p.condition, x.start[a]);
+        if (p.time == pddl::TimeSpecifier::AtEnd) condition_reads(p.condition, x.end[a]);
+      }
       // A continuous effect changes its variable from the start to the end:
       // both snaps write it, so readers and writers are ordered around them.
       for (const ContinuousEffect& c : action.continuous) {
@@ -268,6 +298,7 @@ std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const Gr
     } else {
       condition_reads(action.at_start, x.instant[a]);
       effect_footprint(action.start, x.instant[a]);
+      for (const GroundPreference& p : action.preferences) condition_reads(p.condition, x.instant[a]);
       finish(x.instant[a]);
     }
     // Index under the least-loaded positive precondition, to spread the lists.
@@ -295,6 +326,17 @@ std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const Gr
   if (const AlwaysReads always(t); !always.empty()) {
     for (std::vector<Footprint>* list : {&x.instant, &x.start, &x.end}) {
       for (Footprint& fp : *list) always.expand(fp);
+    }
+  }
+  if (t.ghosts.size() > 0) {
+    for (ActionId a = 0; a < t.actions.size(); ++a) {
+      const GroundAction& action = t.actions[a];
+      if (action.durative) {
+        add_ghosts(t, action.at_start, action.start, x.start[a]);
+        add_ghosts(t, action.at_end, action.end, x.end[a]);
+      } else {
+        add_ghosts(t, action.at_start, action.start, x.instant[a]);
+      }
     }
   }
   return tables;

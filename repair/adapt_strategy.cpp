@@ -109,7 +109,7 @@ class AdaptStrategy : public RepairStrategy {
                    " remaining steps are kept" + (costs_added ? " (changes counted on a total-cost the task lacked)" : "") +
                    "; " + describe_remedy(*result.plan, request.now);
     } else {
-      result.how = "the planner found no plan from the observed state: " + planned.message;
+      result.how = no_plan_reason(planned.status, planned.message);
     }
     if (!cost) {
       // Without action costs there is nothing to penalise change with: say

@@ -132,6 +132,19 @@ std::shared_ptr<const GroundTask> without_schemas(std::shared_ptr<const GroundTa
   return view;
 }
 
+std::string no_plan_reason(PlannerResult::Status status, const std::string& message) {
+  static const std::string kPrefix = "no plan exists: ";
+  if (status == PlannerResult::Status::Unsolvable) {
+    const std::string proof = message.rfind(kPrefix, 0) == 0 ? message.substr(kPrefix.size()) : message;
+    return "no plan reaches the goal from the observed state with the objects known now (proved for that task: " +
+           proof + "); something perception has not seen yet may still change it";
+  }
+  if (status == PlannerResult::Status::LimitReached || status == PlannerResult::Status::Exhausted) {
+    return "the planner found no plan from the observed state (not a proof: " + message + ")";
+  }
+  return "the planner found no plan from the observed state: " + message;
+}
+
 PlanningOutcome plan_in_process(const pddl::Domain& domain, const pddl::Problem& problem, double now,
                                 const PlannerOptions& options, GroundingCache* cache,
                                 const std::set<std::string>& excluded, const std::vector<WorldState>* history) {

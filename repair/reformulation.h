@@ -49,6 +49,12 @@ struct PlanningOutcome {
 std::shared_ptr<const GroundTask> ground_problem(const pddl::Domain& domain, const pddl::Problem& problem,
                                                  GroundingCache* cache, bool* reused = nullptr);
 
+// Why a repair found no plan, saying what was proved and of what: a proof
+// holds for the task as the monitor believes it now (the objects it knows,
+// the state it observed), never for the world, where perception may yet see
+// something new; a search stopped short proves nothing.
+std::string no_plan_reason(PlannerResult::Status status, const std::string& message);
+
 // Grounds the problem (through `cache` when given) and plans from `now`
 // with the in-process planner, without the actions of `excluded` schemas.
 // `history`: the states believed before `now`, for the problem's PDDL 3

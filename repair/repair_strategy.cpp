@@ -129,7 +129,7 @@ RepairResult replan_from(const RepairRequest& request, const pddl::Domain& domai
   result.reused_grounding = outcome.reused_grounding;
   result.repaired = outcome.plan.has_value();
   result.plan = std::move(outcome.plan);
-  if (!result.repaired) result.how = "the planner found no plan from the observed state: " + outcome.message;
+  if (!result.repaired) result.how = no_plan_reason(outcome.status, outcome.message);
   // The problem to carry on with keeps the base's initial state: the world,
   // not the problem, says what holds from now on.
   result.problem.init = problem.init;

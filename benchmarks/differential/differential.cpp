@@ -82,6 +82,7 @@ TaskOutcome check_task(const std::string& domain, const std::string& problem, co
   }
   d.planner_status = planner.status;
   d.message = planner.message;
+  outcome.planner_plan = planner.plan;
   if (planner.status == "internal_error" || planner.status == "unsupported") return disagree(outcome, d, planner.status);
   if (planner.status == "solved") {
     // The planner's plan as it printed it, judged exactly: the planner
@@ -114,6 +115,7 @@ TaskOutcome check_task(const std::string& domain, const std::string& problem, co
     return disagree(outcome, d, "unjudged_task");
   }
   const bool grounded_away = planner.message.find("the goal can never hold") != std::string::npos;
+  if (brute.plan) outcome.witness = plan_text(*brute.plan);
   if (brute.plan) {
     outcome.non_trivial = !solved_in_one_step(task, options, outcome.judgements);
     if (planner.status == "solved") {
@@ -168,6 +170,8 @@ void record(const DifferentialOptions& options, Checked& c, DifferentialReport& 
     std::ofstream(folder / "domain.pddl") << c.task.domain;
     std::ofstream(folder / "problem.pddl") << c.task.problem;
     std::ofstream(folder / "class.txt") << outcome.cls << (outcome.non_trivial ? " non-trivial" : "") << "\n";
+    if (!outcome.planner_plan.empty()) std::ofstream(folder / "planner.plan") << outcome.planner_plan;
+    if (!outcome.witness.empty()) std::ofstream(folder / "witness.plan") << outcome.witness;
   }
   ClassCounts& counts = report.by_class[outcome.cls];
   ++counts.tasks;

@@ -90,6 +90,7 @@ struct TaskOutcome {
   std::string cls;
   bool non_trivial = false;
   std::uint64_t judgements = 0;
+  std::string planner_plan, witness;  // the planner's plan, the brute force's (when there is one)
   std::optional<Disagreement> disagreement;
 };
 TaskOutcome check_task(const std::string& domain, const std::string& problem, const DifferentialOptions& options);

@@ -348,18 +348,20 @@ void Generator::simultaneous_change() {
   feature("simultaneous_change");
 }
 
+// A conditional effect, its condition read when it takes effect: written
+// (when (at end c) (at end e)) in durative actions, the form VAL reads (it
+// refuses (at end (when c e)) with a constant in c). (when (at start c)
+// (at end e)) is PDDL 2.1 too, but the planner refuses it (exit 2), so it
+// is not drawn: a test of what it plans.
 void Generator::conditional_effect() {
   ActionModel& a = draw_.pick(m_.actions);
   const std::string c = literal_for(a), e = fact_for(a);
   conditional_ = true;
   if (!a.durative) {
     a.effects.push_back("(when " + c + " " + e + ")");
-  } else if (draw_.chance(50)) {
-    a.effects.push_back("(at end (when " + c + " " + e + "))");
   } else {
-    // (when (at start c) (at end e)) is PDDL 2.1 too, but the planner
-    // refuses it (exit 2), so it is not drawn: a test of what it plans.
-    a.effects.push_back("(at start (when " + c + " " + e + "))");
+    const std::string when = draw_.chance(50) ? "at end" : "at start";
+    a.effects.push_back("(when (" + when + " " + c + ") (" + when + " " + e + "))");
   }
   feature("conditional_effect");
 }

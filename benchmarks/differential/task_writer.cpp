@@ -6,9 +6,9 @@
 namespace alplan::differential {
 namespace {
 
+// Always (and ...): VAL's parser refuses a lone numeric effect.
 std::string conjunction(const std::vector<std::string>& parts) {
   if (parts.empty()) return "(and)";
-  if (parts.size() == 1) return parts.front();
   std::string s = "(and";
   for (const std::string& p : parts) s += " " + p;
   return s + ")";

@@ -154,20 +154,25 @@ TEST_CASE("timed literals at one time deleting one fact are one happening, addin
 TEST_CASE("an exhausted search that is no proof says why") {
   // Only the shortest and longest durations of an action whose effect reads
   // ?duration are tried: the complete search cannot prove anything here.
+  // `a` runs once (used), so x is 1 or 3 in every plan the planner tries;
+  // `a` [2] then `b` is a plan the validator accepts (checked below).
   const std::string domain = R"(
-(define (domain dur) (:requirements :strips :durative-actions :numeric-fluents :duration-inequalities)
-  (:predicates (done)) (:functions (x))
+(define (domain dur)
+  (:requirements :strips :durative-actions :numeric-fluents :duration-inequalities :negative-preconditions)
+  (:predicates (done) (used)) (:functions (x))
   (:durative-action a :parameters () :duration (and (>= ?duration 1) (<= ?duration 3))
-    :effect (at end (increase (x) ?duration)))
+    :condition (at start (not (used))) :effect (and (at start (used)) (at end (increase (x) ?duration))))
   (:durative-action b :parameters () :duration (= ?duration 1)
     :condition (at start (= (x) 2)) :effect (at end (done)))))";
   const std::string problem = "(define (problem d) (:domain dur) (:init (= (x) 0)) (:goal (done)))";
   const PlannerResult result = plan_text(domain, problem);
   INFO(result.message);
-  // a [2] then b is a plan; the planner tries 1 and 3 only, and must not
-  // call the task unsolvable.
-  CHECK(result.status != PlannerResult::Status::Unsolvable);
-  if (result.status == PlannerResult::Status::Exhausted) CHECK(result.message.find("?duration") != std::string::npos);
+  REQUIRE(result.status == PlannerResult::Status::Exhausted);
+  CHECK(result.message.find("this is not a proof") != std::string::npos);
+  CHECK(result.message.find("?duration") != std::string::npos);
+  const test::LoadedTask loaded = test::load_task_text(domain, problem);
+  PlanValidator validator(loaded.normalized, {0.001, false, 0.0});
+  CHECK(validator.validate(read_plan("0.000: (a) [2.000]\n2.001: (b) [1.000]\n", "plan").plan).valid);
 }
 
 TEST_CASE("a task without deadlines whose search space is finite is proven unsolvable") {

@@ -100,6 +100,24 @@ TEST_CASE("patch swaps the failed glass for the recognised mug without searching
   CHECK(run.report.goal_reached);
 }
 
+TEST_CASE("a repair deferred at 125.006 says what was proved: no plan with the objects known then, not none at all") {
+  const ScenarioRun run = run_paper_scenario(scenario(1), options());
+  REQUIRE(run.report.repairs.size() == 2);
+  const repair::RepairRecord& early = run.report.repairs[0];
+  CHECK(early.failure.time == Approx(125.006));
+  CHECK(early.deferred);
+  const std::string& how = early.explanation.how;
+  INFO(how);
+  // The proof is about the task as believed at 125.006 (the mug is not seen
+  // until 140.008, when the same goal is reached with it).
+  CHECK(how.find("no plan exists") == std::string::npos);
+  CHECK(how.find("with the objects known now (proved for that task: the goal is unreachable even in the relaxation") !=
+        std::string::npos);
+  CHECK(how.find("(soothed senior1)") != std::string::npos);
+  CHECK(run.report.repairs[1].repaired);
+  CHECK(run.report.goal_reached);
+}
+
 TEST_CASE("suggest has nothing to offer a terrified senior and says so") {
   const ScenarioRun run = run_paper_scenario(scenario(1), options("suggest"));
   CHECK_FALSE(run.report.goal_reached);

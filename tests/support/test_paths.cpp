@@ -34,4 +34,19 @@ std::vector<std::string> files_below(const std::string& root, const std::string&
   return files;
 }
 
+std::map<std::string, IndexedDomain> benchmark_index() {
+  std::ifstream in(benchmarks_dir() + "/INDEX.csv");
+  std::map<std::string, IndexedDomain> index;
+  std::string line;
+  std::getline(in, line);  // year,domain,n_domain_files,n_problems,...
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::istringstream fields(line);
+    for (std::string cell; cells.size() < 4 && std::getline(fields, cell, ',');) cells.push_back(cell);
+    if (cells.size() < 4) continue;
+    index[cells[0] + "/" + cells[1]] = {std::stoi(cells[2]), std::stoi(cells[3])};
+  }
+  return index;
+}
+
 }  // namespace alplan::test
