@@ -6,26 +6,6 @@
 namespace alplan {
 namespace {
 
-void formula_reads(const GroundFormula& f, std::vector<FactId>& facts, std::vector<NumericVarId>& variables) {
-  if (f.kind == GroundFormula::Kind::Literal) facts.push_back(f.fact);
-  if (f.kind == GroundFormula::Kind::Comparison) {
-    append_variables(f.comparison.left, variables);
-    append_variables(f.comparison.right, variables);
-  }
-  for (const GroundFormula& c : f.children) formula_reads(c, facts, variables);
-}
-
-void body_reads(const ConditionSet& c, std::vector<FactId>& facts, std::vector<NumericVarId>& variables) {
-  facts.insert(facts.end(), c.positive.begin(), c.positive.end());
-  facts.insert(facts.end(), c.negative.begin(), c.negative.end());
-  facts.insert(facts.end(), c.mentioned.begin(), c.mentioned.end());
-  for (const GroundComparison& cmp : c.numeric) {
-    append_variables(cmp.left, variables);
-    append_variables(cmp.right, variables);
-  }
-  for (const GroundFormula& f : c.complex) formula_reads(f, facts, variables);
-}
-
 void expression_functions(const LiftedExpression& e, std::set<FunctionId>& functions) {
   if (e.kind == LiftedExpression::Kind::Function) functions.insert(e.term.function);
   for (const LiftedExpression& o : e.operands) expression_functions(o, functions);
@@ -99,7 +79,7 @@ const DerivedSupport::Support& DerivedSupport::of(FactId derived) {
     if (rules == by_head_.end()) continue;
     for (std::uint32_t x : rules->second) {
       std::vector<FactId> reads;
-      body_reads(task_.axioms[x].body, reads, variables);
+      append_reads(task_.axioms[x].body, reads, variables);
       for (FactId f : reads) {
         if (!by_head_.count(f)) {
           basic.insert(f);

@@ -28,6 +28,31 @@ void append_variables(const GroundExpression& e, std::vector<NumericVarId>& out)
   for (const GroundExpression& o : e.operands) append_variables(o, out);
 }
 
+namespace {
+
+void append_formula_reads(const GroundFormula& f, std::vector<FactId>& facts, std::vector<NumericVarId>& variables) {
+  if (f.kind == GroundFormula::Kind::Literal) facts.push_back(f.fact);
+  if (f.kind == GroundFormula::Kind::Comparison) {
+    append_variables(f.comparison.left, variables);
+    append_variables(f.comparison.right, variables);
+  }
+  for (const GroundFormula& c : f.children) append_formula_reads(c, facts, variables);
+}
+
+}  // namespace
+
+void append_reads(const ConditionSet& c, std::vector<FactId>& facts, std::vector<NumericVarId>& variables) {
+  facts.insert(facts.end(), c.positive.begin(), c.positive.end());
+  facts.insert(facts.end(), c.negative.begin(), c.negative.end());
+  facts.insert(facts.end(), c.mentioned.begin(), c.mentioned.end());
+  variables.insert(variables.end(), c.mentioned_values.begin(), c.mentioned_values.end());
+  for (const GroundComparison& cmp : c.numeric) {
+    append_variables(cmp.left, variables);
+    append_variables(cmp.right, variables);
+  }
+  for (const GroundFormula& f : c.complex) append_formula_reads(f, facts, variables);
+}
+
 bool GroundTask::is_derived(FactId fact) const { return lifted->predicates[facts.key(fact).head].derived; }
 
 }  // namespace alplan

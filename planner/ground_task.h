@@ -81,6 +81,11 @@ struct ConditionSet {
   }
 };
 
+// Appends every fact and numeric variable a condition names, decided or
+// only mentioned (literals, comparisons, complex formulas; repeats kept):
+// what VAL's mutex rule counts as read. Ghost atoms are not included.
+void append_reads(const ConditionSet& c, std::vector<FactId>& facts, std::vector<NumericVarId>& variables);
+
 struct NumericAssignment {
   NumericVarId variable = kNoId;
   pddl::AssignOperator assign = pddl::AssignOperator::Assign;

@@ -294,22 +294,6 @@ ConditionSet flatten(GroundFormula f) {
   return set;
 }
 
-namespace {
-
-bool plain_conjunction(const LiftedCondition& c) {
-  switch (c.kind) {
-    case LK::And:
-      return std::all_of(c.children.begin(), c.children.end(), plain_conjunction);
-    case LK::Or:
-    case LK::Forall:
-    case LK::Exists:
-      return false;
-    default:
-      return true;
-  }
-}
-
-}  // namespace
 
 void Instantiator::mentioned_facts(const LiftedCondition& c, std::vector<ObjectId>& binding,
                                    std::vector<FactId>& out, std::vector<std::uint32_t>& ghosts) {

@@ -34,26 +34,7 @@ void merge(ConditionSet& into, const ConditionSet& from) {
 // What a condition reads, named in `into` without deciding anything there:
 // a preference a round does not enforce still counts in VAL's mutex rule.
 void mention(ConditionSet& into, const ConditionSet& from) {
-  into.mentioned.insert(into.mentioned.end(), from.positive.begin(), from.positive.end());
-  into.mentioned.insert(into.mentioned.end(), from.negative.begin(), from.negative.end());
-  into.mentioned.insert(into.mentioned.end(), from.mentioned.begin(), from.mentioned.end());
-  into.mentioned_values.insert(into.mentioned_values.end(), from.mentioned_values.begin(), from.mentioned_values.end());
-  std::vector<const GroundFormula*> stack;
-  for (const GroundFormula& f : from.complex) stack.push_back(&f);
-  while (!stack.empty()) {
-    const GroundFormula* f = stack.back();
-    stack.pop_back();
-    if (f->kind == GroundFormula::Kind::Literal) into.mentioned.push_back(f->fact);
-    if (f->kind == GroundFormula::Kind::Comparison) {
-      append_variables(f->comparison.left, into.mentioned_values);
-      append_variables(f->comparison.right, into.mentioned_values);
-    }
-    for (const GroundFormula& c : f->children) stack.push_back(&c);
-  }
-  for (const GroundComparison& c : from.numeric) {
-    append_variables(c.left, into.mentioned_values);
-    append_variables(c.right, into.mentioned_values);
-  }
+  append_reads(from, into.mentioned, into.mentioned_values);
   into.ghost_mentioned.insert(into.ghost_mentioned.end(), from.ghost_mentioned.begin(), from.ghost_mentioned.end());
   sort_unique(into.mentioned);
   sort_unique(into.mentioned_values);

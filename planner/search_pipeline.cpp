@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include "planner/address_space.h"
 #include "planner/evaluation.h"
@@ -170,6 +171,18 @@ PhaseOutcome run_phase(const Phase& phase, const PipelineContext& context, const
   return outcome;
 }
 
+// The task's metric in a state at a makespan; nothing where it reads an
+// undefined value (such a node is never pruned, such a plan bounds nothing).
+std::optional<double> metric_at(const GroundTask& task, const SearchState& state, double total_time) {
+  EvaluationContext at;
+  at.total_time = total_time;
+  try {
+    return evaluate(task.metric->expression, state, at);
+  } catch (const EvaluationError&) {
+    return std::nullopt;
+  }
+}
+
 // A node that cannot beat the best plan so far: by steps without a metric,
 // else by the metric at the node with the relaxed makespan for total-time.
 NodeBound bound_by(const PipelineContext& context, const double& best_value) {
@@ -177,13 +190,8 @@ NodeBound bound_by(const PipelineContext& context, const double& best_value) {
   if (task.metric && !context.metric) return {};  // a metric that can fall: no bound
   return [&task, &best_value](const SearchNode& node) {
     if (!task.metric) return static_cast<double>(node.depth) >= best_value;
-    EvaluationContext at;
-    at.total_time = std::max(node.makespan, node.makespan_bound);
-    try {
-      return evaluate(task.metric->expression, node.state, at) >= best_value - 1e-9;
-    } catch (const EvaluationError&) {
-      return false;
-    }
+    const std::optional<double> value = metric_at(task, node.state, std::max(node.makespan, node.makespan_bound));
+    return value && *value >= best_value - 1e-9;
   };
 }
 
@@ -194,13 +202,7 @@ NodeBound bound_by(const PipelineContext& context, const double& best_value) {
 double search_value(const PipelineContext& context, const Solution& solution) {
   const GroundTask& task = context.index.task();
   if (!task.metric || !context.metric) return std::numeric_limits<double>::infinity();
-  EvaluationContext at;
-  at.total_time = solution.search_makespan;
-  try {
-    return evaluate(task.metric->expression, solution.final_state, at);
-  } catch (const EvaluationError&) {
-    return std::numeric_limits<double>::infinity();
-  }
+  return metric_at(task, solution.final_state, solution.search_makespan).value_or(std::numeric_limits<double>::infinity());
 }
 
 // Whether the root is a dead end under the sound relaxation, and why.

@@ -13,34 +13,10 @@ bool mentions_duration(const GroundExpression& e) {
   return std::any_of(e.operands.begin(), e.operands.end(), mentions_duration);
 }
 
-void formula_reads(const GroundFormula& f, Footprint& fp) {
-  if (f.kind == GroundFormula::Kind::Literal) fp.reads.push_back(f.fact);
-  if (f.kind == GroundFormula::Kind::Comparison) {
-    append_variables(f.comparison.left, fp.reads_values);
-    append_variables(f.comparison.right, fp.reads_values);
-  }
-  for (const GroundFormula& c : f.children) formula_reads(c, fp);
-}
-
-void condition_reads(const ConditionSet& c, Footprint& fp) {
-  fp.reads.insert(fp.reads.end(), c.positive.begin(), c.positive.end());
-  fp.reads.insert(fp.reads.end(), c.negative.begin(), c.negative.end());
-  fp.reads.insert(fp.reads.end(), c.mentioned.begin(), c.mentioned.end());
-  fp.reads_values.insert(fp.reads_values.end(), c.mentioned_values.begin(), c.mentioned_values.end());
-  for (const GroundComparison& cmp : c.numeric) {
-    append_variables(cmp.left, fp.reads_values);
-    append_variables(cmp.right, fp.reads_values);
-  }
-  for (const GroundFormula& f : c.complex) formula_reads(f, fp);
-}
+void condition_reads(const ConditionSet& c, Footprint& fp) { append_reads(c, fp.reads, fp.reads_values); }
 
 // An over-all condition: held, not read (snap_action.h).
-void condition_holds(const ConditionSet& c, Footprint& fp) {
-  Footprint held;
-  condition_reads(c, held);
-  fp.holds.insert(fp.holds.end(), held.reads.begin(), held.reads.end());
-  fp.holds_values.insert(fp.holds_values.end(), held.reads_values.begin(), held.reads_values.end());
-}
+void condition_holds(const ConditionSet& c, Footprint& fp) { append_reads(c, fp.holds, fp.holds_values); }
 
 bool additive(pddl::AssignOperator op) {
   return op == pddl::AssignOperator::Increase || op == pddl::AssignOperator::Decrease;
