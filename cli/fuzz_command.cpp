@@ -17,8 +17,13 @@ void add_fuzz_command(CLI::App& app, int& exit_code) {
       "planner",
       "Random small temporal tasks: the planner against a brute-force search judged by the reference semantics "
       "(oracle/), which shares no code with the planner; exit 0 with no disagreement, 1 with one");
-  p->add_option("--tasks", options->tasks, "How many tasks (task k is generated from seed + k)");
-  p->add_option("--seed", options->seed, "The first task's seed");
+  p->add_option("--tasks", options->tasks, "How many tasks (default 100)");
+  p->add_option("--seed", options->seed,
+                "The run's seed (default 1): task k is generated from seed * 2^32 + k, so runs with different "
+                "seeds check disjoint tasks");
+  p->add_option_function<std::uint64_t>(
+      "--task-seed", [options](const std::uint64_t& seed) { options->task_seed = seed; },
+      "Check only the task generated from this seed (the number a disagreement prints)");
   p->add_option("--seconds", options->seconds, "Stop after this many seconds even if tasks remain")
       ->check(CLI::PositiveNumber);
   p->add_option("--time-limit", options->planner_time_limit, "The planner's seconds per task")

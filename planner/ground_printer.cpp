@@ -99,7 +99,7 @@ std::string write_effects(const GroundTask& task, const HappeningEffects& e) {
   for (FactId f : e.del) append(parts, literal(task, f, false)), ++n;
   for (const NumericAssignment& a : e.numeric) append(parts, assignment(task, a)), ++n;
   for (const ConditionalEffect& c : e.conditional) {
-    HappeningEffects inner{c.add, c.del, c.ghost_del, c.numeric, {}};
+    HappeningEffects inner{c.add, c.del, c.ghost_del, c.numeric, {}, {}};
     append(parts, "(when " + write_condition(task, c.condition) + " " + write_effects(task, inner) + ")");
     ++n;
   }

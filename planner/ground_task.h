@@ -105,6 +105,10 @@ struct HappeningEffects {
   std::vector<std::uint32_t> ghost_del;  // deletes of atoms that are never facts (GroundTask::ghosts)
   std::vector<NumericAssignment> numeric;
   std::vector<ConditionalEffect> conditional;
+  // Facts the unconditional effects add more than once (`add` holds each
+  // once): VAL's mutex rule refuses a second add of a fact the action reads
+  // when its happening has other members (happening_executor.cpp).
+  std::vector<FactId> added_twice;
 
   bool empty() const { return add.empty() && del.empty() && numeric.empty() && conditional.empty(); }
 };

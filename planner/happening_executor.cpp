@@ -259,8 +259,14 @@ HappeningExecutor::Footprint HappeningExecutor::footprint(const Event& e) const 
   for (const GroundDurationConstraint& d : action.duration) collect_variables(d.value, f.reads_values);
   const HappeningEffects& effects = e.point == Point::End ? action.end : action.start;
   const EvaluationContext context = context_of(e);
+  std::set<FactId> changed;  // by this event so far, in VAL's order
+  f.added_again.insert(effects.added_twice.begin(), effects.added_twice.end());
   auto add_effects = [&](const std::vector<FactId>& adds, const std::vector<FactId>& dels,
                          const std::vector<NumericAssignment>& numeric) {
+    for (FactId p : adds) {
+      if (!changed.insert(p).second) f.added_again.insert(p);
+    }
+    changed.insert(dels.begin(), dels.end());
     f.adds.insert(adds.begin(), adds.end());
     f.dels.insert(dels.begin(), dels.end());
     for (const NumericAssignment& a : numeric) {
@@ -286,6 +292,14 @@ std::optional<Violation> HappeningExecutor::check_mutex(const std::vector<Event>
   };
   for (std::size_t a = 0; a < events.size(); ++a) {
     const Footprint& fa = prints[a];
+    // VAL marks what an action reads only when its happening has other
+    // members; a second add of such a fact by the same action then finds
+    // it owned as added-and-read and is a mutex (Ownership::ownsForAdd).
+    for (FactId p : fa.added_again) {
+      if (events.size() > 1 && fa.reads.count(p)) {
+        return clash(a, a, "adds " + task_.fact_name(p) + " twice while it reads it, with other members in its happening");
+      }
+    }
     for (std::size_t i = 0; i < fa.writes.size(); ++i) {
       for (std::size_t j = i + 1; j < fa.writes.size(); ++j) {
         if (fa.writes[i].first == fa.writes[j].first && !(additive(fa.writes[i].second) && additive(fa.writes[j].second))) {

@@ -78,6 +78,10 @@ class HappeningExecutor {
   // What one event reads and writes, for the mutex check.
   struct Footprint {
     std::set<FactId> reads, adds, dels;
+    // Facts added after an earlier add or delete of them by the same event,
+    // in the order VAL processes effects (adds, deletes, then each
+    // conditional effect that fires).
+    std::set<FactId> added_again;
     std::set<NumericVarId> reads_values;
     std::vector<std::pair<NumericVarId, pddl::AssignOperator>> writes;
   };

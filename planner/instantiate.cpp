@@ -400,6 +400,11 @@ void Instantiator::primitive(const PrimitiveEffect& e, std::vector<ObjectId>& bi
 void Instantiator::effects(const ActionSchema& schema, std::vector<ObjectId>& binding, GroundAction& action) {
   for (const PrimitiveEffect& e : schema.effects) primitive(e, binding, 0, action);
   for (HappeningEffects* h : {&action.start, &action.end}) {
+    std::sort(h->add.begin(), h->add.end());
+    for (std::size_t i = 1; i < h->add.size(); ++i) {
+      if (h->add[i] == h->add[i - 1] && (h->added_twice.empty() || h->added_twice.back() != h->add[i]))
+        h->added_twice.push_back(h->add[i]);
+    }
     sort_unique(h->add);
     sort_unique(h->del);
   }

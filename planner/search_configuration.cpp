@@ -203,6 +203,15 @@ EngineSpec leaf_of(const Call& c, EngineSpec::Kind kind) {
       continue;
     }
     if (budget_option(e, a)) continue;
+    if (a.key == "share" && kind != EngineSpec::Kind::Ehc) {
+      e.share = number(a, 0);
+      if (e.share <= 0 || e.share > 1) fail_at(a.at, "share is a share of the portfolio's expansions, in (0, 1]");
+      continue;
+    }
+    if (a.key == "share_after" && kind != EngineSpec::Kind::Ehc) {
+      e.share_after = static_cast<std::uint64_t>(number(a, 0));
+      continue;
+    }
     const bool greedy = kind == EngineSpec::Kind::Gbfs, weighted = kind == EngineSpec::Kind::Wastar;
     if (a.key == "goal_orders" && kind != EngineSpec::Kind::Wastar) {
       e.goal_orders = boolean(a);
@@ -375,6 +384,8 @@ std::string engine_text(const EngineSpec& e) {
       if (e.deferred) option("deferred=true");
       if (!e.preferred) option("preferred=false");
       if (e.goal_orders) option("goal_orders=true");
+      if (e.share < 1.0) option("share=" + format_number(e.share));
+      if (e.share_after) option("share_after=" + std::to_string(e.share_after));
       budget();
       const char* name = e.kind == K::Ehc ? "ehc" : e.kind == K::Gbfs ? "gbfs" : "wastar";
       const std::string leaf = std::string(name) + "(" + heuristic_text(e.heuristic) + options + ")";
@@ -432,12 +443,23 @@ std::string default_expression(const DefaultSearchKnobs& k) {
   }
   if (k.fallback_deferred) fallback += ", gbfs(" + h + (k.type_exploration ? ", queue=typed" : "") + ", deferred=true)";
   fallback += ", wastar(" + h + ", w=" + format_number(k.weight) + deferred + ")";
+  // The complete search takes its turn beside the others instead of after
+  // them: the incomplete searches (no action overlapping itself, states
+  // compared without their schedules) may never exhaust a space that holds
+  // no plan for them, and a complete search waiting behind them never ran
+  // on tasks it solves in milliseconds (three overlapping runs of one
+  // action, differential tester). Its exhaustion ends the portfolio.
+  // Equal turns for its first expansions (what small tasks need), then a
+  // small share: its expansions cost several of the others' (exact
+  // duplicates, dead ends confirmed by the sound relaxation), and at an
+  // equal turn it halved the speed of storage's searches.
+  fallback += ", complete(wastar(" + h + ", w=" + format_number(k.weight) + deferred + ", share=" +
+              format_number(k.complete_share) + ", share_after=" + std::to_string(k.complete_share_after) + "))";
   std::string ehc = "ehc(" + h + ", expansions=" + std::to_string(k.ehc_expansions);
   if (k.ehc_time_share < 1.0) ehc += ", time_share=" + format_number(k.ehc_time_share);
   if (k.goal_orders) ehc += ", goal_orders=true";
   ehc += ")";
-  return "then(" + ehc + ", portfolio(" + fallback + "), complete(wastar(" + h + ", w=" + format_number(k.weight) +
-         deferred + ")))";
+  return "then(" + ehc + ", portfolio(" + fallback + "))";
 }
 
 bool proves_cost_optimal(const EngineSpec& e) {

@@ -73,6 +73,12 @@ struct EngineSpec {
   double weight = 3.0;       // wastar
   bool metric_order = false; // wastar, anytime: order by the metric, not steps
   bool complete = false;     // gbfs, wastar: miss no plan
+  // A portfolio member's turns (gbfs, wastar): after its first
+  // `share_after` expansions it takes its turn only while its expansions are
+  // under `share` times the portfolio's (1: an equal turn always). Counted
+  // in expansions, so the same on every machine.
+  double share = 1.0;
+  std::uint64_t share_after = 0;
   // portfolio: turns by evaluations (the engine that has evaluated least
   // goes next) instead of one expansion each.
   bool share_evaluations = false;
@@ -113,6 +119,8 @@ struct DefaultSearchKnobs {
   int novelty_width = 2;
   bool goal_orders = true;
   double weight = 3.0;
+  double complete_share = 0.02;              // the complete member's share of the portfolio's expansions
+  std::uint64_t complete_share_after = 1000;  // after its first expansions at an equal turn
   bool deferred = false;  // every greedy and weighted A* search evaluates when it expands
   HeuristicSpec heuristic;
 };

@@ -93,14 +93,32 @@ std::unique_ptr<SearchEngine> make_engine(const EngineSpec& spec, SearchSpace& s
   return make_best_first_search(space, heuristic, options);
 }
 
+// Whether member e may take its turn now (EngineSpec::share): within its
+// share of the expansions, or always where no member with an equal turn is
+// still searching (else a portfolio of shared members would stall).
+bool may_take_turn(const Phase& phase, const std::vector<std::unique_ptr<SearchEngine>>& engines, std::size_t e,
+                   const std::vector<bool>& exhausted) {
+  const EngineSpec& spec = phase.engines[e];
+  if (spec.share >= 1.0) return true;
+  const std::uint64_t own = engines[e]->statistics().expanded;
+  if (own < spec.share_after) return true;
+  bool equal_member_left = false;
+  std::uint64_t all = 0;
+  for (std::size_t k = 0; k < engines.size(); ++k) {
+    all += engines[k]->statistics().expanded;
+    equal_member_left = equal_member_left || (!exhausted[k] && phase.engines[k].share >= 1.0);
+  }
+  return !equal_member_left || static_cast<double>(own) < spec.share * static_cast<double>(all);
+}
+
 // The engine that has evaluated the fewest states so far (the first of
 // equals): evaluations are most of an engine's time and, unlike seconds,
 // the same on every machine, so sharing them keeps runs reproducible.
-std::size_t least_evaluated(const std::vector<std::unique_ptr<SearchEngine>>& engines,
+std::size_t least_evaluated(const Phase& phase, const std::vector<std::unique_ptr<SearchEngine>>& engines,
                             const std::vector<bool>& exhausted) {
   std::size_t best = engines.size();
   for (std::size_t e = 0; e < engines.size(); ++e) {
-    if (exhausted[e]) continue;
+    if (exhausted[e] || !may_take_turn(phase, engines, e, exhausted)) continue;
     if (best == engines.size() || engines[e]->statistics().evaluated < engines[best]->statistics().evaluated) best = e;
   }
   return best == engines.size() ? 0 : best;
@@ -150,8 +168,8 @@ PhaseOutcome run_phase(const Phase& phase, const PipelineContext& context, const
         break;
       }
     }
-    const std::size_t e = phase.share_evaluations ? least_evaluated(engines, exhausted) : steps % engines.size();
-    if (exhausted[e]) continue;
+    const std::size_t e = phase.share_evaluations ? least_evaluated(phase, engines, exhausted) : steps % engines.size();
+    if (exhausted[e] || !may_take_turn(phase, engines, e, exhausted)) continue;
     const SearchStatus status = engines[e]->step();
     if (status == SearchStatus::Solved) {
       outcome.status = SearchStatus::Solved;
@@ -162,6 +180,9 @@ PhaseOutcome run_phase(const Phase& phase, const PipelineContext& context, const
     if (status == SearchStatus::Exhausted) {
       exhausted[e] = true;
       --left;
+      // A complete member that exhausts its space has searched every plan:
+      // what the incomplete members still hold cannot add one.
+      if (phase.engines[e].complete) left = 0;
     }
   }
   if (left == 0) outcome.status = SearchStatus::Exhausted;
@@ -218,6 +239,61 @@ std::string root_proof(const PipelineContext& context) {
   return proof;
 }
 
+// Whether the action's duration is bound above zero by a constant
+// (`= c`, `>= c` or `> c` with c > 0, or `> 0`).
+bool surely_positive_duration(const GroundAction& a) {
+  using C = pddl::Comparison;
+  return std::any_of(a.duration.begin(), a.duration.end(), [](const GroundDurationConstraint& d) {
+    if (d.value.kind != GroundExpression::Kind::Constant) return false;
+    if (d.comparison == C::Greater) return d.value.value >= 0.0;
+    return (d.comparison == C::Equal || d.comparison == C::GreaterEqual) && d.value.value > 0.0;
+  });
+}
+
+bool writes_any(const HappeningEffects& e, const std::vector<FactId>& facts, const std::vector<NumericVarId>& vars) {
+  auto in = [](const auto& keys, auto key) { return std::find(keys.begin(), keys.end(), key) != keys.end(); };
+  auto writes_fact = [&](FactId f) { return in(e.add, f) || in(e.del, f); };
+  auto writes_var = [&](NumericVarId v) {
+    return std::any_of(e.numeric.begin(), e.numeric.end(), [&](const NumericAssignment& n) { return n.variable == v; });
+  };
+  for (const ConditionalEffect& c : e.conditional) {
+    for (FactId f : facts) {
+      if (in(c.add, f) || in(c.del, f)) return true;
+    }
+    for (NumericVarId v : vars) {
+      if (std::any_of(c.numeric.begin(), c.numeric.end(), [&](const NumericAssignment& n) { return n.variable == v; }))
+        return true;
+    }
+  }
+  return std::any_of(facts.begin(), facts.end(), writes_fact) || std::any_of(vars.begin(), vars.end(), writes_var);
+}
+
+// A conditional effect's condition read by one snap of an action that may
+// last 0 and written by the other. Such a start and end form one happening,
+// where VAL counts the condition as read only when it holds in the state
+// before the happening (Action::handleEffects); the search keeps them
+// apart by a static footprint that always counts it, so it can lose the
+// plans where the condition is false (differential tester, task
+// 4294967313) and its exhaustion proves nothing.
+std::string zero_duration_conditional_limit(const GroundTask& task) {
+  for (const GroundAction& a : task.actions) {
+    if (!a.durative || surely_positive_duration(a)) continue;
+    for (const auto& [reader, writer] : {std::pair{&a.start, &a.end}, std::pair{&a.end, &a.start}}) {
+      for (const ConditionalEffect& c : reader->conditional) {
+        std::vector<FactId> facts;
+        std::vector<NumericVarId> vars;
+        append_reads(c.condition, facts, vars);
+        if (writes_any(*writer, facts, vars)) {
+          return "the start and end of " + task.action_name(a) +
+                 " may share a happening (its duration may be 0), where a conditional effect's condition counts as "
+                 "read only when it holds; the search always counts it";
+        }
+      }
+    }
+  }
+  return "";
+}
+
 }  // namespace
 
 std::string proof_limits(const TaskIndex& index) {
@@ -229,6 +305,7 @@ std::string proof_limits(const TaskIndex& index) {
   for (const GroundAction& a : task.actions) {
     if (!a.continuous.empty()) return "with continuous change a state holds the values of one schedule among many";
   }
+  if (std::string limit = zero_duration_conditional_limit(task); !limit.empty()) return limit;
   for (ActionId a = 0; a < task.actions.size(); ++a) {
     if (task.actions[a].durative && index.duration_dependent(a)) {
       return "only the shortest and longest durations of " + task.action_name(task.actions[a]) +

@@ -188,6 +188,8 @@ void record(const DifferentialOptions& options, Checked& c, DifferentialReport& 
 
 }  // namespace
 
+std::uint64_t task_seed(std::uint64_t run_seed, std::uint64_t k) { return (run_seed << 32) + k; }
+
 DifferentialReport run_differential(const DifferentialOptions& options, std::ostream& progress) {
   DifferentialReport report;
   report.bound = describe_bound(options.brute_force);
@@ -200,10 +202,10 @@ DifferentialReport run_differential(const DifferentialOptions& options, std::ost
   auto work = [&] {
     while (true) {
       const std::uint64_t k = next++;
-      if (k >= options.tasks) return;
+      if (k >= (options.task_seed ? 1 : options.tasks)) return;
       if (std::chrono::duration<double>(Clock::now() - began).count() > options.seconds) return;
       Checked c;
-      const std::uint64_t seed = options.seed + k;
+      const std::uint64_t seed = options.task_seed ? *options.task_seed : task_seed(options.seed, k);
       c.task = generate_task(seed, options.generator);
       c.outcome = check_task(c.task.domain, c.task.problem, options);
       if (c.outcome.disagreement) {

@@ -25,13 +25,18 @@
 // A task is non-trivial when it is solvable only with two steps or more
 // (no plan of one step exists), or unsolvable for a reason other than
 // grounding.
-// Task k of a run is generate_task(seed + k): `--tasks 1 --seed S+k` replays it.
+// Task k of a run with seed s is generate_task(task_seed(s, k)), with
+// task_seed(s, k) = s * 2^32 + k: runs with different seeds (below 2^32) draw
+// disjoint tasks, so seeds 1, 2 and 3 are three samples, not one sample
+// shifted by a task. A disagreement names its task seed;
+// `alplan fuzz planner --task-seed N` replays that one task.
 #pragma once
 
 #include <cstdint>
 #include <iosfwd>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,6 +48,9 @@ namespace alplan::differential {
 struct DifferentialOptions {
   std::uint64_t tasks = 100;
   std::uint64_t seed = 1;
+  // When set, the run is this one task (generate_task(*task_seed)) and
+  // `tasks` and `seed` are not used.
+  std::optional<std::uint64_t> task_seed;
   // Stops after this many seconds even if tasks remain (CI's minute).
   double seconds = std::numeric_limits<double>::infinity();
   // Per task, for the planner: generous against the tasks' size (no more
@@ -57,8 +65,11 @@ struct DifferentialOptions {
   int jobs = 1;         // tasks checked at once, each in its own thread
 };
 
+// The seed task k of a run with seed `run_seed` is generated from.
+std::uint64_t task_seed(std::uint64_t run_seed, std::uint64_t k);
+
 struct Disagreement {
-  std::uint64_t seed = 0;
+  std::uint64_t seed = 0;  // the task's seed (task_seed), as --task-seed takes it
   std::string kind;
   std::string planner_status;  // as status_name() prints it
   std::string message;

@@ -195,3 +195,29 @@ TEST_CASE("a short differential run finds no disagreement, and counts every task
   CHECK(counted == report.tasks);
   CHECK(report.count("agree_solved") > 0);
 }
+
+TEST_CASE("runs with different seeds check disjoint tasks, and a task seed replays one task") {
+  // Seeds 1, 2 and 3 are meant as three samples: no task of one run may be a
+  // task of another (with task k drawn from seed + k they shared all but one).
+  std::set<std::uint64_t> drawn;
+  for (std::uint64_t run = 1; run <= 3; ++run)
+    for (std::uint64_t k = 0; k < 20000; k += 97) CHECK(drawn.insert(task_seed(run, k)).second);
+  CHECK(task_seed(2, 0) > task_seed(1, 19999));
+  DifferentialOptions options;
+  options.task_seed = task_seed(1, 3);
+  options.tasks = 50;  // not used when a task seed is given
+  std::ostringstream progress;
+  const DifferentialReport one = run_differential(options, progress);
+  CHECK(one.tasks == 1);
+  DifferentialOptions run;
+  run.seed = 1;
+  run.tasks = 4;
+  const DifferentialReport four = run_differential(run, progress);
+  CHECK(four.tasks == 4);
+  // The fourth task of the run is the one replayed: same class.
+  std::string replayed_class, fourth_class;
+  for (const auto& [cls, c] : one.by_class) replayed_class = cls;
+  const GeneratedTask task = generate_task(task_seed(1, 3));
+  fourth_class = check_task(task.domain, task.problem, run).cls;
+  CHECK(replayed_class == fourth_class);
+}

@@ -34,10 +34,10 @@ TEST_CASE("every alias parses and prints back to an expression that parses the s
   }
 }
 
-TEST_CASE("the default configuration is EHC, then its fallback portfolio, then a complete search") {
+TEST_CASE("the default configuration is EHC, then its fallback portfolio with a complete search taking turns") {
   const EngineSpec e = alias("default").engine;
   REQUIRE(e.kind == K::Then);
-  REQUIRE(e.children.size() == 3);
+  REQUIRE(e.children.size() == 2);
   const EngineSpec& ehc = e.children[0];
   CHECK(ehc.kind == K::Ehc);
   CHECK(ehc.expansions == 20000);
@@ -45,7 +45,7 @@ TEST_CASE("the default configuration is EHC, then its fallback portfolio, then a
   CHECK(ehc.goal_orders);
   const EngineSpec& fallback = e.children[1];
   REQUIRE(fallback.kind == K::Portfolio);
-  REQUIRE(fallback.children.size() == 4);
+  REQUIRE(fallback.children.size() == 5);
   CHECK(fallback.children[0].goal_orders);
   CHECK_FALSE(fallback.children[0].typed);
   CHECK(fallback.children[1].typed);
@@ -54,9 +54,15 @@ TEST_CASE("the default configuration is EHC, then its fallback portfolio, then a
   CHECK(fallback.children[3].kind == K::Wastar);
   CHECK(fallback.children[3].weight == 3.0);
   CHECK_FALSE(fallback.children[3].complete);
-  CHECK(e.children[2].complete);
-  CHECK(e.children[2].kind == K::Wastar);
-  CHECK_FALSE(e.children[2].goal_orders);
+  // The complete search is a member, not a phase after the portfolio: the
+  // others may never exhaust (differential tester, task 4294967418).
+  CHECK(fallback.children[4].complete);
+  CHECK(fallback.children[4].kind == K::Wastar);
+  CHECK_FALSE(fallback.children[4].goal_orders);
+  // An equal turn for its first expansions, then a small share.
+  CHECK(fallback.children[4].share == Approx(0.02));
+  CHECK(fallback.children[4].share_after == 1000);
+  for (std::size_t k = 0; k < 4; ++k) CHECK_FALSE(fallback.children[k].complete);
 }
 
 TEST_CASE("the anytime alias runs weighted A* with falling weights after the default") {
@@ -106,6 +112,9 @@ TEST_CASE("a malformed configuration is refused with its place and what was expe
   CHECK(error_of("anytime(gbfs, weights=[0.5])").find("at least 1") != std::string::npos);
   CHECK(error_of("gbfs(trpg) x").find("after the configuration") != std::string::npos);
   CHECK(error_of("portfolio(gbfs, turns=seconds)").find("turns is expansions or evaluations") != std::string::npos);
+  CHECK(error_of("portfolio(gbfs, wastar(trpg, share=0))").find("share is a share") != std::string::npos);
+  CHECK(error_of("portfolio(gbfs, wastar(trpg, share=1.5))").find("share is a share") != std::string::npos);
+  CHECK(error_of("ehc(trpg, share=0.5)").find("ehc has no option 'share'") != std::string::npos);
   CHECK_THROWS_AS(alias("lama"), SearchConfigurationError);
 }
 
@@ -134,22 +143,52 @@ TEST_CASE("the old flags shape the named searches as they did") {
   const EngineSpec e = configuration_from(d).engine;
   CHECK(e.children[0].time_share == 0.0);
   CHECK_FALSE(e.children[0].goal_orders);
-  CHECK(e.children[1].children.size() == 3);
+  REQUIRE(e.children[1].children.size() == 4);  // the deferred GBFS dropped; the complete search stays
+  CHECK(e.children[1].children.back().complete);
   CHECK(configuration_named("ehc").engine == alias("default").engine);
   CHECK(configuration_named("then(ehc, complete(wastar))").engine.children.size() == 2);
 }
 
-TEST_CASE("a blind complete search plans, and proves what the relaxation cannot") {
-  const test::LoadedTask loaded = test::load_task_text(R"(
+// Two actions that exclude each other; only one leads to the goal.
+const char* const kLockDomain = R"(
 (define (domain lock) (:requirements :strips :negative-preconditions) (:predicates (a) (b) (goal))
   (:action one :parameters () :precondition (not (b)) :effect (a))
   (:action two :parameters () :precondition (not (a)) :effect (b))
-  (:action three :parameters () :precondition (a) :effect (goal))))",
-                                                        "(define (problem l) (:domain lock) (:init) (:goal (goal)))");
+  (:action three :parameters () :precondition (a) :effect (goal))))";
+const char* const kLockProblem = "(define (problem l) (:domain lock) (:init) (:goal (goal)))";
+
+TEST_CASE("a blind complete search plans, and proves what the relaxation cannot") {
+  const test::LoadedTask loaded = test::load_task_text(kLockDomain, kLockProblem);
   PlannerOptions options;
   options.search = parse_search_configuration("complete(wastar(blind, w=1))");
   const PlannerResult solved = Planner(ground(loaded.normalized), options).plan();
   REQUIRE(solved.status == PlannerResult::Status::Solved);
   CHECK(solved.best()->plan.steps.size() == 2);
   CHECK(solved.best()->engine.find("complete") != std::string::npos);
+}
+
+TEST_CASE("portfolio members with a share take their turns, and a portfolio of them only does not stall") {
+  const test::LoadedTask loaded = test::load_task_text(kLockDomain, kLockProblem);
+  PlannerOptions options;
+  options.node_limit = 10000;
+  for (const char* text : {"portfolio(gbfs(blind, share=0.1), complete(wastar(blind, w=1, share=0.1)))",
+                           "portfolio(complete(wastar(blind, w=1, share=0.01, share_after=0)), gbfs(blind), "
+                           "turns=evaluations)",
+                           "portfolio(complete(wastar(blind, w=1, share=0.5)))"}) {
+    INFO(text);
+    options.search = parse_search_configuration(text);
+    const PlannerResult solved = Planner(ground(loaded.normalized), options).plan();
+    CHECK(solved.status == PlannerResult::Status::Solved);
+  }
+  // The unsolvable variant: the shared complete member still proves it when
+  // the member with an equal turn has exhausted its space.
+  const test::LoadedTask locked = test::load_task_text(R"(
+(define (domain lock) (:requirements :strips :negative-preconditions) (:predicates (a) (b) (goal))
+  (:action one :parameters () :precondition (not (b)) :effect (a))
+  (:action three :parameters () :precondition (and (a) (b)) :effect (goal))))",
+                                                        "(define (problem l) (:domain lock) (:init) (:goal (goal)))");
+  options.search = parse_search_configuration("portfolio(gbfs(blind), complete(wastar(blind, w=1, share=0.01)))");
+  const PlannerResult proved = Planner(ground(locked.normalized), options).plan();
+  INFO(proved.message);
+  CHECK(proved.status == PlannerResult::Status::Unsolvable);
 }

@@ -257,3 +257,24 @@ TEST_CASE("derived predicates are re-evaluated after every happening") {
   require_violation(r, Violation::Kind::UnsatisfiedPrecondition);
   CHECK(r.violation->condition == "(powered b)");
 }
+
+TEST_CASE("an action adding twice a fact it reads is refused only where its happening has other members") {
+  // VAL marks what an action reads only in a happening of several members;
+  // the second add then finds the fact owned as read-and-added and is a
+  // mutex (Ownership::ownsForAdd). VAL 3c7a1f3 refuses the first plan below
+  // and accepts the second. Found by the differential tester (task
+  // 8589935187), where the planner printed the first.
+  const char* domain = R"(
+(define (domain twice) (:requirements :strips :durative-actions :derived-predicates)
+  (:predicates (f0) (f1) (f2) (d0))
+  (:derived (d0) (or (f2) (f1)))
+  (:durative-action d1 :parameters () :duration (= ?duration 3) :condition (at start (f0)) :effect (at start (f2)))
+  (:action i0 :parameters () :precondition (and (f0) (d0)) :effect (and (f1) (f1))))
+)";
+  const char* problem = "(define (problem p) (:domain twice) (:init (f0)) (:goal (and (f1) (f2))))";
+  const test::LoadedTask task = test::load_task_text(domain, problem);
+  PlanValidator validator(task.normalized);
+  require_violation(validator.validate(read_plan("0: (d1) [3]\n0.001: (i0)\n3: (i0)\n", "p").plan),
+                    Violation::Kind::MutexViolation);
+  CHECK(validator.validate(read_plan("0: (d1) [3]\n0.001: (i0)\n3.001: (i0)\n", "p").plan).valid);
+}
