@@ -119,6 +119,18 @@ void PartialPlan::Ledger::record(const Touch& touch, std::uint32_t step) {
   }
 }
 
+bool PartialPlan::zero_duration_together(ActionId action) const {
+  // Conditional effects whose condition reads what the other snap writes
+  // are left out: the successor generator requires their conditions false
+  // in the state before the happening, where VAL then neither counts the
+  // reads nor applies the effects.
+  if (const TaskIndex::CrossConditionals* cross = index_->cross_conditionals(action)) {
+    return separation(cross->start_footprint, cross->end_footprint).value_or(0.0) == 0.0;
+  }
+  return separation(index_->footprint({SnapKind::Start, action}), index_->footprint({SnapKind::End, action}))
+             .value_or(0.0) == 0.0;
+}
+
 std::optional<double> PartialPlan::separation(const Footprint& a, const Footprint& b) const {
   std::optional<double> gap;
   auto need = [&](double g) { gap = std::max(gap.value_or(0.0), g); };
@@ -194,7 +206,7 @@ bool PartialPlan::append(const StepRecord& step) {
     edges.push_back({node, other_node, 0.0});
   }
   if (step.snap.kind == SnapKind::End && step.max_duration == 0.0 && step.start_step != kNoId &&
-      separation(index_->footprint({SnapKind::Start, step.snap.index}), fp).value_or(0.0) == 0.0) {
+      zero_duration_together(step.snap.index)) {
     // A zero-duration action's start and end form one happening; unless
     // they interfere as VAL judges two members of a happening (then the
     // separation makes it unschedulable, as VAL refuses it), nothing

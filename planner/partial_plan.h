@@ -174,6 +174,8 @@ class PartialPlan {
   // `earlier` first: epsilon where VAL would call them a mutex, 0 where they
   // may share a happening; nullopt when they touch nothing in common.
   std::optional<double> separation(const Footprint& earlier, const Footprint& later) const;
+  // Whether a zero-duration action's start and end may share a happening.
+  bool zero_duration_together(ActionId action) const;
 
   struct PendingEnd {
     ActionId action;

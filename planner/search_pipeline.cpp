@@ -250,44 +250,57 @@ bool surely_positive_duration(const GroundAction& a) {
   });
 }
 
-bool writes_any(const HappeningEffects& e, const std::vector<FactId>& facts, const std::vector<NumericVarId>& vars) {
-  auto in = [](const auto& keys, auto key) { return std::find(keys.begin(), keys.end(), key) != keys.end(); };
-  auto writes_fact = [&](FactId f) { return in(e.add, f) || in(e.del, f); };
-  auto writes_var = [&](NumericVarId v) {
-    return std::any_of(e.numeric.begin(), e.numeric.end(), [&](const NumericAssignment& n) { return n.variable == v; });
+// Whether the effects (only the conditional ones, if so asked) write one
+// of the facts or variables.
+bool writes_any(const HappeningEffects& e, const std::vector<FactId>& facts, const std::vector<NumericVarId>& vars,
+                bool conditional_only) {
+  auto writes = [&](const std::vector<FactId>& add, const std::vector<FactId>& del,
+                    const std::vector<NumericAssignment>& numeric) {
+    auto in = [](const std::vector<FactId>& keys, FactId f) { return std::find(keys.begin(), keys.end(), f) != keys.end(); };
+    return std::any_of(facts.begin(), facts.end(), [&](FactId f) { return in(add, f) || in(del, f); }) ||
+           std::any_of(numeric.begin(), numeric.end(), [&](const NumericAssignment& n) {
+             return std::find(vars.begin(), vars.end(), n.variable) != vars.end();
+           });
   };
-  for (const ConditionalEffect& c : e.conditional) {
-    for (FactId f : facts) {
-      if (in(c.add, f) || in(c.del, f)) return true;
-    }
-    for (NumericVarId v : vars) {
-      if (std::any_of(c.numeric.begin(), c.numeric.end(), [&](const NumericAssignment& n) { return n.variable == v; }))
-        return true;
-    }
-  }
-  return std::any_of(facts.begin(), facts.end(), writes_fact) || std::any_of(vars.begin(), vars.end(), writes_var);
+  if (!conditional_only && writes(e.add, e.del, e.numeric)) return true;
+  return std::any_of(e.conditional.begin(), e.conditional.end(),
+                     [&](const ConditionalEffect& c) { return writes(c.add, c.del, c.numeric); });
+}
+
+bool always_zero_duration(const GroundAction& a) {
+  return std::any_of(a.duration.begin(), a.duration.end(), [](const GroundDurationConstraint& d) {
+    return d.comparison == pddl::Comparison::Equal && d.value.kind == GroundExpression::Kind::Constant &&
+           d.value.value == 0.0;
+  });
 }
 
 // A conditional effect's condition read by one snap of an action that may
-// last 0 and written by the other. Such a start and end form one happening,
-// where VAL counts the condition as read only when it holds in the state
-// before the happening (Action::handleEffects); the search keeps them
-// apart by a static footprint that always counts it, so it can lose the
-// plans where the condition is false (differential tester, task
-// 4294967313) and its exhaustion proves nothing.
+// last 0, but need not, and written by the other. With duration 0 such a
+// start and end form one happening, where VAL counts the condition as read
+// only when it holds in the state before the happening
+// (Action::handleEffects). The search does so for actions that always last
+// 0 (TaskIndex::CrossConditionals); one whose duration is chosen keeps its
+// snaps apart by a footprint that always counts the condition, so it can
+// lose the plans that need duration 0, and its exhaustion proves nothing.
+// For an action that always lasts 0, such a condition must be false, which
+// is exact only where the other snap's write is unconditional: a
+// conditional write of it that does not fire would not make VAL refuse.
 std::string zero_duration_conditional_limit(const GroundTask& task) {
   for (const GroundAction& a : task.actions) {
     if (!a.durative || surely_positive_duration(a)) continue;
+    const bool always_zero = always_zero_duration(a);
     for (const auto& [reader, writer] : {std::pair{&a.start, &a.end}, std::pair{&a.end, &a.start}}) {
       for (const ConditionalEffect& c : reader->conditional) {
         std::vector<FactId> facts;
         std::vector<NumericVarId> vars;
         append_reads(c.condition, facts, vars);
-        if (writes_any(*writer, facts, vars)) {
-          return "the start and end of " + task.action_name(a) +
-                 " may share a happening (its duration may be 0), where a conditional effect's condition counts as "
-                 "read only when it holds; the search always counts it";
-        }
+        if (!writes_any(*writer, facts, vars, always_zero)) continue;
+        return always_zero ? "the start and end of " + task.action_name(a) +
+                                 " share a happening, where a conditional effect's condition reads what a conditional "
+                                 "effect of the other may write; the search requires the condition false"
+                           : "the start and end of " + task.action_name(a) +
+                                 " may share a happening (its duration may be 0), where a conditional effect's "
+                                 "condition counts as read only when it holds; the search always counts it";
       }
     }
   }

@@ -57,7 +57,7 @@ std::optional<DurationWindow> constant_duration_window(const GroundAction& actio
 }
 
 bool SuccessorGenerator::apply_effects(const HappeningEffects& effects, const SearchState& before, double duration,
-                                       SearchState& after) const {
+                                       SearchState& after, const std::vector<std::uint32_t>& skipped) const {
   // VAL's order within a happening: conditions and right-hand sides read the
   // state before; deletes, then adds, then numeric updates.
   EvaluationContext context;
@@ -65,7 +65,9 @@ bool SuccessorGenerator::apply_effects(const HappeningEffects& effects, const Se
   std::vector<const std::vector<FactId>*> adds{&effects.add}, dels{&effects.del};
   std::vector<const std::vector<NumericAssignment>*> numeric{&effects.numeric};
   try {
-    for (const ConditionalEffect& c : effects.conditional) {
+    for (std::uint32_t k = 0; k < effects.conditional.size(); ++k) {
+      const ConditionalEffect& c = effects.conditional[k];
+      if (std::find(skipped.begin(), skipped.end(), k) != skipped.end()) continue;
       if (!holds(c.condition, before, context, 0.0)) continue;
       adds.push_back(&c.add);
       dels.push_back(&c.del);
@@ -207,9 +209,32 @@ void SuccessorGenerator::add_end(const SearchState& state, std::size_t running_i
   Successor s{{{SnapKind::End, running.action}, running.start_step, min, max}, state};
   if (!attach_continuous(action, state, context.duration, s.step)) return;
   s.state.finish(running_index);
-  if (!apply_effects(action.end, state, context.duration, s.state)) return;
+  // A zero-duration end shares its start's happening: VAL reads its
+  // conditional effects' conditions before the start, where the start
+  // found those reading its writes false (zero_duration_conditionals_clear).
+  const TaskIndex::CrossConditionals* cross = running.max_duration == 0.0 ? index_.cross_conditionals(running.action) : nullptr;
+  if (!apply_effects(action.end, state, context.duration, s.state, cross ? cross->end : std::vector<std::uint32_t>{}))
+    return;
   if (!invariants_hold(s.state)) return;
   out.push_back(std::move(s));
+}
+
+bool SuccessorGenerator::zero_duration_conditionals_clear(ActionId id, const SearchState& before) const {
+  const TaskIndex::CrossConditionals* cross = index_.cross_conditionals(id);
+  if (!cross) return true;
+  const GroundAction& action = index_.task().actions[id];
+  EvaluationContext context;
+  context.duration = 0.0;
+  try {
+    for (const auto& [effects, listed] : {std::pair{&action.start, &cross->start}, std::pair{&action.end, &cross->end}}) {
+      for (std::uint32_t k : *listed) {
+        if (holds(effects->conditional[k].condition, before, context, 0.0)) return false;
+      }
+    }
+  } catch (const EvaluationError&) {
+    return false;
+  }
+  return true;
 }
 
 void SuccessorGenerator::add_timed_literal(const SearchState& state, std::vector<Successor>& out) const {
@@ -252,6 +277,7 @@ void SuccessorGenerator::add_action(const SearchState& state, ActionId id, std::
     Successor s{{{SnapKind::Start, id}, kNoId, min, max}, state};
     const double duration = min == max ? min : std::nan("");
     if (!condition_holds(action.at_start, state, duration)) continue;
+    if (max == 0.0 && !zero_duration_conditionals_clear(id, state)) continue;
     if (!attach_continuous(action, state, duration, s.step)) continue;
     if (!apply_effects(action.start, state, duration, s.state)) continue;
     // The new action's invariant must hold right after its start (or come

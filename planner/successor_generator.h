@@ -72,10 +72,14 @@ class SuccessorGenerator {
   // and the step's happening.
   bool settle_invariants(const SearchState& before, ActionId started, Successor& s) const;
   void add_end(const SearchState& state, std::size_t running_index, std::vector<Successor>& out) const;
+  // A zero-duration start is refused where a conditional effect of the
+  // action whose condition reads what its other snap writes holds in the
+  // state before (TaskIndex::CrossConditionals): VAL's mutex.
+  bool zero_duration_conditionals_clear(ActionId id, const SearchState& before) const;
   void add_timed_literal(const SearchState& state, std::vector<Successor>& out) const;
   void add_action(const SearchState& state, ActionId action, std::vector<Successor>& out) const;
   bool apply_effects(const HappeningEffects& effects, const SearchState& before, double duration,
-                     SearchState& after) const;
+                     SearchState& after, const std::vector<std::uint32_t>& skipped = {}) const;
   // A condition's part the state decides: all of it, or with continuous
   // change all but the comparisons on changing values.
   bool condition_holds(const ConditionSet& c, const SearchState& state, double duration) const;

@@ -22,7 +22,8 @@ bool additive(pddl::AssignOperator op) {
   return op == pddl::AssignOperator::Increase || op == pddl::AssignOperator::Decrease;
 }
 
-void effect_footprint(const HappeningEffects& e, Footprint& fp) {
+// `skipped`: conditional effects left out, condition and effects.
+void effect_footprint(const HappeningEffects& e, Footprint& fp, const std::vector<std::uint32_t>& skipped = {}) {
   std::vector<NumericVarId> other_values;  // written otherwise than additively, unconditionally
   auto numeric = [&](const std::vector<NumericAssignment>& assignments, bool conditional) {
     for (const NumericAssignment& a : assignments) {
@@ -37,7 +38,9 @@ void effect_footprint(const HappeningEffects& e, Footprint& fp) {
   fp.dels.insert(fp.dels.end(), e.del.begin(), e.del.end());
   numeric(e.numeric, false);
   std::vector<FactId> conditional_writes;
-  for (const ConditionalEffect& c : e.conditional) {
+  for (std::uint32_t k = 0; k < e.conditional.size(); ++k) {
+    const ConditionalEffect& c = e.conditional[k];
+    if (std::find(skipped.begin(), skipped.end(), k) != skipped.end()) continue;
     condition_reads(c.condition, fp);
     fp.writes.insert(fp.writes.end(), c.add.begin(), c.add.end());
     fp.writes.insert(fp.writes.end(), c.del.begin(), c.del.end());
@@ -220,6 +223,72 @@ class AlwaysReads {
 
 }  // namespace
 
+namespace {
+
+using ConditionFootprint = void (*)(const ConditionSet&, Footprint&);
+
+// A durative action's start and end footprints; the conditional effects
+// listed in `skipped_*` are left out (they never fire where these are used).
+void durative_footprints(const GroundAction& action, ConditionFootprint over_all,
+                         const std::vector<std::uint32_t>& skipped_start, const std::vector<std::uint32_t>& skipped_end,
+                         Footprint& start, Footprint& end) {
+  condition_reads(action.at_start, start);
+  over_all(action.over_all, start);
+  for (const GroundDurationConstraint& d : action.duration) append_variables(d.value, start.reads_values);
+  effect_footprint(action.start, start, skipped_start);
+  condition_reads(action.at_end, end);
+  over_all(action.over_all, end);
+  effect_footprint(action.end, end, skipped_end);
+  // Preferences are soft, but VAL's mutex rule counts what they read.
+  for (const GroundPreference& p : action.preferences) {
+    if (p.time == pddl::TimeSpecifier::AtStart) condition_reads(p.condition, start);
+    if (p.time == pddl::TimeSpecifier::AtEnd) condition_reads(p.condition, end);
+  }
+  // A continuous effect changes its variable from the start to the end:
+  // both snaps write it, so readers and writers are ordered around them.
+  for (const ContinuousEffect& c : action.continuous) {
+    start.writes_values.push_back(c.variable);
+    end.writes_values.push_back(c.variable);
+    append_variables(c.rate, start.reads_values);
+  }
+  finish(start);
+  finish(end);
+}
+
+// The effects without the listed conditional effects.
+HappeningEffects without(const HappeningEffects& effects, const std::vector<std::uint32_t>& skipped) {
+  HappeningEffects kept = effects;
+  kept.conditional.clear();
+  for (std::uint32_t k = 0; k < effects.conditional.size(); ++k) {
+    if (std::find(skipped.begin(), skipped.end(), k) == skipped.end()) kept.conditional.push_back(effects.conditional[k]);
+  }
+  return kept;
+}
+
+// The conditional effects of one snap whose condition reads (widened as the
+// footprints are: derived facts, constraints) what the other snap writes
+// (TaskIndex::CrossConditionals), or nothing when there are none.
+template <typename Widen>
+std::optional<TaskIndex::CrossConditionals> cross_conditionals_of(const GroundAction& action, const Footprint& start,
+                                                                   const Footprint& end, const Widen& widen) {
+  auto reading = [&](const HappeningEffects& effects, const Footprint& other) {
+    std::vector<std::uint32_t> out;
+    for (std::uint32_t k = 0; k < effects.conditional.size(); ++k) {
+      Footprint read;
+      condition_reads(effects.conditional[k].condition, read);
+      finish(read);
+      widen(read, effects.conditional[k].condition, HappeningEffects{});
+      if (intersect(read.reads, other.writes) || intersect(read.reads_values, other.writes_values)) out.push_back(k);
+    }
+    return out;
+  };
+  TaskIndex::CrossConditionals cross{reading(action.start, end), reading(action.end, start), {}, {}};
+  if (cross.start.empty() && cross.end.empty()) return std::nullopt;
+  return cross;
+}
+
+}  // namespace
+
 std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const GroundTask& t) {
   auto tables = std::make_shared<ActionTables>();
   ActionTables& x = *tables;
@@ -240,27 +309,7 @@ std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const Gr
   for (ActionId a = 0; a < t.actions.size(); ++a) {
     const GroundAction& action = t.actions[a];
     if (action.durative) {
-      condition_reads(action.at_start, x.start[a]);
-      over_all(action.over_all, x.start[a]);
-      for (const GroundDurationConstraint& d : action.duration) append_variables(d.value, x.start[a].reads_values);
-      effect_footprint(action.start, x.start[a]);
-      condition_reads(action.at_end, x.end[a]);
-      over_all(action.over_all, x.end[a]);
-      effect_footprint(action.end, x.end[a]);
-      // Preferences are soft, but VAL's mutex rule counts what they read.
-      for (const GroundPreference& p : action.preferences) {
-        if (p.time == pddl::TimeSpecifier::AtStart) condition_reads(p.condition, x.start[a]);
-        if (p.time == pddl::TimeSpecifier::AtEnd) condition_reads(p.condition, x.end[a]);
-      }
-      // A continuous effect changes its variable from the start to the end:
-      // both snaps write it, so readers and writers are ordered around them.
-      for (const ContinuousEffect& c : action.continuous) {
-        x.start[a].writes_values.push_back(c.variable);
-        x.end[a].writes_values.push_back(c.variable);
-        append_variables(c.rate, x.start[a].reads_values);
-      }
-      finish(x.start[a]);
-      finish(x.end[a]);
+      durative_footprints(action, over_all, {}, {}, x.start[a], x.end[a]);
       x.duration_dependent[a] = effects_mention_duration(action.start) || effects_mention_duration(action.end) ||
                                conditions_mention_duration(action.at_start) ||
                                conditions_mention_duration(action.over_all) ||
@@ -290,30 +339,33 @@ std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const Gr
   }
   x.continuous = ContinuousModel::build(t);
   if (x.continuous && x.continuous->unsupported() && !x.unsupported) x.unsupported = x.continuous->unsupported();
-  if (!t.axioms.empty()) {
-    const DerivedReads derived(t);
-    for (std::vector<Footprint>* list : {&x.instant, &x.start, &x.end}) {
-      for (Footprint& fp : *list) {
-        derived.expand(fp);
-        finish(fp);
-      }
+  const std::optional<DerivedReads> derived = t.axioms.empty() ? std::nullopt : std::optional<DerivedReads>(std::in_place, t);
+  const AlwaysReads always(t);
+  // What a snap's own conditions and effects do not name but VAL's mutex
+  // rule counts: what derived facts are derived from, the constraints its
+  // writes touch, atoms that are never facts.
+  auto widen = [&](Footprint& fp, const ConditionSet& condition, const HappeningEffects& effects) {
+    if (derived) {
+      derived->expand(fp);
+      finish(fp);
     }
-  }
-  if (const AlwaysReads always(t); !always.empty()) {
-    for (std::vector<Footprint>* list : {&x.instant, &x.start, &x.end}) {
-      for (Footprint& fp : *list) always.expand(fp);
+    if (!always.empty()) always.expand(fp);
+    if (t.ghosts.size() > 0) add_ghosts(t, condition, effects, fp);
+  };
+  for (ActionId a = 0; a < t.actions.size(); ++a) {
+    const GroundAction& action = t.actions[a];
+    if (!action.durative) {
+      widen(x.instant[a], action.at_start, action.start);
+      continue;
     }
-  }
-  if (t.ghosts.size() > 0) {
-    for (ActionId a = 0; a < t.actions.size(); ++a) {
-      const GroundAction& action = t.actions[a];
-      if (action.durative) {
-        add_ghosts(t, action.at_start, action.start, x.start[a]);
-        add_ghosts(t, action.at_end, action.end, x.end[a]);
-      } else {
-        add_ghosts(t, action.at_start, action.start, x.instant[a]);
-      }
-    }
+    widen(x.start[a], action.at_start, action.start);
+    widen(x.end[a], action.at_end, action.end);
+    std::optional<TaskIndex::CrossConditionals> cross = cross_conditionals_of(action, x.start[a], x.end[a], widen);
+    if (!cross) continue;
+    durative_footprints(action, over_all, cross->start, cross->end, cross->start_footprint, cross->end_footprint);
+    widen(cross->start_footprint, action.at_start, without(action.start, cross->start));
+    widen(cross->end_footprint, action.at_end, without(action.end, cross->end));
+    x.cross.emplace_back(a, std::move(*cross));
   }
   return tables;
 }
@@ -347,6 +399,13 @@ void TaskIndex::index_rest() {
   for (const ActionSchema& schema : t.lifted->actions) {
     if (!schema.unsupported.empty() && !unsupported_) unsupported_ = schema.unsupported;
   }
+}
+
+const TaskIndex::CrossConditionals* TaskIndex::cross_conditionals(ActionId action) const {
+  const auto& cross = actions_->cross;
+  auto it = std::lower_bound(cross.begin(), cross.end(), action,
+                             [](const auto& entry, ActionId a) { return entry.first < a; });
+  return it != cross.end() && it->first == action ? &it->second : nullptr;
 }
 
 const Footprint& TaskIndex::footprint(Snap snap) const {

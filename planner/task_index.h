@@ -5,6 +5,7 @@
 // constructs the planner cannot handle.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -37,6 +38,18 @@ class TaskIndex {
   bool duration_dependent(ActionId action) const { return actions_->duration_dependent[action]; }
   // Continuous change (PDDL 2.1 level 4): null when the task has none.
   const std::shared_ptr<const ContinuousModel>& continuous() const { return actions_->continuous; }
+  // A durative action's conditional effects whose condition reads a key
+  // its other snap writes (indices into start.conditional and
+  // end.conditional). Where its duration is 0 its start and end form one
+  // happening, in which VAL reads such a condition in the state before and
+  // counts it as read only when it holds (Action::handleEffects): the
+  // search requires each to be false there, and a zero-duration end never
+  // fires its own (successor_generator.cpp).
+  struct CrossConditionals {
+    std::vector<std::uint32_t> start, end;
+    Footprint start_footprint, end_footprint;  // the snaps' footprints without these effects
+  };
+  const CrossConditionals* cross_conditionals(ActionId action) const;
   // The first construct of the task the planner refuses, with its position.
   const std::optional<std::string>& unsupported() const { return unsupported_; }
 
@@ -48,6 +61,7 @@ class TaskIndex {
     std::vector<bool> duration_dependent;
     std::optional<std::string> unsupported;
     std::shared_ptr<const ContinuousModel> continuous;
+    std::vector<std::pair<ActionId, CrossConditionals>> cross;  // sorted by action
   };
   static std::shared_ptr<const ActionTables> index_actions(const GroundTask& task);
   void index_rest();
