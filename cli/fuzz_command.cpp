@@ -30,6 +30,10 @@ void add_fuzz_command(CLI::App& app, int& exit_code) {
       ->check(CLI::PositiveNumber);
   p->add_option("--node-limit", options->planner_node_limit, "The planner's search nodes per task")
       ->check(CLI::PositiveNumber);
+  p->add_option("--retry-time-limit", options->retry_time_limit,
+                "Where the brute force finds a plan and the planner reached its limit, the planner's seconds for a "
+                "second run before the plan is called missed (default 60; at most --time-limit: no second run)")
+      ->check(CLI::PositiveNumber);
   p->add_option("--max-steps", options->brute_force.max_steps, "The brute force's longest plan (default 3)")
       ->check(CLI::Range(1, 6));
   p->add_option("--max-judgements", options->brute_force.max_judgements,

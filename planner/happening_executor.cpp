@@ -246,20 +246,23 @@ HappeningExecutor::Footprint HappeningExecutor::footprint(const Event& e) const 
     if (p.time == at) collect_reads(p.condition, f.reads, f.reads_values);
   }
   // A condition on a derived fact reads what it is derived from (VAL).
-  if (!task_.axioms.empty()) {
+  auto expand_derived = [&](std::set<FactId>& reads, std::set<NumericVarId>& values) {
+    if (task_.axioms.empty()) return;
     if (!derived_) derived_ = std::make_unique<DerivedSupport>(task_);
-    const std::vector<FactId> read(f.reads.begin(), f.reads.end());
+    const std::vector<FactId> read(reads.begin(), reads.end());
     for (FactId p : read) {
       if (!task_.is_derived(p)) continue;
       const DerivedSupport::Support& s = derived_->of(p);
-      f.reads.insert(s.facts.begin(), s.facts.end());
-      f.reads_values.insert(s.variables.begin(), s.variables.end());
+      reads.insert(s.facts.begin(), s.facts.end());
+      values.insert(s.variables.begin(), s.variables.end());
     }
-  }
+  };
+  expand_derived(f.reads, f.reads_values);
   for (const GroundDurationConstraint& d : action.duration) collect_variables(d.value, f.reads_values);
   const HappeningEffects& effects = e.point == Point::End ? action.end : action.start;
   const EvaluationContext context = context_of(e);
   std::set<FactId> changed;  // by this event so far, in VAL's order
+  f.claimed_reads = f.reads;
   f.added_again.insert(effects.added_twice.begin(), effects.added_twice.end());
   auto add_effects = [&](const std::vector<FactId>& adds, const std::vector<FactId>& dels,
                          const std::vector<NumericAssignment>& numeric) {
@@ -276,7 +279,19 @@ HappeningExecutor::Footprint HappeningExecutor::footprint(const Event& e) const 
   };
   add_effects(effects.add, effects.del, effects.numeric);
   for (const ConditionalEffect& c : effects.conditional) {
-    if (holds(c.condition, state_, context, numeric_slack_)) add_effects(c.add, c.del, c.numeric);
+    if (!holds(c.condition, state_, context, numeric_slack_)) continue;
+    // VAL claims a firing condition's reads when it constructs that effect
+    // (Action::handleEffects): each is a read against the other members; a
+    // fact this event has not yet changed is claimed as read, so adding it
+    // twice afterwards is the added-and-read mutex.
+    std::set<FactId> condition_reads;
+    collect_reads(c.condition, condition_reads, f.reads_values);
+    expand_derived(condition_reads, f.reads_values);
+    for (FactId p : condition_reads) {
+      f.reads.insert(p);
+      if (!changed.count(p)) f.claimed_reads.insert(p);
+    }
+    add_effects(c.add, c.del, c.numeric);
   }
   return f;
 }
@@ -296,7 +311,7 @@ std::optional<Violation> HappeningExecutor::check_mutex(const std::vector<Event>
     // members; a second add of such a fact by the same action then finds
     // it owned as added-and-read and is a mutex (Ownership::ownsForAdd).
     for (FactId p : fa.added_again) {
-      if (events.size() > 1 && fa.reads.count(p)) {
+      if (events.size() > 1 && fa.claimed_reads.count(p)) {
         return clash(a, a, "adds " + task_.fact_name(p) + " twice while it reads it, with other members in its happening");
       }
     }

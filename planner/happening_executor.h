@@ -77,7 +77,12 @@ class HappeningExecutor {
   };
   // What one event reads and writes, for the mutex check.
   struct Footprint {
+    // Every fact read, against the other members of the happening (the
+    // firing conditional effects' conditions included, as in VAL).
     std::set<FactId> reads, adds, dels;
+    // Facts this event reads before it changes them: a precondition, or a
+    // firing condition's fact not yet added or deleted by it.
+    std::set<FactId> claimed_reads;
     // Facts added after an earlier add or delete of them by the same event,
     // in the order VAL processes effects (adds, deletes, then each
     // conditional effect that fires).

@@ -97,16 +97,36 @@ void PartialPlan::Ledger::add_constraints(const Touch& touch, std::uint32_t node
       const bool alike = kind != WriteKind::Other && kind == w->kind;
       add(node_of_step[w->step], alike ? 0.0 : epsilon);
     }
-    for (const Use& r : reads) {
-      if (r.key == key && (!w || r.step > w->step)) add(node_of_step[r.step], r.kind == WriteKind::Add ? 0.0 : epsilon);
-    }
+    // Only reads since the last write of a key are kept (record()).
+    const auto [first, last] = reads_of(key);
+    for (auto r = first; r != last; ++r) add(node_of_step[r->step], r->kind == WriteKind::Add ? 0.0 : epsilon);
   }
 }
 
+std::pair<std::vector<PartialPlan::Use>::const_iterator, std::vector<PartialPlan::Use>::const_iterator>
+PartialPlan::Ledger::reads_of(std::uint32_t key) const {
+  const auto first = std::lower_bound(reads.begin(), reads.end(), key,
+                                      [](const Use& u, std::uint32_t k) { return u.key < k; });
+  const auto last = std::upper_bound(first, reads.end(), key, [](std::uint32_t k, const Use& u) { return k < u.key; });
+  return {first, last};
+}
+
+// Reads are kept sorted by key, in the order of their steps within a key,
+// and only since the key's last write: every later constraint and the
+// interface look at no older read, and a plan rebuilt step by step from the
+// root (SearchSpace::partial_plan) then costs time linear in its length,
+// not quadratic.
 void PartialPlan::Ledger::record(const Touch& touch, std::uint32_t step) {
-  for (std::uint32_t key : touch.reads) reads.push_back({key, step, WriteKind::Other});
-  for (std::uint32_t key : touch.holds) reads.push_back({key, step, WriteKind::Add});
+  auto read = [&](std::uint32_t key, WriteKind kind) {
+    const auto at = std::upper_bound(reads.begin(), reads.end(), key,
+                                     [](std::uint32_t k, const Use& u) { return k < u.key; });
+    reads.insert(at, {key, step, kind});
+  };
+  for (std::uint32_t key : touch.reads) read(key, WriteKind::Other);
+  for (std::uint32_t key : touch.holds) read(key, WriteKind::Add);
   for (std::uint32_t key : touch.writes) {
+    const auto [first, last] = reads_of(key);
+    reads.erase(first, last);
     const WriteKind kind = touch.kind_of(key);
     auto it = std::lower_bound(writers.begin(), writers.end(), key,
                                [](const Use& u, std::uint32_t k) { return u.key < k; });

@@ -164,6 +164,8 @@ class PartialPlan {
     std::vector<Use> reads;
     std::optional<std::uint32_t> writer(std::uint32_t key) const;
     const Use* last_write(std::uint32_t key) const;
+    // The reads of `key` since its last write.
+    std::pair<std::vector<Use>::const_iterator, std::vector<Use>::const_iterator> reads_of(std::uint32_t key) const;
     // Edges of no gap (holders, writers of one kind) also go to `loose`:
     // the schedule keeps epsilon there where it can (preferred_times).
     void add_constraints(const Touch& touch, std::uint32_t node, double epsilon, std::vector<TemporalEdge>& edges,

@@ -287,6 +287,36 @@ std::optional<TaskIndex::CrossConditionals> cross_conditionals_of(const GroundAc
   return cross;
 }
 
+// Whether an event with these effects adds `fact` after it has already
+// added or deleted it, in the order VAL constructs effects (adds, deletes,
+// then each conditional effect's adds and deletes), taking every
+// conditional effect as firing. VAL's Ownership::ownsForAdd refuses such a
+// second add of a fact the event read when its happening has other members.
+bool may_add_again(const HappeningEffects& e, FactId fact) {
+  const auto count = [&](const std::vector<FactId>& v) { return std::count(v.begin(), v.end(), fact); };
+  const auto plain_adds = count(e.add) + count(e.added_twice);
+  if (plain_adds >= 2) return true;
+  auto changes = plain_adds + count(e.del);
+  for (const ConditionalEffect& c : e.conditional) {
+    if (count(c.add) > 0 && (changes > 0 || count(c.add) > 1)) return true;
+    changes += count(c.add) + count(c.del);
+  }
+  return false;
+}
+
+// A snap that may add again a fact it reads must be the only member of its
+// happening (see may_add_again): it is given a write of `key`, which every
+// snap reads, so the search keeps it epsilon apart from every other snap.
+bool must_be_alone(const HappeningEffects& e, const Footprint& fp) {
+  auto read_and_added_again = [&](FactId p) {
+    return std::binary_search(fp.reads.begin(), fp.reads.end(), p) && may_add_again(e, p);
+  };
+  if (std::any_of(e.add.begin(), e.add.end(), read_and_added_again)) return true;
+  return std::any_of(e.conditional.begin(), e.conditional.end(), [&](const ConditionalEffect& c) {
+    return std::any_of(c.add.begin(), c.add.end(), read_and_added_again);
+  });
+}
+
 }  // namespace
 
 std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const GroundTask& t) {
@@ -367,7 +397,39 @@ std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const Gr
     widen(cross->end_footprint, action.at_end, without(action.end, cross->end));
     x.cross.emplace_back(a, std::move(*cross));
   }
+  mark_alone_snaps(t, x);
   return tables;
+}
+
+void TaskIndex::mark_alone_snaps(const GroundTask& t, ActionTables& x) {
+  std::vector<Footprint*> alone;
+  for (ActionId a = 0; a < t.actions.size(); ++a) {
+    const GroundAction& action = t.actions[a];
+    if (!action.durative) {
+      if (must_be_alone(action.start, x.instant[a])) alone.push_back(&x.instant[a]);
+      continue;
+    }
+    if (must_be_alone(action.start, x.start[a])) alone.push_back(&x.start[a]);
+    if (must_be_alone(action.end, x.end[a])) alone.push_back(&x.end[a]);
+  }
+  for (auto& [a, cross] : x.cross) {
+    if (must_be_alone(t.actions[a].start, cross.start_footprint)) alone.push_back(&cross.start_footprint);
+    if (must_be_alone(t.actions[a].end, cross.end_footprint)) alone.push_back(&cross.end_footprint);
+  }
+  if (alone.empty()) return;
+  x.alone_key = alone_key_of(t);
+  // Reads stay sorted: the key is above every fact and ghost key.
+  auto read = [&](Footprint& fp) { fp.reads.push_back(*x.alone_key); };
+  for (std::vector<Footprint>* v : {&x.instant, &x.start, &x.end}) std::for_each(v->begin(), v->end(), read);
+  for (auto& [a, cross] : x.cross) {
+    read(cross.start_footprint);
+    read(cross.end_footprint);
+  }
+  for (Footprint* fp : alone) fp->writes.push_back(*x.alone_key);
+}
+
+std::uint32_t TaskIndex::alone_key_of(const GroundTask& t) {
+  return static_cast<std::uint32_t>(t.facts.size() + t.ghosts.size());
 }
 
 TaskIndex::TaskIndex(std::shared_ptr<const GroundTask> task) : task_(std::move(task)) {
@@ -394,6 +456,10 @@ void TaskIndex::index_rest() {
   }
   if (const AlwaysReads always(t); !always.empty()) {
     for (Footprint& fp : til_) always.expand(fp);
+  }
+  // A timed literal is a member of its happening as well (VAL).
+  if (actions_->alone_key) {
+    for (Footprint& fp : til_) fp.reads.push_back(*actions_->alone_key);
   }
   if (!t.lifted->unsupported.empty()) unsupported_ = t.lifted->unsupported.front();
   for (const ActionSchema& schema : t.lifted->actions) {

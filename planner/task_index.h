@@ -62,8 +62,13 @@ class TaskIndex {
     std::optional<std::string> unsupported;
     std::shared_ptr<const ContinuousModel> continuous;
     std::vector<std::pair<ActionId, CrossConditionals>> cross;  // sorted by action
+    // Set where some snap must be alone in its happening (task_index.cpp,
+    // must_be_alone): every footprint reads it, such snaps write it.
+    std::optional<std::uint32_t> alone_key;
   };
   static std::shared_ptr<const ActionTables> index_actions(const GroundTask& task);
+  static void mark_alone_snaps(const GroundTask& task, ActionTables& tables);
+  static std::uint32_t alone_key_of(const GroundTask& task);
   void index_rest();
 
   std::shared_ptr<const GroundTask> task_;

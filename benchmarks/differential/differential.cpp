@@ -7,6 +7,7 @@
 #include <optional>
 #include <ostream>
 #include <set>
+#include <sstream>
 #include <mutex>
 #include <thread>
 
@@ -54,6 +55,34 @@ bool solved_in_one_step(const oracle::LoadedTask& task, const DifferentialOption
   return r.plan.has_value();
 }
 
+// The planner's plan as it printed it, judged exactly (the planner
+// promises plans that need no slack): nothing when valid, else the kind of
+// disagreement, with the plan and the reason in `d`.
+std::optional<std::string> judge_plan(const oracle::LoadedTask& task, const std::string& plan,
+                                      const DifferentialOptions& options, Disagreement& d) {
+  oracle::JudgeOptions exact;
+  exact.exact = true;
+  exact.tolerance = options.brute_force.epsilon;
+  const oracle::TimedPlanRead read = oracle::read_timed_plan(plan);
+  oracle::Verdict v;
+  if (read.ok()) {
+    v = oracle::Judge(task.domain, task.problem, exact).judge(read.plan);
+  } else {
+    v.failure = oracle::Failure::BadPlan;
+    v.reason = read.error;
+  }
+  d.plan = plan;
+  if (!v.judged()) {
+    d.message = v.reason;
+    return "unjudged_plan";
+  }
+  if (!v.valid()) {
+    d.message = std::string(oracle::to_string(v.failure)) + ": " + v.reason;
+    return "invalid_plan";
+  }
+  return std::nullopt;
+}
+
 TaskOutcome disagree(TaskOutcome outcome, Disagreement d, const std::string& kind) {
   d.kind = kind;
   outcome.cls = kind;
@@ -85,27 +114,8 @@ TaskOutcome check_task(const std::string& domain, const std::string& problem, co
   outcome.planner_plan = planner.plan;
   if (planner.status == "internal_error" || planner.status == "unsupported") return disagree(outcome, d, planner.status);
   if (planner.status == "solved") {
-    // The planner's plan as it printed it, judged exactly: the planner
-    // promises plans that need no slack.
-    oracle::JudgeOptions exact;
-    exact.exact = true;
-    exact.tolerance = options.brute_force.epsilon;
-    const oracle::TimedPlanRead read = oracle::read_timed_plan(planner.plan);
-    oracle::Verdict v;
-    if (read.ok()) {
-      v = oracle::Judge(task.domain, task.problem, exact).judge(read.plan);
-    } else {
-      v.failure = oracle::Failure::BadPlan;
-      v.reason = read.error;
-    }
-    d.plan = planner.plan;
-    if (!v.judged()) {
-      d.message = v.reason;
-      return disagree(outcome, d, "unjudged_plan");
-    }
-    if (!v.valid()) {
-      d.message = std::string(oracle::to_string(v.failure)) + ": " + v.reason;
-      return disagree(outcome, d, "invalid_plan");
+    if (std::optional<std::string> kind = judge_plan(task, planner.plan, options, d)) {
+      return disagree(outcome, d, *kind);
     }
   }
   const BruteForceResult brute = brute_force_plan(task.domain, task.problem, options.brute_force);
@@ -121,6 +131,30 @@ TaskOutcome check_task(const std::string& domain, const std::string& problem, co
     if (planner.status == "solved") {
       outcome.cls = "agree_solved";
       return outcome;
+    }
+    if (planner.status == "limit_reached" && options.retry_time_limit > options.planner_time_limit) {
+      // A plan exists: the planner gets the generous limit before a miss is
+      // called (the first limit keeps the tasks without plans cheap).
+      DifferentialOptions generous = options;
+      generous.planner_time_limit = options.retry_time_limit;
+      const double factor = options.retry_time_limit / options.planner_time_limit;
+      generous.planner_node_limit = static_cast<std::size_t>(static_cast<double>(options.planner_node_limit) * factor);
+      try {
+        planner = run_planner(task, generous);
+      } catch (const std::exception& e) {
+        d.message = e.what();
+        return disagree(outcome, d, "crash");
+      }
+      d.planner_status = planner.status;
+      d.message = planner.message;
+      outcome.planner_plan = planner.plan;
+      if (planner.status == "solved") {
+        if (std::optional<std::string> kind = judge_plan(task, planner.plan, options, d)) {
+          return disagree(outcome, d, *kind);
+        }
+        outcome.cls = "agree_solved_late";
+        return outcome;
+      }
     }
     d.plan = plan_text(*brute.plan);
     return disagree(outcome, d, planner.status == "unsolvable" ? "false_unsolvable" : "missed_plan");
@@ -193,6 +227,13 @@ std::uint64_t task_seed(std::uint64_t run_seed, std::uint64_t k) { return (run_s
 DifferentialReport run_differential(const DifferentialOptions& options, std::ostream& progress) {
   DifferentialReport report;
   report.bound = describe_bound(options.brute_force);
+  std::ostringstream limits;
+  limits << options.planner_time_limit << " s and " << options.planner_node_limit << " nodes per task";
+  if (options.retry_time_limit > options.planner_time_limit) {
+    limits << "; where the brute force finds a plan and that was not enough, a second run of "
+           << options.retry_time_limit << " s before the plan is called missed";
+  }
+  report.planner_limits = limits.str();
   const Clock::time_point began = Clock::now();
   std::map<std::uint64_t, Checked> checked;  // by task number; a run may name a million tasks and stop at a minute
   std::mutex lock;
@@ -234,8 +275,9 @@ DifferentialReport run_differential(const DifferentialOptions& options, std::ost
 void print_report(const DifferentialReport& r, std::ostream& out) {
   out << "tasks: " << r.tasks << " in " << r.seconds << " s; " << r.judgements
       << " plans judged by the reference semantics\nbrute force bound: " << r.bound << "\n";
+  if (!r.planner_limits.empty()) out << "planner limits: " << r.planner_limits << "\n";
   std::uint64_t non_trivial = 0, undecided = 0, disagreements = 0;
-  static const std::set<std::string> agreeing = {"agree_solved", "planner_only_solved", "agree_unsolvable",
+  static const std::set<std::string> agreeing = {"agree_solved", "agree_solved_late", "planner_only_solved", "agree_unsolvable",
                                                  "agree_unsolved", "solved_brute_force_cut_short"};
   for (const auto& [cls, c] : r.by_class) {
     non_trivial += c.non_trivial;

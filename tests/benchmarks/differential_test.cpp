@@ -140,6 +140,7 @@ TEST_CASE("a task the planner cannot finish in its time is a missed plan, and sh
   options.tasks = 20;
   options.seed = 1;
   options.planner_time_limit = 1e-9;
+  options.retry_time_limit = 1e-9;  // no second run
   options.shrink = false;
   std::ostringstream progress;
   const DifferentialReport report = run_differential(options, progress);
@@ -162,6 +163,26 @@ TEST_CASE("a task the planner cannot finish in its time is a missed plan, and sh
   CHECK(reduced.domain->actions.size() + reduced.domain->durative_actions.size() <=
         parse(found.domain, found.problem).domain->actions.size() +
             parse(found.domain, found.problem).domain->durative_actions.size());
+}
+
+TEST_CASE("a plan the planner finds only within the generous limit is counted apart, and judged") {
+  // The same twenty tasks: every plan missed at the first limit is asked
+  // for again with the second, found, judged valid and counted late.
+  DifferentialOptions options;
+  options.tasks = 20;
+  options.seed = 1;
+  options.planner_time_limit = 1e-9;
+  options.retry_time_limit = 20.0;
+  options.shrink = false;
+  std::ostringstream progress;
+  const DifferentialReport report = run_differential(options, progress);
+  std::ostringstream printed;
+  print_report(report, printed);
+  INFO(printed.str());
+  CHECK(report.disagreements.empty());
+  CHECK(report.count("agree_solved_late") > 0);
+  CHECK(report.count("agree_solved") == 0);
+  CHECK(printed.str().find("a second run of 20 s before the plan is called missed") != std::string::npos);
 }
 
 TEST_CASE("an invalid plan of the planner is a disagreement the reference semantics names") {

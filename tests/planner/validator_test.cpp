@@ -278,3 +278,33 @@ TEST_CASE("an action adding twice a fact it reads is refused only where its happ
                     Violation::Kind::MutexViolation);
   CHECK(validator.validate(read_plan("0: (d1) [3]\n0.001: (i0)\n3.001: (i0)\n", "p").plan).valid);
 }
+
+TEST_CASE("a firing conditional effect's condition is a read in the mutex rule, and claims what it reads") {
+  // VAL claims a conditional effect's condition when the effect fires
+  // (Action::handleEffects): a member deleting what it reads is a mutex;
+  // a condition that does not hold claims nothing. A fact claimed by a
+  // firing condition and then added twice is the added-and-read mutex; one
+  // the action added before the condition read it is not. VAL 3c7a1f3 gives
+  // each verdict below, as the reference semantics does.
+  const char* domain = R"(
+(define (domain condread) (:requirements :strips :conditional-effects)
+  (:predicates (p) (q) (r) (done))
+  (:action a :parameters () :precondition (and) :effect (when (p) (done)))
+  (:action b :parameters () :precondition (and) :effect (not (p)))
+  (:action c :parameters () :precondition (and) :effect (and (when (p) (p)) (when (q) (p))))
+  (:action e :parameters () :precondition (and) :effect (and (p) (when (p) (p))))
+  (:action k :parameters () :precondition (and) :effect (r))))";
+  const test::LoadedTask with_p =
+      test::load_task_text(domain, "(define (problem p1) (:domain condread) (:init (p) (q)) (:goal (r)))");
+  PlanValidator validator(with_p.normalized);
+  require_violation(validator.validate(read_plan("0: (a)\n0: (b)\n0: (k)\n", "p").plan), Violation::Kind::MutexViolation);
+  CHECK(validator.validate(read_plan("0: (a)\n0.001: (b)\n0.001: (k)\n", "p").plan).valid);
+  require_violation(validator.validate(read_plan("0: (c)\n0: (k)\n", "p").plan), Violation::Kind::MutexViolation);
+  CHECK(validator.validate(read_plan("0: (c)\n0.001: (k)\n", "p").plan).valid);
+  CHECK(validator.validate(read_plan("0: (e)\n0: (k)\n", "p").plan).valid);
+  const test::LoadedTask without_p =
+      test::load_task_text(domain, "(define (problem p2) (:domain condread) (:init (q)) (:goal (r)))");
+  PlanValidator second(without_p.normalized);
+  CHECK(second.validate(read_plan("0: (a)\n0: (b)\n0: (k)\n", "p").plan).valid);
+  CHECK(second.validate(read_plan("0: (c)\n0: (k)\n", "p").plan).valid);
+}

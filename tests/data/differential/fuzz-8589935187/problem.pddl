@@ -1,0 +1,5 @@
+(define (problem fuzz-8589935187-1) (:domain fuzz-8589935187)
+  (:init (at 1.25 (f2)) (at 4.25 (not (f2))) (f0) (at 1 (not (f0))))
+  (:goal (and (f2)))
+  (:constraints (and (within 2.5 (f1))))
+  (:metric minimize (total-time)))
