@@ -81,11 +81,9 @@ PartialPlan::Interface PartialPlan::interface(bool timed_literals_remain) const 
   };
   std::vector<Source> sources;
   auto ledger_sources = [&](const Ledger& ledger, SourceKind writer, SourceKind touched) {
+    // The ledger keeps only the reads since each key's last write.
     for (const Use& r : ledger.reads) {
-      const std::optional<std::uint32_t> w = ledger.writer(r.key);
-      if (!w || r.step > *w) {
-        sources.push_back({source_id(touched, r.key), node_of_step_[r.step], r.kind == WriteKind::Add ? -epsilon_ : 0.0});
-      }
+      sources.push_back({source_id(touched, r.key), node_of_step_[r.step], r.kind == WriteKind::Add ? -epsilon_ : 0.0});
     }
     for (const Use& w : ledger.writers) {
       sources.push_back({source_id(writer, w.key), node_of_step_[w.step]});
@@ -107,6 +105,9 @@ PartialPlan::Interface PartialPlan::interface(bool timed_literals_remain) const 
   // e[u] + w - e[v] <= 0, and a longest path is a shortest one on its negation.
   const std::uint32_t n = network_.size();
   const std::vector<double>& e = network_.earliest_times();
+  // Sources of one id side by side, so each target takes their maximum in
+  // one pass (no map per target).
+  std::stable_sort(sources.begin(), sources.end(), [](const Source& a, const Source& b) { return a.id < b.id; });
   std::vector<std::vector<std::pair<std::uint32_t, double>>> out(n);
   for (const TemporalEdge& edge : network_.edges()) {
     out[edge.from].emplace_back(edge.to, std::max(0.0, e[edge.to] - e[edge.from] - edge.weight));
@@ -131,17 +132,15 @@ PartialPlan::Interface PartialPlan::interface(bool timed_literals_remain) const 
     auto longest = [&](std::uint32_t v) { return std::isfinite(cost[v]) ? e[v] - e[target] - cost[v] : kNoPath; };
     Interface::Target t;
     t.to_origin = longest(0);
-    std::map<std::uint64_t, double> by_source;
     for (const Source& source : sources) {
-      auto [it, fresh] = by_source.try_emplace(source.id, kNoPath);
+      if (t.longest.empty() || t.longest.back().first != source.id) t.longest.emplace_back(source.id, kNoPath);
       const double path = longest(source.node);
-      if (path != kNoPath) it->second = std::max(it->second, path + source.offset);
+      if (path != kNoPath) t.longest.back().second = std::max(t.longest.back().second, path + source.offset);
     }
     // A key read but not written since the origin also waits for the origin.
-    for (auto& [id, value] : by_source) {
+    for (auto& [id, value] : t.longest) {
       if (stands_at_origin_when_missing(id)) value = std::max(value, t.to_origin);
     }
-    t.longest.assign(by_source.begin(), by_source.end());
     result.targets.push_back(std::move(t));
   }
   return result;

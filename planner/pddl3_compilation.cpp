@@ -83,8 +83,8 @@ void drop_violation_terms(GroundExpression& e) {
 
 class Compiler {
  public:
-  Compiler(const GroundTask& task, const PreferenceSelection& selection, const TrajectorySoFar& so_far)
-      : source_(task), selection_(selection), so_far_(so_far),
+  Compiler(const GroundTask& task, const PreferenceSelection& selection, const TrajectorySoFar& so_far, double epsilon)
+      : source_(task), selection_(selection), so_far_(so_far), epsilon_(epsilon),
         start_facts_(so_far.facts ? *so_far.facts : task.initial_facts), lifted_(std::make_shared<NormalizedTask>(*task.lifted)),
         out_(std::make_shared<GroundTask>(task)) {
     out_->lifted = lifted_;
@@ -163,7 +163,7 @@ class Compiler {
         return;
       }
       case ModalOperator::Sometime: witness(k, g.requirement, std::nullopt); return;
-      case ModalOperator::Within: witness(k, g.requirement, g.deadline); return;
+      case ModalOperator::Within: witness(k, g.requirement, witness_deadline(g.deadline)); return;
       default: return;
     }
   }
@@ -266,6 +266,21 @@ class Compiler {
     return out_->facts.intern(GroundKey{predicate, {}});
   }
 
+  // When a `within t` witness may read: VAL asks for a state at or before
+  // t, and the state a snap reads is the one after the last write of what
+  // it reads, epsilon or more before it. A witness reading up to epsilon
+  // after t (`pddl3-open-K` closed at t + 2 epsilon, which the witness reads
+  // epsilon before) therefore sees what the happenings up to t made, and
+  // nothing later: φ made true at t itself counts, as in VAL. With
+  // continuous change a value read epsilon after t is not the value at t:
+  // there the witness reads by t, and a plan meeting φ only in the last
+  // epsilon is lost (an exhausted search there is no proof anyway).
+  double witness_deadline(double deadline) const {
+    const bool continuous = std::any_of(source_.actions.begin(), source_.actions.end(),
+                                        [](const GroundAction& a) { return !a.continuous.empty(); });
+    return continuous ? deadline : deadline + 2 * epsilon_;
+  }
+
   void witness(std::size_t k, const ConditionSet& requirement, std::optional<double> deadline) {
     const std::string id = std::to_string(k);
     const FactId done = new_fact("pddl3-done-" + id);
@@ -323,6 +338,7 @@ class Compiler {
   const GroundTask& source_;
   const PreferenceSelection& selection_;
   const TrajectorySoFar& so_far_;
+  double epsilon_;
   const std::vector<FactId>& start_facts_;
   std::shared_ptr<NormalizedTask> lifted_;
   std::shared_ptr<GroundTask> out_;
@@ -346,8 +362,8 @@ bool enforceable(const GroundTask& task, std::uint32_t preference) {
 }
 
 CompiledTrajectory compile_trajectory(const GroundTask& task, const PreferenceSelection& selection,
-                                      const TrajectorySoFar& so_far) {
-  return Compiler(task, selection, so_far).run();
+                                      const TrajectorySoFar& so_far, double epsilon) {
+  return Compiler(task, selection, so_far, epsilon).run();
 }
 
 }  // namespace alplan

@@ -15,7 +15,9 @@
 //   adds, an instantaneous action whose precondition is φ (one witness per
 //   disjunct of a disjunction, so that the relaxation sees each).
 // - (within t φ): the same, the witness also needing `pddl3-open-K`, which
-//   a timed literal deletes at t: a witness, and so φ, before t.
+//   a timed literal deletes at t + 2 epsilon: a witness by t + epsilon,
+//   reading φ as the happenings up to t left it (without continuous change;
+//   with it, the literal is at t and φ must hold by t - epsilon).
 // - (always φ): kept as a hard constraint of the compiled task, which the
 //   successor generator checks in every state it makes (successor_generator.h).
 // - a precondition preference: its condition joins the action's condition.
@@ -37,9 +39,11 @@
 //
 // Exactness: a plan of the compiled task without its witness steps is a plan
 // of the original task that meets every hard and every enforced constraint
-// (the witness reads, at a time no later than the deadline, the state VAL
-// observes after the happening before it), and each such plan of the original
-// becomes one of the compiled task by adding a witness where φ holds. The
+// (the witness reads the state VAL observes after the last happening that
+// writes what φ reads, no later than the deadline), and each such plan of
+// the original becomes one of the compiled task by adding a witness where φ
+// holds, epsilon after its last writer (with continuous change, only where φ
+// holds epsilon before the deadline). The
 // `always` check is stricter than VAL where two snaps share a time (VAL sees
 // one happening, the search the state between them), so a search exhausted
 // under it proves nothing (search_pipeline.h, proof_limits).
@@ -95,7 +99,9 @@ bool needs_compilation(const GroundTask& task);
 // within).
 bool enforceable(const GroundTask& task, std::uint32_t preference);
 
+// `epsilon`: the planner's separation of dependent happenings (PlannerOptions),
+// which places the `within` witnesses' deadlines.
 CompiledTrajectory compile_trajectory(const GroundTask& task, const PreferenceSelection& selection,
-                                      const TrajectorySoFar& so_far = {});
+                                      const TrajectorySoFar& so_far = {}, double epsilon = 0.001);
 
 }  // namespace alplan

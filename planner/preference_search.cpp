@@ -76,7 +76,7 @@ class Rounds {
   std::pair<bool, PlannerResult> run(const PreferenceSelection& selection, const SearchConfiguration& search,
                                      double seconds) {
     const TrajectorySoFar so_far{seen_.get(), start_.now, seen_ ? &start_.facts : nullptr};
-    const CompiledTrajectory compiled = compile_trajectory(*task_, selection, so_far);
+    const CompiledTrajectory compiled = compile_trajectory(*task_, selection, so_far, options_.epsilon);
     PlannerResult inner;
     if (compiled.refused || compiled.broken) {
       inner.status = compiled.broken ? PlannerResult::Status::Unsolvable : PlannerResult::Status::Unsupported;

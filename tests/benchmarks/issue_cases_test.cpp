@@ -222,3 +222,25 @@ TEST_CASE("a zero-duration action with a conditional effect on its other snap's 
   check_solved(kZeroConditionalDomain, kZeroConditionalProblem);
   check_solved(kZeroStartConditionalDomain, kZeroStartConditionalProblem);
 }
+
+// A `within` met at its very deadline (issue 44; the differential tester's
+// task 12884902003 has the same shape with a timed literal): VAL counts the
+// state after the happening at t. The compiled witness once had to read φ
+// epsilon before a literal closing at t, so φ had to hold by t - 2 epsilon:
+// "no plan exists" here, the limit on the tester's task. A deadline just
+// before the end's time still has no plan, and none is printed (the
+// search cannot exhaust: any number of switch-ons may start at once).
+TEST_CASE("a within met at its very deadline is planned, and one just missed is not") {
+  const char* domain = R"(
+(define (domain sw) (:requirements :strips :durative-actions :negative-preconditions :constraints)
+  (:predicates (lit))
+  (:durative-action switch-on :parameters () :duration (= ?duration 2)
+    :condition (at start (not (lit))) :effect (at end (lit)))))";
+  check_solved(domain, "(define (problem p) (:domain sw) (:init) (:goal (lit)) (:constraints (within 2 (lit))))");
+  differential::DifferentialOptions options;
+  const differential::TaskOutcome missed = differential::check_task(
+      domain, "(define (problem p) (:domain sw) (:init) (:goal (lit)) (:constraints (within 1.999 (lit))))", options);
+  INFO("class " << missed.cls << "\nplanner's plan:\n" << missed.planner_plan);
+  CHECK_FALSE(missed.disagreement.has_value());
+  CHECK((missed.cls == "agree_unsolvable" || missed.cls == "agree_unsolved"));
+}

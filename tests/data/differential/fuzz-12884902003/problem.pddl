@@ -1,0 +1,5 @@
+(define (problem fuzz-12884902003-1) (:domain fuzz-12884902003)
+  (:init (at 3.5 (f3)) (at 3.75 (not (f3))) (= (x0) 2))
+  (:goal (and (f2) (>= (x0) 2) (preference pg (f1))))
+  (:constraints (and (within 3.5 (f3))))
+  (:metric minimize (+ (total-time) (* 3 (is-violated pg)) (* 2 (is-violated pp)))))
