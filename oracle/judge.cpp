@@ -338,6 +338,16 @@ void Judge::Run::execute() {
     for (std::size_t k = 0; k < h.members.size(); ++k) {
       if (!record_effects(h.members[k], static_cast<int>(k), state, ownership, several, now, changes)) return;
     }
+    if (j_.options_.symmetric_mutex && several) {
+      if (const std::optional<Ownership::Conflict> c = ownership.symmetric_conflict()) {
+        const std::string key = c->fluent ? to_string(world_.fluents().name(c->key)) : to_string(world_.atoms().name(c->key));
+        return void(fail(Failure::Mutex,
+                         member_text(h.members[static_cast<std::size_t>(c->first)]) + " and " +
+                             member_text(h.members[static_cast<std::size_t>(c->second)]) + " both touch " + key +
+                             ", one writing it, at " + number(now) + " (the symmetric rule)",
+                         now));
+      }
+    }
     changes.apply_to(state);
     close_derived(world_, state, conditions_);
     for (const Member& m : h.members) {

@@ -42,6 +42,9 @@ struct JudgeOptions {
   double tolerance = 0.001;  // VAL's -t
   bool exact = false;        // exact comparisons instead of VAL's slack
   bool check_goal = true;    // false: judge a prefix, the goal and the end of trajectory aside
+  // Also judge each pair of a happening's members by all they claim,
+  // whatever VAL's order of claims (ownership.h): stricter than VAL.
+  bool symmetric_mutex = false;
 };
 
 enum class Failure : unsigned char {

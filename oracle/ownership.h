@@ -24,9 +24,19 @@
 //                                    assigned
 //   write (assign, scale-up/-down)   claimed by anyone else in any way, or
 //                                    assigned by a already
+//
+// The symmetric rule (JudgeOptions::symmetric_mutex) asks more: it judges
+// each pair of members by everything each claimed, whatever the order, so a
+// member that deleted a fact and then reads or adds it in a firing
+// conditional effect interferes with another deleting it, which VAL's table
+// lets through when the first member's claim came first. Plans valid under
+// both rules are the ones a planner that orders by pairwise footprints (as
+// POPF and alplan do) can produce.
 #pragma once
 
 #include <map>
+#include <optional>
+#include <set>
 #include <string>
 
 namespace alplan::oracle {
@@ -42,7 +52,21 @@ class Ownership {
   bool read_fluent(int member, int fluent);
   bool write_fluent(int member, int fluent, bool additive);
 
+  // Under the symmetric rule: the first two members, and the atom or fluent,
+  // where one claimed what the other writes in a way that does not commute.
+  struct Conflict {
+    int first = 0, second = 0;
+    bool fluent = false;
+    int key = 0;
+  };
+  std::optional<Conflict> symmetric_conflict() const;
+
  private:
+  struct Claims {
+    std::set<int> reads, adds, deletes, fluent_reads, increases, assigns;
+  };
+  std::map<int, Claims> claims_;  // every claim of each member, granted or not
+
   enum class Kind : unsigned char { Read, Add, Delete, ReadAdd, ReadDelete, Assign };
   struct Claim {
     int owner;

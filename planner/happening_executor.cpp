@@ -281,9 +281,15 @@ HappeningExecutor::Footprint HappeningExecutor::footprint(const Event& e) const 
   for (const ConditionalEffect& c : effects.conditional) {
     if (!holds(c.condition, state_, context, numeric_slack_)) continue;
     // VAL claims a firing condition's reads when it constructs that effect
-    // (Action::handleEffects): each is a read against the other members; a
-    // fact this event has not yet changed is claimed as read, so adding it
-    // twice afterwards is the added-and-read mutex.
+    // (Action::handleEffects): a fact this event has not yet changed is
+    // claimed as read, and adding it twice afterwards is the added-and-read
+    // mutex. One it has changed stays owned as written, so whether another
+    // member's write of it is a mutex depends on which of the two the plan
+    // lists first (VAL 3c7a1f3 refuses `0: (n)`, `0: (m)` and accepts
+    // `0: (m)`, `0: (n)` where m deletes p and reads it in a conditional
+    // effect and n deletes it). A plan's listing order is no part of its
+    // meaning: every fact a firing condition reads counts as a read against
+    // the other members, so what passes here passes VAL in any order.
     std::set<FactId> condition_reads;
     collect_reads(c.condition, condition_reads, f.reads_values);
     expand_derived(condition_reads, f.reads_values);

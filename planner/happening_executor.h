@@ -78,7 +78,8 @@ class HappeningExecutor {
   // What one event reads and writes, for the mutex check.
   struct Footprint {
     // Every fact read, against the other members of the happening (the
-    // firing conditional effects' conditions included, as in VAL).
+    // firing conditional effects' conditions included: happening_executor.cpp
+    // says why even where VAL would not always count them).
     std::set<FactId> reads, adds, dels;
     // Facts this event reads before it changes them: a precondition, or a
     // firing condition's fact not yet added or deleted by it.

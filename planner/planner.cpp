@@ -447,15 +447,30 @@ PlannerResult Planner::search_closer(const PlanningStart& start, const std::func
   second.times.validation += first.times.validation;
   const std::string gap = format_plan_time(closer.epsilon);
   const std::string at = "with dependent happenings " + format_plan_time(options_.epsilon) + " apart";
+  // The first search settled the epsilon plans only where it proved that
+  // none exists; one cut short by its share of the time (narrow windows),
+  // or exhausted without a proof, did not.
+  const bool first_exhausted = first.status == PlannerResult::Status::Unsolvable;
+  std::string first_verdict = "no plan " + at;
+  if (first.status == PlannerResult::Status::LimitReached) {
+    first_verdict = "no plan was found " + at + " in the first " +
+                    format_plan_time(first.times.setup + first.times.search) + " s (not a proof that none exists)";
+  } else if (!first_exhausted) {
+    first_verdict = "no plan was found " + at + " (" + first.message + ")";
+  }
   switch (second.status) {
     case PlannerResult::Status::Solved:
-      second.message = "no plan " + at + "; this plan's are only " + gap + " apart (VAL separates happenings more than " +
-                       format_plan_time(options_.tolerance / 10.0) + " apart)";
+      second.message = first_verdict + "; this plan's are only " + gap +
+                       " apart (VAL separates happenings more than " + format_plan_time(options_.tolerance / 10.0) +
+                       " apart)";
       return second;
     case PlannerResult::Status::Unsolvable:
       if (by_search) {
-        second.message = "no plan exists: the search space is exhausted " + at + " and again with them " + gap +
-                         " apart, the closest VAL (-t " + format_plan_time(options_.tolerance) + ") tells apart";
+        // Every plan with gaps of at least `gap` was searched, the epsilon
+        // ones among them: a proof whether or not the first search ended.
+        second.message = "no plan exists: the search space is exhausted with dependent happenings " + gap +
+                         " apart, the closest VAL (-t " + format_plan_time(options_.tolerance) + ") tells apart" +
+                         (first_exhausted ? ", and " + at : "");
       }
       return second;
     default:

@@ -307,6 +307,62 @@ std::string zero_duration_conditional_limit(const GroundTask& task) {
   return "";
 }
 
+// A snap whose own claims on a fact are mixed (it adds and deletes it, or
+// writes it and reads it in a conditional effect's condition), with
+// another snap or a timed literal writing that fact too. VAL's mutex
+// table then lets the two share a happening or not depending on which one
+// the plan lists first (Ownership.cpp: a member keeps the kind of its
+// first claim; validator_test.cpp has a case). The search keeps every such
+// pair epsilon apart, so it may lose plans VAL accepts in one listing
+// order, and its exhaustion proves nothing.
+std::string order_dependent_mutex_limit(const GroundTask& task) {
+  std::vector<std::uint32_t> writers(task.facts.size(), 0);
+  auto count_writes = [&](const HappeningEffects& e) {
+    std::vector<FactId> written(e.add.begin(), e.add.end());
+    written.insert(written.end(), e.del.begin(), e.del.end());
+    for (const ConditionalEffect& c : e.conditional) {
+      written.insert(written.end(), c.add.begin(), c.add.end());
+      written.insert(written.end(), c.del.begin(), c.del.end());
+    }
+    std::sort(written.begin(), written.end());
+    written.erase(std::unique(written.begin(), written.end()), written.end());
+    for (FactId f : written) ++writers[f];
+  };
+  for (const GroundAction& a : task.actions) {
+    count_writes(a.start);
+    if (a.durative) count_writes(a.end);
+  }
+  for (const GroundTimedLiteral& til : task.timed_literals) ++writers[til.fact];
+  auto mixed_shared = [&](const HappeningEffects& e) -> std::optional<FactId> {
+    std::vector<FactId> adds(e.add.begin(), e.add.end()), dels(e.del.begin(), e.del.end()), reads;
+    std::vector<NumericVarId> ignored;
+    for (const ConditionalEffect& c : e.conditional) {
+      adds.insert(adds.end(), c.add.begin(), c.add.end());
+      dels.insert(dels.end(), c.del.begin(), c.del.end());
+      append_reads(c.condition, reads, ignored);
+    }
+    auto in = [](const std::vector<FactId>& v, FactId f) { return std::find(v.begin(), v.end(), f) != v.end(); };
+    for (FactId f : adds) {
+      if ((in(dels, f) || in(reads, f)) && writers[f] > 1) return f;
+    }
+    for (FactId f : dels) {
+      if (in(reads, f) && writers[f] > 1) return f;
+    }
+    return std::nullopt;
+  };
+  for (const GroundAction& a : task.actions) {
+    for (const HappeningEffects* e : {&a.start, &a.end}) {
+      if (e == &a.end && !a.durative) continue;
+      if (const std::optional<FactId> f = mixed_shared(*e)) {
+        return task.action_name(a) + " both writes " + task.fact_name(*f) +
+               " and reads or undoes it in one happening, and something else writes it: whether VAL lets the two "
+               "share a happening depends on the order the plan lists them, and the search keeps them apart";
+      }
+    }
+  }
+  return "";
+}
+
 }  // namespace
 
 std::string proof_limits(const TaskIndex& index) {
@@ -319,6 +375,7 @@ std::string proof_limits(const TaskIndex& index) {
     if (!a.continuous.empty()) return "with continuous change a state holds the values of one schedule among many";
   }
   if (std::string limit = zero_duration_conditional_limit(task); !limit.empty()) return limit;
+  if (std::string limit = order_dependent_mutex_limit(task); !limit.empty()) return limit;
   for (ActionId a = 0; a < task.actions.size(); ++a) {
     if (task.actions[a].durative && index.duration_dependent(a)) {
       return "only the shortest and longest durations of " + task.action_name(task.actions[a]) +

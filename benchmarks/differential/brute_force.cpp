@@ -213,6 +213,7 @@ BruteForceResult brute_force_plan(std::shared_ptr<const pddl::Domain> domain,
     oracle::JudgeOptions judge_options;
     judge_options.tolerance = options.epsilon;
     judge_options.exact = true;
+    judge_options.symmetric_mutex = options.symmetric_mutex;
     oracle::Judge judge(domain, problem, judge_options);
     oracle::World world(domain, problem);
     std::vector<double> til_times;

@@ -40,6 +40,8 @@ struct BruteForceOptions {
   double quantum = 0.5;
   double max_duration = 5.0;
   std::uint64_t max_judgements = 300000;
+  // Judge with the symmetric mutex rule as well (oracle/ownership.h).
+  bool symmetric_mutex = false;
 };
 
 struct BruteForceResult {

@@ -157,6 +157,20 @@ TaskOutcome check_task(const std::string& domain, const std::string& problem, co
       }
     }
     d.plan = plan_text(*brute.plan);
+    if (planner.status != "unsolvable") {
+      // Plans VAL accepts only because of the order in which it claims a
+      // happening's facts (oracle/ownership.h): where the symmetric rule,
+      // which the planner's footprints follow, refuses every plan in the
+      // bound, the miss is counted apart, never as agreement.
+      BruteForceOptions symmetric = options.brute_force;
+      symmetric.symmetric_mutex = true;
+      const BruteForceResult strict = brute_force_plan(task.domain, task.problem, symmetric);
+      outcome.judgements += strict.judgements;
+      if (!strict.plan && !strict.cut_short) {
+        outcome.cls = "missed_val_order_only";
+        return outcome;
+      }
+    }
     return disagree(outcome, d, planner.status == "unsolvable" ? "false_unsolvable" : "missed_plan");
   }
   if (planner.status == "solved") {
@@ -276,18 +290,23 @@ void print_report(const DifferentialReport& r, std::ostream& out) {
   out << "tasks: " << r.tasks << " in " << r.seconds << " s; " << r.judgements
       << " plans judged by the reference semantics\nbrute force bound: " << r.bound << "\n";
   if (!r.planner_limits.empty()) out << "planner limits: " << r.planner_limits << "\n";
-  std::uint64_t non_trivial = 0, undecided = 0, disagreements = 0;
+  std::uint64_t non_trivial = 0, undecided = 0, disagreements = 0, order_only = 0;
   static const std::set<std::string> agreeing = {"agree_solved", "agree_solved_late", "planner_only_solved", "agree_unsolvable",
                                                  "agree_unsolved", "solved_brute_force_cut_short"};
   for (const auto& [cls, c] : r.by_class) {
     non_trivial += c.non_trivial;
     if (cls == "undecided") undecided += c.tasks;
+    else if (cls == "missed_val_order_only") order_only += c.tasks;
     else if (!agreeing.count(cls)) disagreements += c.tasks;
     out << "  " << cls << ": " << c.tasks << " (" << c.non_trivial << " non-trivial)\n";
   }
   auto share = [&](std::uint64_t n) { return r.tasks ? 100.0 * static_cast<double>(n) / static_cast<double>(r.tasks) : 0.0; };
-  out << "undecided: " << undecided << " (" << share(undecided) << " %), never counted as agreement\n"
-      << "non-trivial: " << non_trivial << " (" << share(non_trivial) << " %)\n"
+  out << "undecided: " << undecided << " (" << share(undecided) << " %), never counted as agreement\n";
+  if (order_only > 0) {
+    out << "missed where only VAL's order of claims gives a plan: " << order_only
+        << ", neither agreement nor disagreement\n";
+  }
+  out << "non-trivial: " << non_trivial << " (" << share(non_trivial) << " %)\n"
       << "by planted structure (tasks, non-trivial):\n";
   for (const auto& [feature, c] : r.by_feature) out << "  " << feature << ": " << c.tasks << ", " << c.non_trivial << "\n";
   out << "disagreements: " << disagreements << "\n";

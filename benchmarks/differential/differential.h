@@ -18,6 +18,12 @@
 //                       exhausted its bound without one;
 //  undecided            the brute force was cut short where its answer was
 //                       needed: never counted as agreement;
+//  missed_val_order_only  the planner found no plan, and every plan the
+//                       brute force finds in its bound is valid only by the
+//                       order in which VAL claims a happening's facts (the
+//                       symmetric mutex rule, oracle/ownership.h, refuses
+//                       them all): printed apart, never counted as agreement
+//                       nor as a disagreement;
 // or in a disagreement:
 //  invalid_plan         the reference semantics rejects the planner's plan;
 //  unjudged_plan        it cannot judge it (an undefined value is read);

@@ -185,6 +185,31 @@ TEST_CASE("a plan the planner finds only within the generous limit is counted ap
   CHECK(printed.str().find("a second run of 20 s before the plan is called missed") != std::string::npos);
 }
 
+TEST_CASE("a plan VAL accepts only by its order of claims is counted apart, and the planner claims no proof") {
+  // i0 deletes f0 and adds it where f0 held: at 2, with the timed literal
+  // deleting f0, VAL lists the plan's step first and accepts `2: (i0)`
+  // (VAL 3c7a1f3); the symmetric rule, which the planner's footprints
+  // follow, refuses it (differential task 4294969704, reduced by hand).
+  const std::string domain = R"(
+(define (domain order) (:requirements :strips :timed-initial-literals :conditional-effects)
+  (:predicates (f0))
+  (:action i0 :parameters () :precondition (and) :effect (and (not (f0)) (when (f0) (f0))))))";
+  const std::string problem = "(define (problem o) (:domain order) (:init (at 1 (f0)) (at 2 (not (f0)))) (:goal (f0)))";
+  DifferentialOptions options;
+  const TaskOutcome outcome = check_task(domain, problem, options);
+  INFO(outcome.cls << (outcome.disagreement ? ": " + outcome.disagreement->message : std::string()));
+  CHECK_FALSE(outcome.disagreement);
+  CHECK(outcome.cls == "missed_val_order_only");
+  CHECK(outcome.witness.find("(i0)") != std::string::npos);
+  DifferentialReport report;
+  report.tasks = 1;
+  report.by_class["missed_val_order_only"].tasks = 1;
+  std::ostringstream printed;
+  print_report(report, printed);
+  CHECK(printed.str().find("disagreements: 0") != std::string::npos);
+  CHECK(printed.str().find("only VAL's order of claims gives a plan: 1") != std::string::npos);
+}
+
 TEST_CASE("an invalid plan of the planner is a disagreement the reference semantics names") {
   DifferentialOptions options;
   const std::string domain = R"(

@@ -152,6 +152,36 @@ TEST_CASE("issue 42, case 3: where only a gap under epsilon gives a plan, no sea
   CHECK(strict.message.find("not a proof") != std::string::npos);
 }
 
+// A window of r narrower than three epsilons that x and then y must both
+// start in (x reads r the timed literal adds, y reads what x adds), and a
+// counter y reads that can be raised forever: the search at epsilon cannot finish,
+// so it gets a third of the time, and the plan found after with closer
+// happenings must not claim that no plan with epsilon gaps exists.
+TEST_CASE("a plan found with closer gaps after a search cut short does not claim a proof") {
+  const char* domain = R"(
+(define (domain narrow) (:requirements :strips :timed-initial-literals :numeric-fluents)
+  (:predicates (r) (p) (done)) (:functions (c))
+  (:action x :parameters () :precondition (r) :effect (p))
+  (:action y :parameters () :precondition (and (r) (p) (>= (c) 0)) :effect (done))
+  (:action inc :parameters () :precondition (and) :effect (increase (c) 1))))";
+  const char* problem =
+      "(define (problem n) (:domain narrow) (:init (= (c) 0) (at 1 (r)) (at 1.0015 (not (r)))) (:goal (done)))";
+  const test::LoadedTask loaded = test::load_task_text(domain, problem);
+  PlannerOptions options;
+  options.time_limit = 3.0;
+  const PlannerResult result = Planner(ground(loaded.normalized), options).plan();
+  INFO(result.message);
+  REQUIRE(result.status == PlannerResult::Status::Solved);
+  CHECK(result.message.find("only 0.0001001 apart") != std::string::npos);
+  CHECK(result.message.find("not a proof that none exists") != std::string::npos);
+  CHECK(result.message.find("no plan with dependent") == std::string::npos);
+  const oracle::LoadedTask task = oracle::load_task_text(domain, problem);
+  REQUIRE(task.ok());
+  const oracle::TimedPlanRead read = oracle::read_timed_plan(result.best()->text);
+  REQUIRE(read.ok());
+  CHECK(oracle::Judge(task.domain, task.problem).judge(read.plan).valid());
+}
+
 TEST_CASE("issue 42, case 6: one operator semantics, an undefined value counting as 0") {
   CHECK(updated_value(2.0, pddl::AssignOperator::Assign, 5.0) == 5.0);
   CHECK(updated_value(2.0, pddl::AssignOperator::Increase, 5.0) == 7.0);

@@ -308,3 +308,22 @@ TEST_CASE("a firing conditional effect's condition is a read in the mutex rule, 
   CHECK(second.validate(read_plan("0: (a)\n0: (b)\n0: (k)\n", "p").plan).valid);
   CHECK(second.validate(read_plan("0: (c)\n0: (k)\n", "p").plan).valid);
 }
+
+TEST_CASE("a conditional effect reading what its action deleted counts as a read, whatever the plan's order") {
+  // m deletes p and reads it in a conditional effect; n deletes p. VAL
+  // 3c7a1f3 accepts `0: (m)`, `0: (n)` and refuses `0: (n)`, `0: (m)`: its
+  // ownership table depends on the order the plan lists a happening's
+  // members. The order is no part of a plan's meaning, so the validator,
+  // which checks the planner's plans before they are printed, refuses both.
+  const char* domain = R"(
+(define (domain aft) (:requirements :strips :conditional-effects)
+  (:predicates (p) (q))
+  (:action m :parameters () :precondition (and) :effect (and (not (p)) (when (p) (q))))
+  (:action n :parameters () :precondition (and) :effect (not (p)))))";
+  const test::LoadedTask task =
+      test::load_task_text(domain, "(define (problem a) (:domain aft) (:init (p)) (:goal (q)))");
+  PlanValidator validator(task.normalized);
+  require_violation(validator.validate(read_plan("0: (n)\n0: (m)\n", "p").plan), Violation::Kind::MutexViolation);
+  require_violation(validator.validate(read_plan("0: (m)\n0: (n)\n", "p").plan), Violation::Kind::MutexViolation);
+  CHECK(validator.validate(read_plan("0: (m)\n0.001: (n)\n", "p").plan).valid);
+}
