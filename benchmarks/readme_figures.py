@@ -252,7 +252,11 @@ def proof_search_block():
 
 def differential_block(folder=FUZZ):
     """The differential tester's run: each class, with the non-trivial
-    tasks, from the report `alplan fuzz planner` printed."""
+    tasks, from `report.json` (`alplan fuzz planner --json`), or from the
+    printed report of runs made before the JSON existed."""
+    path = os.path.join(RESULTS, folder, "report.json")
+    if os.path.exists(path):
+        return differential_block_json(load(f"{folder}/report.json"))
     with open(os.path.join(RESULTS, folder, "report.txt")) as f:
         text = f.read()
     head = re.search(r"tasks: (\d+) in ([\d.]+) s; (\d+) plans judged", text)
@@ -267,6 +271,20 @@ def differential_block(folder=FUZZ):
     return (f"{tasks} tasks in {float(head.group(2)):.0f} s, {int(head.group(3)):,} plans judged by the reference "
             f"semantics; non-trivial {non_trivial.group(1)} ({100 * int(non_trivial.group(1)) / tasks:.1f} %), "
             f"undecided {undecided.group(1)} ({100 * int(undecided.group(1)) / tasks:.1f} %).\n\n"
+            + table(["class", "tasks", "non-trivial"], rows))
+
+
+def differential_block_json(report):
+    tasks = report["tasks"]
+    rows = [[name, str(c["tasks"]), str(c["non_trivial"])] for name, c in sorted(report["classes"].items())
+            if name not in ("undecided", "missed_val_order_only")]
+    rows.append(["undecided (never agreement)", str(report["undecided"]), ""])
+    if report["missed_val_order_only"]:
+        rows.append(["missed, a plan only by VAL's order of claims (neither)", str(report["missed_val_order_only"]), ""])
+    rows.append(["**disagreements**", f"**{report['disagreements']}**", ""])
+    return (f"{tasks} tasks in {report['seconds']:.0f} s, {report['judgements']:,} plans judged by the reference "
+            f"semantics; non-trivial {report['non_trivial']} ({100 * report['non_trivial'] / tasks:.1f} %), "
+            f"undecided {report['undecided']} ({100 * report['undecided'] / tasks:.1f} %).\n\n"
             + table(["class", "tasks", "non-trivial"], rows))
 
 

@@ -1,8 +1,10 @@
 // alplan fuzz planner: the differential tester (benchmarks/differential/).
 #include <CLI/CLI.hpp>
 
+#include <fstream>
 #include <iostream>
 #include <memory>
+#include <string>
 
 #include "benchmarks/differential/differential.h"
 #include "cli/commands.h"
@@ -44,9 +46,20 @@ void add_fuzz_command(CLI::App& app, int& exit_code) {
   p->add_option("--write-tasks", options->all_dir, "Folder to write every task into, with the class it fell in and the planner's and the brute force's plans");
   p->add_flag("!--no-shrink", options->shrink, "Write disagreeing tasks as found, without reducing them");
   p->add_option("--out", options->out_dir, "Folder to write each disagreeing task into (domain, problem, plan)");
-  p->callback([options, &exit_code] {
+  auto json_path = std::make_shared<std::string>();
+  p->add_option("--json", *json_path, "Also write the report as JSON to this file (benchmarks/readme_figures.py reads it)");
+  p->callback([options, json_path, &exit_code] {
     const differential::DifferentialReport report = differential::run_differential(*options, std::cerr);
     differential::print_report(report, std::cout);
+    if (!json_path->empty()) {
+      std::ofstream json(*json_path);
+      differential::write_report_json(report, json);
+      if (!json) {
+        std::cerr << "error: cannot write " << *json_path << "\n";
+        exit_code = kExitInputError;
+        return;
+      }
+    }
     exit_code = report.disagreements.empty() ? kExitOk : kExitInvalid;
   });
 }

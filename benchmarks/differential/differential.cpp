@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -10,6 +11,8 @@
 #include <sstream>
 #include <mutex>
 #include <thread>
+
+#include <nlohmann/json.hpp>
 
 #include "benchmarks/differential/shrink.h"
 #include "oracle/judge.h"
@@ -224,6 +227,7 @@ void record(const DifferentialOptions& options, Checked& c, DifferentialReport& 
   ClassCounts& counts = report.by_class[outcome.cls];
   ++counts.tasks;
   counts.non_trivial += outcome.non_trivial ? 1 : 0;
+  counts.seconds += outcome.seconds;
   for (const std::string& f : c.task.features) {
     ++report.by_feature[f].tasks;
     report.by_feature[f].non_trivial += outcome.non_trivial ? 1 : 0;
@@ -262,6 +266,7 @@ DifferentialReport run_differential(const DifferentialOptions& options, std::ost
       Checked c;
       const std::uint64_t seed = options.task_seed ? *options.task_seed : task_seed(options.seed, k);
       c.task = generate_task(seed, options.generator);
+      const Clock::time_point task_began = Clock::now();
       c.outcome = check_task(c.task.domain, c.task.problem, options);
       if (c.outcome.disagreement) {
         Disagreement& d = *c.outcome.disagreement;
@@ -273,6 +278,7 @@ DifferentialReport run_differential(const DifferentialOptions& options, std::ost
         }
         if (options.shrink) d = shrink(d, options);
       }
+      c.outcome.seconds = std::chrono::duration<double>(Clock::now() - task_began).count();
       const std::lock_guard<std::mutex> guard(lock);
       checked.emplace(k, std::move(c));
     }
@@ -286,35 +292,79 @@ DifferentialReport run_differential(const DifferentialOptions& options, std::ost
   return report;
 }
 
+namespace {
+
+// How a report's classes add up: agreement, undecided, misses VAL's order
+// alone explains, disagreements.
+struct Totals {
+  std::uint64_t non_trivial = 0, undecided = 0, disagreements = 0, order_only = 0;
+};
+
+Totals totals_of(const DifferentialReport& r) {
+  static const std::set<std::string> agreeing = {"agree_solved", "agree_solved_late", "planner_only_solved",
+                                                 "agree_unsolvable", "agree_unsolved", "solved_brute_force_cut_short"};
+  Totals t;
+  for (const auto& [cls, c] : r.by_class) {
+    t.non_trivial += c.non_trivial;
+    if (cls == "undecided") t.undecided += c.tasks;
+    else if (cls == "missed_val_order_only") t.order_only += c.tasks;
+    else if (!agreeing.count(cls)) t.disagreements += c.tasks;
+  }
+  return t;
+}
+
+}  // namespace
+
 void print_report(const DifferentialReport& r, std::ostream& out) {
   out << "tasks: " << r.tasks << " in " << r.seconds << " s; " << r.judgements
       << " plans judged by the reference semantics\nbrute force bound: " << r.bound << "\n";
   if (!r.planner_limits.empty()) out << "planner limits: " << r.planner_limits << "\n";
-  std::uint64_t non_trivial = 0, undecided = 0, disagreements = 0, order_only = 0;
-  static const std::set<std::string> agreeing = {"agree_solved", "agree_solved_late", "planner_only_solved", "agree_unsolvable",
-                                                 "agree_unsolved", "solved_brute_force_cut_short"};
-  for (const auto& [cls, c] : r.by_class) {
-    non_trivial += c.non_trivial;
-    if (cls == "undecided") undecided += c.tasks;
-    else if (cls == "missed_val_order_only") order_only += c.tasks;
-    else if (!agreeing.count(cls)) disagreements += c.tasks;
-    out << "  " << cls << ": " << c.tasks << " (" << c.non_trivial << " non-trivial)\n";
-  }
+  const Totals t = totals_of(r);
+  for (const auto& [cls, c] : r.by_class) out << "  " << cls << ": " << c.tasks << " (" << c.non_trivial << " non-trivial)\n";
   auto share = [&](std::uint64_t n) { return r.tasks ? 100.0 * static_cast<double>(n) / static_cast<double>(r.tasks) : 0.0; };
-  out << "undecided: " << undecided << " (" << share(undecided) << " %), never counted as agreement\n";
-  if (order_only > 0) {
-    out << "missed where only VAL's order of claims gives a plan: " << order_only
+  out << "undecided: " << t.undecided << " (" << share(t.undecided) << " %), never counted as agreement\n";
+  if (t.order_only > 0) {
+    out << "missed where only VAL's order of claims gives a plan: " << t.order_only
         << ", neither agreement nor disagreement\n";
   }
-  out << "non-trivial: " << non_trivial << " (" << share(non_trivial) << " %)\n"
-      << "by planted structure (tasks, non-trivial):\n";
+  out << "non-trivial: " << t.non_trivial << " (" << share(t.non_trivial) << " %)\n";
+  out << "seconds by class (one thread's time):";
+  for (const auto& [cls, c] : r.by_class) out << " " << cls << " " << std::llround(c.seconds);
+  out << "\nby planted structure (tasks, non-trivial):\n";
   for (const auto& [feature, c] : r.by_feature) out << "  " << feature << ": " << c.tasks << ", " << c.non_trivial << "\n";
-  out << "disagreements: " << disagreements << "\n";
+  out << "disagreements: " << t.disagreements << "\n";
   for (const Disagreement& d : r.disagreements) {
     out << "\n== task " << d.seed << ": " << d.kind << " (planner: " << d.planner_status << ")\n";
     if (!d.message.empty()) out << d.message << "\n";
     if (!d.plan.empty()) out << "plan:\n" << d.plan;
   }
+}
+
+void write_report_json(const DifferentialReport& r, std::ostream& out) {
+  const Totals t = totals_of(r);
+  nlohmann::json j;
+  j["tasks"] = r.tasks;
+  j["seconds"] = r.seconds;
+  j["judgements"] = r.judgements;
+  j["bound"] = r.bound;
+  j["planner_limits"] = r.planner_limits;
+  j["undecided"] = t.undecided;
+  j["non_trivial"] = t.non_trivial;
+  j["missed_val_order_only"] = t.order_only;
+  j["disagreements"] = t.disagreements;
+  auto counts = [](const std::map<std::string, ClassCounts>& m) {
+    nlohmann::json o = nlohmann::json::object();
+    for (const auto& [name, c] : m) o[name] = {{"tasks", c.tasks}, {"non_trivial", c.non_trivial}, {"seconds", c.seconds}};
+    return o;
+  };
+  j["classes"] = counts(r.by_class);
+  j["features"] = counts(r.by_feature);
+  j["findings"] = nlohmann::json::array();
+  for (const Disagreement& d : r.disagreements) {
+    j["findings"].push_back({{"task_seed", d.seed}, {"kind", d.kind}, {"planner_status", d.planner_status},
+                             {"message", d.message}, {"plan", d.plan}, {"features", d.features}});
+  }
+  out << j.dump(2) << "\n";
 }
 
 }  // namespace alplan::differential

@@ -95,6 +95,7 @@ struct Disagreement {
 
 struct ClassCounts {
   std::uint64_t tasks = 0, non_trivial = 0;
+  double seconds = 0.0;  // spent checking these tasks (planner, brute force, shrinking)
 };
 
 struct DifferentialReport {
@@ -119,6 +120,7 @@ struct TaskOutcome {
   std::uint64_t judgements = 0;
   std::string planner_plan, witness;  // the planner's plan, the brute force's (when there is one)
   std::optional<Disagreement> disagreement;
+  double seconds = 0.0;
 };
 TaskOutcome check_task(const std::string& domain, const std::string& problem, const DifferentialOptions& options);
 
@@ -126,5 +128,11 @@ DifferentialReport run_differential(const DifferentialOptions& options, std::ost
 
 // One line per class and feature, and one paragraph per disagreement.
 void print_report(const DifferentialReport& report, std::ostream& out);
+
+// The same as one JSON object (what benchmarks/readme_figures.py reads):
+// tasks, seconds, judgements, bound, planner_limits, undecided,
+// disagreements (a count), classes and features ({name: {tasks,
+// non_trivial, seconds}}), and findings (each disagreement).
+void write_report_json(const DifferentialReport& report, std::ostream& out);
 
 }  // namespace alplan::differential

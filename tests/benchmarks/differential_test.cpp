@@ -208,6 +208,11 @@ TEST_CASE("a plan VAL accepts only by its order of claims is counted apart, and 
   print_report(report, printed);
   CHECK(printed.str().find("disagreements: 0") != std::string::npos);
   CHECK(printed.str().find("only VAL's order of claims gives a plan: 1") != std::string::npos);
+  std::ostringstream json;
+  write_report_json(report, json);
+  CHECK(json.str().find("\"disagreements\": 0") != std::string::npos);
+  CHECK(json.str().find("\"missed_val_order_only\": 1") != std::string::npos);
+  CHECK(json.str().find("\"missed_val_order_only\": {") != std::string::npos);  // the class, with its counts
 }
 
 TEST_CASE("an invalid plan of the planner is a disagreement the reference semantics names") {
