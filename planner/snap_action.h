@@ -39,9 +39,9 @@ struct Footprint {
   // after their last writer and before later writers, with no gap.
   std::vector<FactId> holds;
   std::vector<NumericVarId> holds_values;
-  // Writes of one polarity only, unconditional (a fact both added and
-  // deleted, or changed by a conditional effect, is in neither): such
-  // writers of one key may share a happening with each other.
+  // Writes of one polarity only (a fact both added and deleted, plainly or
+  // by a conditional effect, is in neither): such writers of one key may
+  // share a happening with each other.
   std::vector<FactId> adds, dels;
   std::vector<NumericVarId> additive_values;  // only increased or decreased
 };

@@ -37,26 +37,29 @@ void effect_footprint(const HappeningEffects& e, Footprint& fp, const std::vecto
   fp.adds.insert(fp.adds.end(), e.add.begin(), e.add.end());
   fp.dels.insert(fp.dels.end(), e.del.begin(), e.del.end());
   numeric(e.numeric, false);
-  std::vector<FactId> conditional_writes;
   for (std::uint32_t k = 0; k < e.conditional.size(); ++k) {
     const ConditionalEffect& c = e.conditional[k];
     if (std::find(skipped.begin(), skipped.end(), k) != skipped.end()) continue;
     condition_reads(c.condition, fp);
     fp.writes.insert(fp.writes.end(), c.add.begin(), c.add.end());
     fp.writes.insert(fp.writes.end(), c.del.begin(), c.del.end());
-    conditional_writes.insert(conditional_writes.end(), c.add.begin(), c.add.end());
-    conditional_writes.insert(conditional_writes.end(), c.del.begin(), c.del.end());
+    // A conditional add is an add whether or not it fires (and nothing
+    // where it does not): it commutes with other adds as a plain one does.
+    // Counting it as neither kept a zero-duration action whose start adds a
+    // fact conditionally and whose end adds it apart from itself, so that
+    // the search proved "no plan exists" where VAL accepts a plan (the
+    // differential tester's task 4294971080).
+    fp.adds.insert(fp.adds.end(), c.add.begin(), c.add.end());
+    fp.dels.insert(fp.dels.end(), c.del.begin(), c.del.end());
     numeric(c.numeric, true);
   }
-  // A key written two ways (or conditionally) is written neither way only.
+  // A key written two ways is written neither way only.
   auto drop = [](std::vector<std::uint32_t>& from, const std::vector<std::uint32_t>& keys) {
     std::erase_if(from, [&](std::uint32_t k) { return std::find(keys.begin(), keys.end(), k) != keys.end(); });
   };
   const std::vector<FactId> adds = fp.adds, dels = fp.dels;
   drop(fp.adds, dels);
-  drop(fp.adds, conditional_writes);
   drop(fp.dels, adds);
-  drop(fp.dels, conditional_writes);
   drop(fp.additive_values, other_values);
 }
 
