@@ -37,6 +37,7 @@ SCATTERS = [("scatter-0", "0"), ("scatter-0.5", "0.5"), ("scatter-1", "1"),
 STABILITY = ["stability-ipc2002-1-5-2026-11-28", "stability-ipc2002-6-10-2026-11-28"]
 MODELS = ["full", "iot", "camera"]
 FUZZ = "fuzz-planner-2000-issue42-2026-12-02"
+FUZZ_SEEDS = ["fuzz-planner-seed1-issue42-2026-12-06", "fuzz-planner-seed2-issue42-2026-12-06"]
 ORACLE_VAL = "oracle-against-val-300-2026-12-02"
 
 
@@ -299,6 +300,8 @@ def oracle_against_val_block(folder=ORACLE_VAL):
 
 BLOCKS = {
     "differential": differential_block,
+    "differential-seed1": lambda: differential_block(FUZZ_SEEDS[0]),
+    "differential-seed2": lambda: differential_block(FUZZ_SEEDS[1]),
     "oracle-against-val": oracle_against_val_block,
     "study-mix": study_mix,
     "study-switch": study_switch,
