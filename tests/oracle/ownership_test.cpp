@@ -34,7 +34,7 @@ oracle::Verdict judge(const std::string& plan, bool symmetric) {
 
 }  // namespace
 
-TEST_CASE("VAL's order of claims decides a shared happening; the symmetric rule refuses it in any order") {
+TEST_CASE("VAL's order of claims decides a shared happening, and the symmetric rule refuses it in any order") {
   // VAL 3c7a1f3: `0: (m)`, `0: (n)` valid; `0: (n)`, `0: (m)` a mutex (n's
   // delete owns p when m's condition reads it).
   CHECK(judge("0: (m)\n0: (n)\n", false).valid());
