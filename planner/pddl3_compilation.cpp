@@ -273,13 +273,10 @@ class Compiler {
   // epsilon before) therefore sees what the happenings up to t made, and
   // nothing later: φ made true at t itself counts, as in VAL. With
   // continuous change a value read epsilon after t is not the value at t:
-  // there the witness reads by t, and a plan meeting φ only in the last
-  // epsilon is lost (an exhausted search there is no proof anyway).
-  double witness_deadline(double deadline) const {
-    const bool continuous = std::any_of(source_.actions.begin(), source_.actions.end(),
-                                        [](const GroundAction& a) { return !a.continuous.empty(); });
-    return continuous ? deadline : deadline + 2 * epsilon_;
-  }
+  // there the literal closes at t, so φ must be made by t - 2 epsilon, and a
+  // plan meeting it later is lost (an exhausted search there is no proof
+  // anyway).
+  double witness_deadline(double deadline) const { return continuous_ ? deadline : deadline + 2 * epsilon_; }
 
   void witness(std::size_t k, const ConditionSet& requirement, std::optional<double> deadline) {
     const std::string id = std::to_string(k);
@@ -339,6 +336,8 @@ class Compiler {
   const PreferenceSelection& selection_;
   const TrajectorySoFar& so_far_;
   double epsilon_;
+  bool continuous_ = std::any_of(source_.actions.begin(), source_.actions.end(),
+                                 [](const GroundAction& a) { return !a.continuous.empty(); });
   const std::vector<FactId>& start_facts_;
   std::shared_ptr<NormalizedTask> lifted_;
   std::shared_ptr<GroundTask> out_;

@@ -17,7 +17,7 @@
 // - (within t φ): the same, the witness also needing `pddl3-open-K`, which
 //   a timed literal deletes at t + 2 epsilon: a witness by t + epsilon,
 //   reading φ as the happenings up to t left it (without continuous change;
-//   with it, the literal is at t and φ must hold by t - epsilon).
+//   with it, the literal is at t and φ must be made by t - 2 epsilon).
 // - (always φ): kept as a hard constraint of the compiled task, which the
 //   successor generator checks in every state it makes (successor_generator.h).
 // - a precondition preference: its condition joins the action's condition.
@@ -43,7 +43,7 @@
 // writes what φ reads, no later than the deadline), and each such plan of
 // the original becomes one of the compiled task by adding a witness where φ
 // holds, epsilon after its last writer (with continuous change, only where φ
-// holds epsilon before the deadline). The
+// is made 2 epsilon before the deadline). The
 // `always` check is stricter than VAL where two snaps share a time (VAL sees
 // one happening, the search the state between them), so a search exhausted
 // under it proves nothing (search_pipeline.h, proof_limits).

@@ -86,6 +86,49 @@ std::optional<std::string> judge_plan(const oracle::LoadedTask& task, const std:
   return std::nullopt;
 }
 
+// Runs the planner with `options`, records its answer in `d` and
+// `outcome`, and judges its plan: nothing when the answer stands, else the
+// kind of disagreement (a crash, an internal error, a refusal, a plan the
+// reference semantics rejects or cannot judge).
+std::optional<std::string> plan_and_judge(const oracle::LoadedTask& task, const DifferentialOptions& options,
+                                          PlannerOutcome& planner, Disagreement& d, TaskOutcome& outcome) {
+  try {
+    planner = run_planner(task, options);
+  } catch (const std::exception& e) {
+    d.message = e.what();
+    return "crash";
+  }
+  d.planner_status = planner.status;
+  d.message = planner.message;
+  outcome.planner_plan = planner.plan;
+  if (planner.status == "internal_error" || planner.status == "unsupported") return planner.status;
+  if (planner.status == "solved") return judge_plan(task, planner.plan, options, d);
+  return std::nullopt;
+}
+
+// The options of the planner's second run: the generous time, and nodes
+// in the same proportion.
+DifferentialOptions generous(const DifferentialOptions& options) {
+  DifferentialOptions g = options;
+  g.planner_time_limit = options.retry_time_limit;
+  const double factor = options.retry_time_limit / options.planner_time_limit;
+  g.planner_node_limit = static_cast<std::size_t>(static_cast<double>(options.planner_node_limit) * factor);
+  return g;
+}
+
+// Whether every plan the brute force finds in its bound passes VAL only by
+// the order in which it claims a happening's facts (oracle/ownership.h):
+// the symmetric rule, which the planner's footprints follow, refuses them
+// all and its search was not cut short.
+bool only_val_order_gives_a_plan(const oracle::LoadedTask& task, const DifferentialOptions& options,
+                                 std::uint64_t& judgements) {
+  BruteForceOptions symmetric = options.brute_force;
+  symmetric.symmetric_mutex = true;
+  const BruteForceResult strict = brute_force_plan(task.domain, task.problem, symmetric);
+  judgements += strict.judgements;
+  return !strict.plan && !strict.cut_short;
+}
+
 TaskOutcome disagree(TaskOutcome outcome, Disagreement d, const std::string& kind) {
   d.kind = kind;
   outcome.cls = kind;
@@ -106,20 +149,8 @@ TaskOutcome check_task(const std::string& domain, const std::string& problem, co
     return disagree(outcome, d, "generator_error");
   }
   PlannerOutcome planner;
-  try {
-    planner = run_planner(task, options);
-  } catch (const std::exception& e) {
-    d.message = e.what();
-    return disagree(outcome, d, "crash");
-  }
-  d.planner_status = planner.status;
-  d.message = planner.message;
-  outcome.planner_plan = planner.plan;
-  if (planner.status == "internal_error" || planner.status == "unsupported") return disagree(outcome, d, planner.status);
-  if (planner.status == "solved") {
-    if (std::optional<std::string> kind = judge_plan(task, planner.plan, options, d)) {
-      return disagree(outcome, d, *kind);
-    }
+  if (std::optional<std::string> kind = plan_and_judge(task, options, planner, d, outcome)) {
+    return disagree(outcome, d, *kind);
   }
   const BruteForceResult brute = brute_force_plan(task.domain, task.problem, options.brute_force);
   outcome.judgements += brute.judgements;
@@ -138,41 +169,20 @@ TaskOutcome check_task(const std::string& domain, const std::string& problem, co
     if (planner.status == "limit_reached" && options.retry_time_limit > options.planner_time_limit) {
       // A plan exists: the planner gets the generous limit before a miss is
       // called (the first limit keeps the tasks without plans cheap).
-      DifferentialOptions generous = options;
-      generous.planner_time_limit = options.retry_time_limit;
-      const double factor = options.retry_time_limit / options.planner_time_limit;
-      generous.planner_node_limit = static_cast<std::size_t>(static_cast<double>(options.planner_node_limit) * factor);
-      try {
-        planner = run_planner(task, generous);
-      } catch (const std::exception& e) {
-        d.message = e.what();
-        return disagree(outcome, d, "crash");
+      if (std::optional<std::string> kind = plan_and_judge(task, generous(options), planner, d, outcome)) {
+        return disagree(outcome, d, *kind);
       }
-      d.planner_status = planner.status;
-      d.message = planner.message;
-      outcome.planner_plan = planner.plan;
       if (planner.status == "solved") {
-        if (std::optional<std::string> kind = judge_plan(task, planner.plan, options, d)) {
-          return disagree(outcome, d, *kind);
-        }
         outcome.cls = "agree_solved_late";
         return outcome;
       }
     }
     d.plan = plan_text(*brute.plan);
-    if (planner.status != "unsolvable") {
-      // Plans VAL accepts only because of the order in which it claims a
-      // happening's facts (oracle/ownership.h): where the symmetric rule,
-      // which the planner's footprints follow, refuses every plan in the
-      // bound, the miss is counted apart, never as agreement.
-      BruteForceOptions symmetric = options.brute_force;
-      symmetric.symmetric_mutex = true;
-      const BruteForceResult strict = brute_force_plan(task.domain, task.problem, symmetric);
-      outcome.judgements += strict.judgements;
-      if (!strict.plan && !strict.cut_short) {
-        outcome.cls = "missed_val_order_only";
-        return outcome;
-      }
+    // Plans VAL accepts only by its order of claims: counted apart, never
+    // as agreement.
+    if (planner.status != "unsolvable" && only_val_order_gives_a_plan(task, options, outcome.judgements)) {
+      outcome.cls = "missed_val_order_only";
+      return outcome;
     }
     return disagree(outcome, d, planner.status == "unsolvable" ? "false_unsolvable" : "missed_plan");
   }

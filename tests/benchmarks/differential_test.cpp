@@ -28,6 +28,13 @@ oracle::LoadedTask parse(const std::string& domain, const std::string& problem) 
   return task;
 }
 
+// A run's report as `alplan fuzz planner` prints it.
+std::string printed(const DifferentialReport& report) {
+  std::ostringstream out;
+  print_report(report, out);
+  return out.str();
+}
+
 BruteForceResult brute(const std::string& domain, const std::string& problem, BruteForceOptions options = {}) {
   const oracle::LoadedTask task = parse(domain, problem);
   return brute_force_plan(task.domain, task.problem, options);
@@ -151,9 +158,7 @@ TEST_CASE("a task the planner cannot finish in its time is a missed plan, and sh
     CHECK_FALSE(d.plan.empty());
     CHECK_FALSE(d.domain.empty());
   }
-  std::ostringstream printed;
-  print_report(report, printed);
-  CHECK(printed.str().find("missed_plan") != std::string::npos);
+  CHECK(printed(report).find("missed_plan") != std::string::npos);
   // Shrinking keeps the disagreement and drops what it does not need.
   const Disagreement& found = report.disagreements.front();
   const Disagreement shrunk = shrink(found, options);
@@ -176,13 +181,12 @@ TEST_CASE("a plan the planner finds only within the generous limit is counted ap
   options.shrink = false;
   std::ostringstream progress;
   const DifferentialReport report = run_differential(options, progress);
-  std::ostringstream printed;
-  print_report(report, printed);
-  INFO(printed.str());
+  const std::string text = printed(report);
+  INFO(text);
   CHECK(report.disagreements.empty());
   CHECK(report.count("agree_solved_late") > 0);
   CHECK(report.count("agree_solved") == 0);
-  CHECK(printed.str().find("a second run of 20 s before the plan is called missed") != std::string::npos);
+  CHECK(text.find("a second run of 20 s before the plan is called missed") != std::string::npos);
 }
 
 TEST_CASE("a plan VAL accepts only by its order of claims is counted apart, and the planner claims no proof") {
@@ -204,10 +208,9 @@ TEST_CASE("a plan VAL accepts only by its order of claims is counted apart, and 
   DifferentialReport report;
   report.tasks = 1;
   report.by_class["missed_val_order_only"].tasks = 1;
-  std::ostringstream printed;
-  print_report(report, printed);
-  CHECK(printed.str().find("disagreements: 0") != std::string::npos);
-  CHECK(printed.str().find("only VAL's order of claims gives a plan: 1") != std::string::npos);
+  const std::string text = printed(report);
+  CHECK(text.find("disagreements: 0") != std::string::npos);
+  CHECK(text.find("only VAL's order of claims gives a plan: 1") != std::string::npos);
   std::ostringstream json;
   write_report_json(report, json);
   CHECK(json.str().find("\"disagreements\": 0") != std::string::npos);
@@ -237,9 +240,7 @@ TEST_CASE("a short differential run finds no disagreement, and counts every task
   options.seed = 100;
   std::ostringstream progress;
   const DifferentialReport report = run_differential(options, progress);
-  std::ostringstream printed;
-  print_report(report, printed);
-  INFO(printed.str());
+  INFO(printed(report));
   CHECK(report.disagreements.empty());
   std::uint64_t counted = 0;
   for (const auto& [cls, c] : report.by_class) counted += c.tasks;
