@@ -42,8 +42,9 @@ struct StepRecord {
   // keeps the record trivially copyable: partial plans copy their steps for
   // every child).
   const ContinuousStep* continuous = nullptr;
-  // A step in the happening of this earlier step (a start whose invariant
-  // it gives): the same time, and not interfering with it (kNoId: free).
+  // A step in the happening of this earlier step (the snap that opened a
+  // happening a search state holds open: successor_generator.h): the same
+  // time, and not interfering with it (kNoId: free).
   std::uint32_t simultaneous_with = kNoId;
 };
 

@@ -363,22 +363,40 @@ std::string order_dependent_mutex_limit(const GroundTask& task) {
   return "";
 }
 
-// Invariants given in their start's own happening: the complete search lets
-// a start wait for another action's start to give a false fact of its
-// over-all condition (SuccessorGenerator::settle_invariants), not a numeric
-// one, and not another run of the same action: two runs of one action
-// started together whose increases meet its numeric invariant only jointly
-// are never tried (the differential tester's task 8589941172). Nor does it
-// model VAL's order of claims inside a zero-duration action's happening
-// (its start is judged before its end, so a start that reads and then
-// itself increases a value lets its end increase it too: task 8589940174);
-// the footprints keep such a start and end apart.
+// Invariants inside one happening. The complete search searches a VAL
+// happening as snaps in some order (SuccessorGenerator): members' own
+// invariants are judged when the happening closes, but those of actions
+// running since before must hold after every member. Where each value such
+// an invariant reads only ever moves one way (constant increases only, or
+// constant decreases only), an invariant broken by some members stays
+// broken after all of them, so nothing is lost; where a value may move both
+// ways (or is assigned or scaled), one member may break it and another
+// restore it, an order the search does not try. Nor does it model VAL's
+// order of claims inside a zero-duration action's happening (its start is
+// judged before its end, so a start that reads and then itself increases a
+// value lets its end increase it too: task 8589940174); the footprints keep
+// such a start and end apart.
 std::string unsearched_happenings_limit(const GroundTask& task) {
-  std::vector<bool> written_at_once(task.numeric.size(), false);
+  // Per variable: bit 1, some snap raises it; bit 2, lowers it; bit 4,
+  // changes it some other way (assign, scale, an amount read from the state).
+  std::vector<unsigned> moves(task.numeric.size(), 0);
+  auto note = [&](const NumericAssignment& n) {
+    using Op = pddl::AssignOperator;
+    const bool constant = n.value.kind == GroundExpression::Kind::Constant;
+    const bool up = constant && ((n.assign == Op::Increase && n.value.value > 0) ||
+                                 (n.assign == Op::Decrease && n.value.value < 0));
+    const bool down = constant && ((n.assign == Op::Decrease && n.value.value > 0) ||
+                                   (n.assign == Op::Increase && n.value.value < 0));
+    if (constant && n.value.value == 0 && (n.assign == Op::Increase || n.assign == Op::Decrease)) return;
+    moves[n.variable] |= up ? 1u : down ? 2u : 4u;
+  };
   for (const GroundAction& a : task.actions) {
-    for (const NumericAssignment& n : a.start.numeric) written_at_once[n.variable] = true;
-    for (const ConditionalEffect& c : a.start.conditional) {
-      for (const NumericAssignment& n : c.numeric) written_at_once[n.variable] = true;
+    for (const HappeningEffects* e : {&a.start, &a.end}) {
+      if (e == &a.end && !a.durative) continue;
+      for (const NumericAssignment& n : e->numeric) note(n);
+      for (const ConditionalEffect& c : e->conditional) {
+        for (const NumericAssignment& n : c.numeric) note(n);
+      }
     }
   }
   for (const GroundAction& a : task.actions) {
@@ -388,9 +406,12 @@ std::string unsearched_happenings_limit(const GroundTask& task) {
       append_variables(c.left, vars);
       append_variables(c.right, vars);
     }
-    if (std::any_of(vars.begin(), vars.end(), [&](NumericVarId v) { return written_at_once[v]; })) {
-      return "the numeric over-all condition of " + task.action_name(a) +
-             " may be met only by starts in its own happening, which the search does not try";
+    for (NumericVarId v : vars) {
+      if (moves[v] != 0 && moves[v] != 1 && moves[v] != 2) {
+        return "the numeric over-all condition of " + task.action_name(a) + " reads " + task.variable_name(v) +
+               ", which snaps change both ways: one member of a happening may break it and another restore it, "
+               "an order the search does not try";
+      }
     }
     if (always_zero_duration(a) && !a.start.numeric.empty() && !a.end.numeric.empty()) {
       return "the start and end of " + task.action_name(a) +

@@ -98,6 +98,7 @@ std::optional<Child> SearchSpace::schedule(NodeId id, const PartialPlan& plan, S
   if (s.step.snap.kind == SnapKind::Start) {
     s.state.set_start_step(s.step.snap.index, static_cast<std::uint32_t>(extended.size() - 1));
   }
+  s.state.set_step(static_cast<std::uint32_t>(extended.size() - 1));
   extended.set_changing_values(s.state);
   Child child{SearchNode{}, std::move(extended)};
   child.node.parent = id;
@@ -132,6 +133,19 @@ bool SearchSpace::evaluate_node(SearchNode& node, const PartialPlan& plan, Heuri
     node.evaluated = true;
     ++stats.dead_ends;
     return false;
+  }
+  if (node.state.ends_open() && node.parent < nodes_.size()) {
+    // A state inside a happening some end opened: running actions whose
+    // invariant it broke must end in it (successor_generator.h), which no
+    // relaxation knows (their ends need the invariant): the parent's
+    // estimate stands for it, never a dead end.
+    const SearchNode& parent = nodes_[node.parent];
+    node.h = parent.h;
+    node.helpful.clear();
+    node.evaluated = true;
+    node.makespan_bound = std::max(node.makespan, parent.makespan_bound);
+    node.relaxed_cost = parent.relaxed_cost;
+    return true;
   }
   HeuristicValue value = heuristic.evaluate(node.state, plan);
   if (value.dead_end() && options_.confirm_dead_ends) {

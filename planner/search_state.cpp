@@ -23,7 +23,8 @@ bool SearchState::is_running(ActionId action) const {
 }
 
 std::size_t SearchState::hash() const {
-  std::uint64_t h = 0x9E3779B97F4A7C15ull ^ next_til_ ^ (std::uint64_t{pending_} << 32);
+  std::uint64_t h = 0x9E3779B97F4A7C15ull ^ next_til_ ^ (std::uint64_t{open_from_ != kNoId} << 32) ^
+                    (std::uint64_t{ends_open_} << 33);
   auto mix = [&](std::uint64_t x) {
     h ^= x + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
   };
@@ -37,7 +38,8 @@ std::size_t SearchState::hash() const {
 }
 
 bool SearchState::same_as(const SearchState& other) const {
-  if (next_til_ != other.next_til_ || pending_ != other.pending_ || bits_ != other.bits_ ||
+  if (next_til_ != other.next_til_ || (open_from_ == kNoId) != (other.open_from_ == kNoId) ||
+      ends_open_ != other.ends_open_ || bits_ != other.bits_ ||
       running_.size() != other.running_.size()) {
     return false;
   }
@@ -45,6 +47,7 @@ bool SearchState::same_as(const SearchState& other) const {
     const RunningAction& a = running_[i];
     const RunningAction& b = other.running_[i];
     if (a.action != b.action || a.min_duration != b.min_duration || a.max_duration != b.max_duration) return false;
+    if (joined_open_happening(a) != other.joined_open_happening(b)) return false;
   }
   // NaN (undefined) equals NaN here: compare bit patterns.
   // memcmp may not be given the null data() of an empty vector, even for 0 bytes.

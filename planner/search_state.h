@@ -52,13 +52,30 @@ class SearchState {
   std::uint32_t next_timed_literal() const { return next_til_; }
   void set_next_timed_literal(std::uint32_t next) { next_til_ = next; }
 
-  // A running action just started whose over-all condition does not hold
-  // yet: starts and instantaneous actions in its own happening may still
-  // give it (VAL checks an invariant after its start's happening), and
-  // until one does, nothing else happens (successor_generator.h). kNoId:
-  // none.
-  ActionId pending() const { return pending_; }
-  void set_pending(ActionId action) { pending_ = action; }
+  // An open happening (successor_generator.h): the plan step that opened
+  // it, kStepNotYetKnown until the search schedules that step, kNoId when
+  // none is open. Either a start whose over-all condition does not hold yet
+  // opened it (starts and instantaneous actions may join and give it, as
+  // VAL checks invariants after the whole happening), or an end that broke
+  // the invariant of running actions (only their ends may join, VAL checks
+  // no invariant at its action's end). `ends_open` says which.
+  std::uint32_t open_happening() const { return open_from_; }
+  bool ends_open() const { return ends_open_; }
+  void open_happening(std::uint32_t step, bool by_end) {
+    open_from_ = step;
+    ends_open_ = by_end;
+  }
+  void close_happening() { open_happening(kNoId, false); }
+  // The plan step that made this state, once scheduled: it names the open
+  // happening this state's snap opened.
+  void set_step(std::uint32_t step) {
+    if (open_from_ == kStepNotYetKnown) open_from_ = step;
+  }
+  // Whether a running action started in the open happening (its invariant
+  // is judged when the happening closes).
+  bool joined_open_happening(const RunningAction& r) const {
+    return open_from_ != kNoId && r.start_step != kNoId && r.start_step >= open_from_;
+  }
 
   std::size_t hash() const;
   bool same_as(const SearchState& other) const;
@@ -70,7 +87,8 @@ class SearchState {
   // at once) in the order they started.
   std::vector<RunningAction> running_;
   std::uint32_t next_til_ = 0;
-  ActionId pending_ = kNoId;
+  std::uint32_t open_from_ = kNoId;
+  bool ends_open_ = false;
 };
 
 struct SearchStateHash {

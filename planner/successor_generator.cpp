@@ -125,8 +125,17 @@ SuccessorGenerator::SuccessorGenerator(const TaskIndex& index, bool self_overlap
     if (g.op == ModalOperator::Always && !g.preference && !g.requirement.empty()) always_.push_back(&g.requirement);
   }
   givers_at_start_.assign(index.task().facts.size(), {});
+  takers_at_start_.assign(index.task().facts.size(), {});
+  changers_at_start_.assign(index.task().numeric.size(), {});
   for (ActionId a = 0; a < actions.size(); ++a) {
-    for (FactId f : actions[a].start.add) givers_at_start_[f].push_back(a);
+    auto note = [&](const std::vector<FactId>& add, const std::vector<FactId>& del,
+                    const std::vector<NumericAssignment>& numeric) {
+      for (FactId f : add) givers_at_start_[f].push_back(a);
+      for (FactId f : del) takers_at_start_[f].push_back(a);
+      for (const NumericAssignment& n : numeric) changers_at_start_[n.variable].push_back(a);
+    };
+    note(actions[a].start.add, actions[a].start.del, actions[a].start.numeric);
+    for (const ConditionalEffect& c : actions[a].start.conditional) note(c.add, c.del, c.numeric);
   }
 }
 
@@ -139,13 +148,17 @@ bool SuccessorGenerator::attach_continuous(const GroundAction& action, const Sea
   return true;
 }
 
-bool SuccessorGenerator::invariants_hold(const SearchState& state, ActionId except) const {
+bool SuccessorGenerator::invariants_hold(const SearchState& state, bool except_open) const {
   for (const RunningAction& r : state.running()) {
     // A zero-duration action's invariant spans an empty interval: VAL never
     // checks it, and nothing running alongside can break it.
-    if (r.max_duration == 0.0 || r.action == except) continue;
+    if (r.max_duration == 0.0 || (except_open && state.joined_open_happening(r))) continue;
     if (!condition_holds(index_.task().actions[r.action].over_all, state, r.min_duration)) return false;
   }
+  return always_hold(state);
+}
+
+bool SuccessorGenerator::always_hold(const SearchState& state) const {
   for (const ConditionSet* always : always_) {
     if (!condition_holds(*always, state, std::nan(""))) return false;
   }
@@ -153,41 +166,56 @@ bool SuccessorGenerator::invariants_hold(const SearchState& state, ActionId exce
 }
 
 bool SuccessorGenerator::settle_invariants(const SearchState& before, ActionId started, Successor& s) const {
-  const ActionId pending = before.pending();
-  if (pending != kNoId) {
-    // In the pending start's happening: every other invariant must hold.
-    for (const RunningAction& r : before.running()) {
-      if (r.action == pending && r.start_step != kStepNotYetKnown) s.step.simultaneous_with = r.start_step;
-    }
-    if (!invariants_hold(s.state, pending)) return false;
-    const GroundAction& waiting = index_.task().actions[pending];
-    if (condition_holds(waiting.over_all, s.state, std::nan(""))) s.state.set_pending(kNoId);
+  if (before.open_happening() != kNoId) {
+    // A member of the open happening: those outside it keep their
+    // invariants; the happening closes once every invariant holds.
+    s.step.simultaneous_with = before.open_happening();
+    if (!invariants_hold(s.state, true)) return false;
+    if (invariants_hold(s.state)) s.state.close_happening();
     return true;
   }
   if (invariants_hold(s.state)) return true;
-  if (!pending_invariants_ || started == kNoId || continuous_ || !invariants_hold(s.state, started)) return false;
-  // Only the new start's invariant fails: pending, if each false fact has
-  // a start (or instantaneous action) that can join the happening to give
-  // it. Members of one happening do not interfere, so such a giver's
-  // condition holds in the state before the happening, which this checks.
-  const GroundAction& action = index_.task().actions[started];
-  bool supportable = false;
-  const std::vector<FactId>& deleted = action.start.del;
-  for (FactId f : action.over_all.positive) {
-    if (s.state.fact(f)) continue;
-    // Its own start deletes it: another member adding it is a mutex.
-    if (std::find(deleted.begin(), deleted.end(), f) != deleted.end()) return false;
-    const std::vector<ActionId>& givers = givers_at_start_[f];
-    if (std::none_of(givers.begin(), givers.end(), [&](ActionId g) {
-          return g != started && condition_holds(index_.task().actions[g].at_start, before, std::nan(""));
-        })) {
-      return false;
-    }
-    supportable = true;
-  }
-  if (!supportable) return false;
-  s.state.set_pending(started);
+  if (!pending_invariants_ || started == kNoId || continuous_) return false;
+  s.state.open_happening(kStepNotYetKnown, false);
+  if (!invariants_hold(s.state, true) || !may_be_given(started, before, s.state)) return false;
   return true;
+}
+
+bool SuccessorGenerator::may_be_given(ActionId started, const SearchState& before, const SearchState& after) const {
+  // Each part of the invariant that fails needs a start or instantaneous
+  // action able to join (its condition holds in the state before the
+  // happening, as members of one happening do not interfere) and to change
+  // what that part reads. Another run of the started action counts where
+  // runs may overlap.
+  const GroundAction& action = index_.task().actions[started];
+  auto can_join = [&](const std::vector<ActionId>& candidates) {
+    return std::any_of(candidates.begin(), candidates.end(), [&](ActionId g) {
+      return (g != started || self_overlap_) && condition_holds(index_.task().actions[g].at_start, before, std::nan(""));
+    });
+  };
+  auto in = [](const std::vector<FactId>& v, FactId f) { return std::find(v.begin(), v.end(), f) != v.end(); };
+  for (FactId f : action.over_all.positive) {
+    // Its own start deleting it: another member adding it is a mutex.
+    if (!after.fact(f) && (in(action.start.del, f) || !can_join(givers_at_start_[f]))) return false;
+  }
+  for (FactId f : action.over_all.negative) {
+    if (after.fact(f) && (in(action.start.add, f) || !can_join(takers_at_start_[f]))) return false;
+  }
+  if (action.over_all.numeric.empty() && action.over_all.complex.empty()) return true;
+  ConditionSet rest;
+  rest.numeric = action.over_all.numeric;
+  rest.complex = action.over_all.complex;
+  double duration = std::nan("");
+  for (const RunningAction& r : after.running()) {
+    if (r.action == started && r.start_step == kStepNotYetKnown) duration = r.min_duration;
+  }
+  if (condition_holds(rest, after, duration)) return true;
+  std::vector<FactId> facts;
+  std::vector<NumericVarId> variables;
+  append_reads(rest, facts, variables);
+  return std::any_of(variables.begin(), variables.end(), [&](NumericVarId v) { return can_join(changers_at_start_[v]); }) ||
+         std::any_of(facts.begin(), facts.end(),
+                     [&](FactId f) { return can_join(givers_at_start_[f]) || can_join(takers_at_start_[f]); });
 }
 
 void SuccessorGenerator::add_end(const SearchState& state, std::size_t running_index,
@@ -215,7 +243,15 @@ void SuccessorGenerator::add_end(const SearchState& state, std::size_t running_i
   const TaskIndex::CrossConditionals* cross = running.max_duration == 0.0 ? index_.cross_conditionals(running.action) : nullptr;
   if (!apply_effects(action.end, state, context.duration, s.state, cross ? cross->end : std::vector<std::uint32_t>{}))
     return;
-  if (!invariants_hold(s.state)) return;
+  if (state.open_happening() != kNoId) s.step.simultaneous_with = state.open_happening();
+  if (invariants_hold(s.state)) {
+    s.state.close_happening();
+  } else {
+    // Invariants this end broke: their actions may still end in its
+    // happening (ends_broken_by_end), where VAL checks none of them.
+    if (!pending_invariants_ || continuous_ || !always_hold(s.state)) return;
+    if (state.open_happening() == kNoId) s.state.open_happening(kStepNotYetKnown, true);
+  }
   out.push_back(std::move(s));
 }
 
@@ -290,8 +326,19 @@ void SuccessorGenerator::add_action(const SearchState& state, ActionId id, std::
 }
 
 void SuccessorGenerator::generate(const SearchState& state, std::vector<Successor>& out) const {
-  // A pending invariant: only starts and instantaneous actions, in its happening.
-  if (state.pending() == kNoId) {
+  if (state.ends_open()) {
+    // Only the ends of the actions whose invariant an end of this happening broke.
+    for (std::size_t r = 0; r < state.running().size(); ++r) {
+      const RunningAction& run = state.running()[r];
+      if (run.max_duration > 0.0 &&
+          !condition_holds(index_.task().actions[run.action].over_all, state, run.min_duration)) {
+        add_end(state, r, out);
+      }
+    }
+    return;
+  }
+  // An open happening: only starts and instantaneous actions may join it.
+  if (state.open_happening() == kNoId) {
     for (std::size_t r = 0; r < state.running().size(); ++r) add_end(state, r, out);
     add_timed_literal(state, out);
   }

@@ -12,10 +12,15 @@
 //   raised by two overlapping runs of one action). Actions with continuous
 //   effects never overlap themselves (their schedule tracks one run each);
 // - no state breaks a hard PDDL 3 `always` constraint;
-// - with `pending_invariants` (a search that must not miss a plan), a start
-//   whose invariant fails may wait for a start or instantaneous action of
-//   its own happening to give it, as VAL checks invariants after the
-//   happening; by default, as POPF, it must hold right after the start.
+// - with `pending_invariants` (a search that must not miss a plan), VAL's
+//   happenings are searched as one: a start whose invariant fails opens a
+//   happening that other starts and instantaneous actions join until every
+//   invariant holds (VAL checks invariants after the happening: two runs of
+//   one action whose decreases meet its `(< (x) 0)` only jointly), and an
+//   end that breaks running actions' invariants opens one that only their
+//   ends join (VAL checks no invariant at its action's end: two actions
+//   each deleting at its end what the other needs over all, ending
+//   together). By default, as POPF, every invariant holds after each snap.
 // Conditions are evaluated exactly (no slack), so plans hold under VAL's
 // slightly more lenient comparisons too.
 #pragma once
@@ -56,21 +61,26 @@ class SuccessorGenerator {
   // Whether every running action's over-all condition holds, and every
   // hard PDDL 3 `always` constraint (pddl3_compilation.h): a state that
   // breaks one is in no valid plan, as VAL observes each happening's state.
-  bool invariants_hold(const SearchState& state) const { return invariants_hold(state, kNoId); }
+  bool invariants_hold(const SearchState& state) const { return invariants_hold(state, false); }
 
   // A start whose invariant fails may still be applied when another start
-  // or instantaneous action can give it in the same happening: the state is
-  // then `pending` (search_state.h), and its successors are only such
-  // snaps, each at the pending start's time, until the invariant holds.
-  // Two actions holding up each other's invariants start together so.
+  // or instantaneous action can give it in the same happening: the state
+  // then has an open happening (search_state.h), and its successors are
+  // only such snaps, each simultaneous with the opening one, until every
+  // invariant holds. An end breaking invariants opens one for their ends.
 
  private:
-  bool invariants_hold(const SearchState& state, ActionId except) const;
-  // Whether the state after a new snap may stand: every invariant holds (the
-  // pending one, if any, may still fail; then it stays pending), or only the
-  // new start's fails and a start could give it. Sets the pending action
-  // and the step's happening.
+  // `except_open`: the invariants of actions started in the open happening
+  // are not asked (yet).
+  bool invariants_hold(const SearchState& state, bool except_open) const;
+  bool always_hold(const SearchState& state) const;
+  // Whether the state after a new snap may stand: every invariant holds, or
+  // the snap joins (or, as a start whose invariant fails and may be given,
+  // opens) a happening. Sets the step's happening.
   bool settle_invariants(const SearchState& before, ActionId started, Successor& s) const;
+  // Whether every failing part of a just started action's invariant may be
+  // given by a start or instantaneous action joining its happening.
+  bool may_be_given(ActionId started, const SearchState& before, const SearchState& after) const;
   void add_end(const SearchState& state, std::size_t running_index, std::vector<Successor>& out) const;
   // A zero-duration start is refused where a conditional effect of the
   // action whose condition reads what its other snap writes holds in the
@@ -99,8 +109,11 @@ class SuccessorGenerator {
   // did not reduce to true (storage's compatible pairs, for one), checked in
   // every state made.
   std::vector<const ConditionSet*> always_;
-  // By fact: the starts and instantaneous actions that add it unconditionally.
+  // By fact: the starts and instantaneous actions that add it (also under a
+  // condition), that delete it; by numeric variable, that change it.
   std::vector<std::vector<ActionId>> givers_at_start_;
+  std::vector<std::vector<ActionId>> takers_at_start_;
+  std::vector<std::vector<ActionId>> changers_at_start_;
   // The continuous parts of the steps generated so far, which the steps
   // point to. Only grows, and only with continuous change; generating is
   // otherwise free of side effects.

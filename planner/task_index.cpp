@@ -268,28 +268,6 @@ HappeningEffects without(const HappeningEffects& effects, const std::vector<std:
   return kept;
 }
 
-// The conditional effects of one snap whose condition reads (widened as the
-// footprints are: derived facts, constraints) what the other snap writes
-// (TaskIndex::CrossConditionals), or nothing when there are none.
-template <typename Widen>
-std::optional<TaskIndex::CrossConditionals> cross_conditionals_of(const GroundAction& action, const Footprint& start,
-                                                                   const Footprint& end, const Widen& widen) {
-  auto reading = [&](const HappeningEffects& effects, const Footprint& other) {
-    std::vector<std::uint32_t> out;
-    for (std::uint32_t k = 0; k < effects.conditional.size(); ++k) {
-      Footprint read;
-      condition_reads(effects.conditional[k].condition, read);
-      finish(read);
-      widen(read, effects.conditional[k].condition, HappeningEffects{});
-      if (intersect(read.reads, other.writes) || intersect(read.reads_values, other.writes_values)) out.push_back(k);
-    }
-    return out;
-  };
-  TaskIndex::CrossConditionals cross{reading(action.start, end), reading(action.end, start), {}, {}};
-  if (cross.start.empty() && cross.end.empty()) return std::nullopt;
-  return cross;
-}
-
 // Whether an event with these effects adds `fact` after it has already
 // added or deleted it, in the order VAL constructs effects (adds, deletes,
 // then each conditional effect's adds and deletes), taking every
@@ -318,6 +296,38 @@ bool must_be_alone(const HappeningEffects& e, const Footprint& fp) {
   return std::any_of(e.conditional.begin(), e.conditional.end(), [&](const ConditionalEffect& c) {
     return std::any_of(c.add.begin(), c.add.end(), read_and_added_again);
   });
+}
+
+// The conditional effects of one snap whose condition reads (widened as the
+// footprints are: derived facts, constraints) what the other snap writes,
+// or that add again a fact the snap reads (must_be_alone: with its own
+// start or end beside it, a zero-duration snap is never alone, so the
+// search requires the condition false instead), as
+// TaskIndex::CrossConditionals; nothing when there are none.
+template <typename Widen>
+std::optional<TaskIndex::CrossConditionals> cross_conditionals_of(const GroundAction& action, const Footprint& start,
+                                                                   const Footprint& end, const Widen& widen) {
+  auto reading = [&](const HappeningEffects& effects, const Footprint& other) {
+    std::vector<std::uint32_t> out;
+    for (std::uint32_t k = 0; k < effects.conditional.size(); ++k) {
+      Footprint read;
+      condition_reads(effects.conditional[k].condition, read);
+      finish(read);
+      widen(read, effects.conditional[k].condition, HappeningEffects{});
+      const Footprint& own = &other == &end ? start : end;
+      const ConditionalEffect& c = effects.conditional[k];
+      const bool adds_again = std::any_of(c.add.begin(), c.add.end(), [&](FactId p) {
+        return std::binary_search(own.reads.begin(), own.reads.end(), p) && may_add_again(effects, p);
+      });
+      if (adds_again || intersect(read.reads, other.writes) || intersect(read.reads_values, other.writes_values)) {
+        out.push_back(k);
+      }
+    }
+    return out;
+  };
+  TaskIndex::CrossConditionals cross{reading(action.start, end), reading(action.end, start), {}, {}};
+  if (cross.start.empty() && cross.end.empty()) return std::nullopt;
+  return cross;
 }
 
 }  // namespace
@@ -416,8 +426,10 @@ void TaskIndex::mark_alone_snaps(const GroundTask& t, ActionTables& x) {
     if (must_be_alone(action.end, x.end[a])) alone.push_back(&x.end[a]);
   }
   for (auto& [a, cross] : x.cross) {
-    if (must_be_alone(t.actions[a].start, cross.start_footprint)) alone.push_back(&cross.start_footprint);
-    if (must_be_alone(t.actions[a].end, cross.end_footprint)) alone.push_back(&cross.end_footprint);
+    if (must_be_alone(without(t.actions[a].start, cross.start), cross.start_footprint)) {
+      alone.push_back(&cross.start_footprint);
+    }
+    if (must_be_alone(without(t.actions[a].end, cross.end), cross.end_footprint)) alone.push_back(&cross.end_footprint);
   }
   if (alone.empty()) return;
   x.alone_key = alone_key_of(t);
