@@ -48,11 +48,11 @@ PartialPlan::PartialPlan(const TaskIndex& index, double epsilon, double release,
 }
 
 PartialPlan::Touch PartialPlan::fact_touch(const Footprint& fp) {
-  return {fp.reads, fp.holds, fp.writes, fp.adds, fp.dels};
+  return {fp.reads, fp.holds, fp.writes, fp.adds, fp.dels, fp.reads_first};
 }
 
 PartialPlan::Touch PartialPlan::value_touch(const Footprint& fp) {
-  return {fp.reads_values, fp.holds_values, fp.writes_values, fp.additive_values, kNoKeys};
+  return {fp.reads_values, fp.holds_values, fp.writes_values, fp.additive_values, kNoKeys, fp.reads_first_values};
 }
 
 PartialPlan::WriteKind PartialPlan::Touch::kind_of(std::uint32_t key) const {
@@ -84,8 +84,10 @@ void PartialPlan::Ledger::add_constraints(const Touch& touch, std::uint32_t node
     edges.push_back({from, node, gap});
     if (gap == 0.0) loose.push_back({from, node, epsilon});
   };
-  for (std::uint32_t key : touch.reads) {
-    if (const Use* w = last_write(key)) add(node_of_step[w->step], epsilon);
+  for (const auto* read : {&touch.reads, &touch.reads_first}) {
+    for (std::uint32_t key : *read) {
+      if (const Use* w = last_write(key)) add(node_of_step[w->step], epsilon);
+    }
   }
   for (std::uint32_t key : touch.holds) {
     if (const Use* w = last_write(key)) add(node_of_step[w->step], 0.0);
@@ -123,7 +125,9 @@ void PartialPlan::Ledger::record(const Touch& touch, std::uint32_t step) {
     reads.insert(at, {key, step, kind});
   };
   for (std::uint32_t key : touch.reads) read(key, WriteKind::Other);
+  // Later writers may share the happening of a holder or a first reader.
   for (std::uint32_t key : touch.holds) read(key, WriteKind::Add);
+  for (std::uint32_t key : touch.reads_first) read(key, WriteKind::Add);
   for (std::uint32_t key : touch.writes) {
     const auto [first, last] = reads_of(key);
     reads.erase(first, last);
@@ -157,6 +161,8 @@ std::optional<double> PartialPlan::separation(const Footprint& a, const Footprin
   for (const auto& [ta, tb] : {std::pair{fact_touch(a), fact_touch(b)}, std::pair{value_touch(a), value_touch(b)}}) {
     if (intersects(ta.writes, tb.reads) || intersects(ta.reads, tb.writes)) need(epsilon_);
     if (intersects(ta.writes, tb.holds) || intersects(ta.holds, tb.writes)) need(0.0);
+    if (intersects(ta.writes, tb.reads_first)) need(epsilon_);
+    if (intersects(ta.reads_first, tb.writes)) need(0.0);
     for (std::uint32_t key : ta.writes) {
       if (!contains(tb.writes, key)) continue;
       const WriteKind ka = ta.kind_of(key), kb = tb.kind_of(key);
@@ -189,7 +195,7 @@ void PartialPlan::settle() {
 
 bool PartialPlan::append(const StepRecord& step) {
   const std::uint32_t index = static_cast<std::uint32_t>(steps_.size());
-  const Footprint& fp = index_->footprint(step.snap);
+  const Footprint& fp = index_->footprint(step.snap, step.quiet);
   std::vector<TemporalEdge> edges;
   std::uint32_t node = network_.size();
   std::uint32_t new_nodes = 1;
@@ -220,7 +226,7 @@ bool PartialPlan::append(const StepRecord& step) {
     // One happening with that step: the same time, and members VAL would
     // not call a mutex.
     const StepRecord& other = steps_[step.simultaneous_with];
-    if (separation(index_->footprint(other.snap), fp).value_or(0.0) > 0.0) return false;
+    if (separation(index_->footprint(other.snap, other.quiet), fp).value_or(0.0) > 0.0) return false;
     const std::uint32_t other_node = node_of_step_[step.simultaneous_with];
     edges.push_back({other_node, node, 0.0});
     edges.push_back({node, other_node, 0.0});
@@ -277,7 +283,7 @@ bool PartialPlan::append(const StepRecord& step) {
     const SnapNodes at = snap_nodes(step, node);
     if (step.continuous) invariant_reads = continuous_->invariant_reads(*step.continuous, at);
     if (!invariant_reads.empty()) {
-      values_.add_constraints({invariant_reads, kNoKeys, kNoKeys, kNoKeys, kNoKeys}, node, epsilon_, edges, loose,
+      values_.add_constraints({invariant_reads, kNoKeys, kNoKeys, kNoKeys, kNoKeys, kNoKeys}, node, epsilon_, edges, loose,
                               node_of_step_);
       Footprint reads;
       reads.reads_values = invariant_reads;
@@ -299,7 +305,7 @@ bool PartialPlan::append(const StepRecord& step) {
     return false;
   }
   loose_.insert(loose_.end(), loose.begin(), loose.end());
-  values_.record({invariant_reads, kNoKeys, kNoKeys, kNoKeys, kNoKeys}, index);
+  values_.record({invariant_reads, kNoKeys, kNoKeys, kNoKeys, kNoKeys, kNoKeys}, index);
   facts_.record(fact_touch(fp), index);
   values_.record(value_touch(fp), index);
   steps_.push_back(step);

@@ -46,6 +46,9 @@ struct StepRecord {
   // happening a search state holds open: successor_generator.h): the same
   // time, and not interfering with it (kNoId: free).
   std::uint32_t simultaneous_with = kNoId;
+  // None of the snap's conditional effects fired: its quiet footprint
+  // (TaskIndex::footprint) orders it.
+  bool quiet = false;
 };
 
 class PartialPlan {
@@ -154,6 +157,7 @@ class PartialPlan {
     const std::vector<std::uint32_t>& writes;
     const std::vector<std::uint32_t>& adds;  // facts: added; variables: written additively
     const std::vector<std::uint32_t>& dels;  // facts: deleted; variables: none
+    const std::vector<std::uint32_t>& reads_first;  // Footprint::reads_first
     WriteKind kind_of(std::uint32_t key) const;
   };
   static Touch fact_touch(const Footprint& fp);

@@ -44,6 +44,14 @@ struct Footprint {
   // share a happening with each other.
   std::vector<FactId> adds, dels;
   std::vector<NumericVarId> additive_values;  // only increased or decreased
+  // What the conditions of conditional effects that do not fire read (a
+  // snap's quiet footprint, TaskIndex::footprint): VAL reads such a
+  // condition in the state before the happening and counts it as no read
+  // when it is false, so later members may write it; but the search
+  // evaluates it where the snap stands in the happening, so writers before
+  // it stay epsilon apart.
+  std::vector<FactId> reads_first;
+  std::vector<NumericVarId> reads_first_values;
 };
 
 }  // namespace alplan

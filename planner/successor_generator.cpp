@@ -57,11 +57,12 @@ std::optional<DurationWindow> constant_duration_window(const GroundAction& actio
 }
 
 bool SuccessorGenerator::apply_effects(const HappeningEffects& effects, const SearchState& before, double duration,
-                                       SearchState& after, const std::vector<std::uint32_t>& skipped) const {
+                                       SearchState& after, bool& quiet, const std::vector<std::uint32_t>& skipped) const {
   // VAL's order within a happening: conditions and right-hand sides read the
   // state before; deletes, then adds, then numeric updates.
   EvaluationContext context;
   context.duration = duration;
+  quiet = true;
   std::vector<const std::vector<FactId>*> adds{&effects.add}, dels{&effects.del};
   std::vector<const std::vector<NumericAssignment>*> numeric{&effects.numeric};
   try {
@@ -69,6 +70,7 @@ bool SuccessorGenerator::apply_effects(const HappeningEffects& effects, const Se
       const ConditionalEffect& c = effects.conditional[k];
       if (std::find(skipped.begin(), skipped.end(), k) != skipped.end()) continue;
       if (!holds(c.condition, before, context, 0.0)) continue;
+      quiet = false;
       adds.push_back(&c.add);
       dels.push_back(&c.del);
       numeric.push_back(&c.numeric);
@@ -193,13 +195,23 @@ bool SuccessorGenerator::may_be_given(ActionId started, const SearchState& befor
       return (g != started || self_overlap_) && condition_holds(index_.task().actions[g].at_start, before, std::nan(""));
     });
   };
+  // A timed literal still to come may join too, where its time is the happening's.
+  const auto& literals = index_.task().timed_literals;
+  auto literal_sets = [&](FactId f, bool positive) {
+    return std::any_of(literals.begin() + before.next_timed_literal(), literals.end(),
+                       [&](const GroundTimedLiteral& l) { return l.fact == f && l.positive == positive; });
+  };
   auto in = [](const std::vector<FactId>& v, FactId f) { return std::find(v.begin(), v.end(), f) != v.end(); };
   for (FactId f : action.over_all.positive) {
     // Its own start deleting it: another member adding it is a mutex.
-    if (!after.fact(f) && (in(action.start.del, f) || !can_join(givers_at_start_[f]))) return false;
+    if (!after.fact(f) && (in(action.start.del, f) || !(can_join(givers_at_start_[f]) || literal_sets(f, true)))) {
+      return false;
+    }
   }
   for (FactId f : action.over_all.negative) {
-    if (after.fact(f) && (in(action.start.add, f) || !can_join(takers_at_start_[f]))) return false;
+    if (after.fact(f) && (in(action.start.add, f) || !(can_join(takers_at_start_[f]) || literal_sets(f, false)))) {
+      return false;
+    }
   }
   if (action.over_all.numeric.empty() && action.over_all.complex.empty()) return true;
   ConditionSet rest;
@@ -215,7 +227,10 @@ bool SuccessorGenerator::may_be_given(ActionId started, const SearchState& befor
   append_reads(rest, facts, variables);
   return std::any_of(variables.begin(), variables.end(), [&](NumericVarId v) { return can_join(changers_at_start_[v]); }) ||
          std::any_of(facts.begin(), facts.end(),
-                     [&](FactId f) { return can_join(givers_at_start_[f]) || can_join(takers_at_start_[f]); });
+                     [&](FactId f) {
+                       return can_join(givers_at_start_[f]) || can_join(takers_at_start_[f]) || literal_sets(f, true) ||
+                              literal_sets(f, false);
+                     });
 }
 
 void SuccessorGenerator::add_end(const SearchState& state, std::size_t running_index,
@@ -241,8 +256,10 @@ void SuccessorGenerator::add_end(const SearchState& state, std::size_t running_i
   // conditional effects' conditions before the start, where the start
   // found those reading its writes false (zero_duration_conditionals_clear).
   const TaskIndex::CrossConditionals* cross = running.max_duration == 0.0 ? index_.cross_conditionals(running.action) : nullptr;
-  if (!apply_effects(action.end, state, context.duration, s.state, cross ? cross->end : std::vector<std::uint32_t>{}))
+  if (!apply_effects(action.end, state, context.duration, s.state, s.step.quiet,
+                     cross ? cross->end : std::vector<std::uint32_t>{})) {
     return;
+  }
   if (state.open_happening() != kNoId) s.step.simultaneous_with = state.open_happening();
   if (invariants_hold(s.state)) {
     s.state.close_happening();
@@ -281,7 +298,16 @@ void SuccessorGenerator::add_timed_literal(const SearchState& state, std::vector
   s.state.set_fact(til.fact, til.positive);
   s.state.set_next_timed_literal(next + 1);
   derive(index_.task(), s.state);
-  if (invariants_hold(s.state)) out.push_back(std::move(s));
+  if (state.open_happening() == kNoId) {
+    if (invariants_hold(s.state)) out.push_back(std::move(s));
+    return;
+  }
+  // A member of the open happening, at its time (a literal giving the
+  // invariant of a start at its own time).
+  s.step.simultaneous_with = state.open_happening();
+  if (!invariants_hold(s.state, true)) return;
+  if (invariants_hold(s.state)) s.state.close_happening();
+  out.push_back(std::move(s));
 }
 
 void SuccessorGenerator::add_action(const SearchState& state, ActionId id, std::vector<Successor>& out) const {
@@ -291,7 +317,7 @@ void SuccessorGenerator::add_action(const SearchState& state, ActionId id, std::
     if (!condition_holds(action.at_start, state, std::nan(""))) return;
     Successor s{{{SnapKind::Instant, id}}, state};
     if (!attach_continuous(action, state, std::nan(""), s.step)) return;
-    if (apply_effects(action.start, state, std::nan(""), s.state) && settle_invariants(state, kNoId, s)) {
+    if (apply_effects(action.start, state, std::nan(""), s.state, s.step.quiet) && settle_invariants(state, kNoId, s)) {
       out.push_back(std::move(s));
     }
     return;
@@ -315,7 +341,7 @@ void SuccessorGenerator::add_action(const SearchState& state, ActionId id, std::
     if (!condition_holds(action.at_start, state, duration)) continue;
     if (max == 0.0 && !zero_duration_conditionals_clear(id, state)) continue;
     if (!attach_continuous(action, state, duration, s.step)) continue;
-    if (!apply_effects(action.start, state, duration, s.state)) continue;
+    if (!apply_effects(action.start, state, duration, s.state, s.step.quiet)) continue;
     // The new action's invariant must hold right after its start (or come
     // from a start in its happening: settle_invariants), and so must
     // everyone else's.
@@ -337,11 +363,12 @@ void SuccessorGenerator::generate(const SearchState& state, std::vector<Successo
     }
     return;
   }
-  // An open happening: only starts and instantaneous actions may join it.
+  // An open happening: only starts, instantaneous actions and timed
+  // literals may join it.
   if (state.open_happening() == kNoId) {
     for (std::size_t r = 0; r < state.running().size(); ++r) add_end(state, r, out);
-    add_timed_literal(state, out);
   }
+  add_timed_literal(state, out);
   const std::vector<std::uint64_t>& bits = state.bits();
   for (std::size_t word = 0; word < bits.size(); ++word) {
     for (std::uint64_t w = bits[word]; w != 0; w &= w - 1) {

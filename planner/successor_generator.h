@@ -88,8 +88,9 @@ class SuccessorGenerator {
   bool zero_duration_conditionals_clear(ActionId id, const SearchState& before) const;
   void add_timed_literal(const SearchState& state, std::vector<Successor>& out) const;
   void add_action(const SearchState& state, ActionId action, std::vector<Successor>& out) const;
+  // `quiet`: set to whether no conditional effect fired.
   bool apply_effects(const HappeningEffects& effects, const SearchState& before, double duration,
-                     SearchState& after, const std::vector<std::uint32_t>& skipped = {}) const;
+                     SearchState& after, bool& quiet, const std::vector<std::uint32_t>& skipped = {}) const;
   // A condition's part the state decides: all of it, or with continuous
   // change all but the comparisons on changing values.
   bool condition_holds(const ConditionSet& c, const SearchState& state, double duration) const;

@@ -103,6 +103,8 @@ void finish(Footprint& fp) {
   unique(fp.adds);
   unique(fp.dels);
   unique(fp.additive_values);
+  unique(fp.reads_first);
+  unique(fp.reads_first_values);
   // What is read is not merely held; what is read is not written one way
   // only (a reader and writer of one key conflicts with any other writer).
   auto drop = [](std::vector<std::uint32_t>& from, const std::vector<std::uint32_t>& keys) {
@@ -110,6 +112,11 @@ void finish(Footprint& fp) {
   };
   drop(fp.holds, fp.reads);
   drop(fp.holds_values, fp.reads_values);
+  // Read first is more than held, less than read.
+  drop(fp.reads_first, fp.reads);
+  drop(fp.reads_first_values, fp.reads_values);
+  drop(fp.holds, fp.reads_first);
+  drop(fp.holds_values, fp.reads_first_values);
   drop(fp.adds, fp.reads);
   drop(fp.dels, fp.reads);
   drop(fp.additive_values, fp.reads_values);
@@ -148,6 +155,7 @@ class DerivedReads {
   void expand(Footprint& fp) const {
     expand(fp.reads, fp.reads, fp.reads_values);
     expand(fp.holds, fp.holds, fp.holds_values);
+    expand(fp.reads_first, fp.reads_first, fp.reads_first_values);
   }
 
  private:
@@ -330,6 +338,55 @@ std::optional<TaskIndex::CrossConditionals> cross_conditionals_of(const GroundAc
   return cross;
 }
 
+std::vector<std::uint32_t> all_conditionals(const HappeningEffects& e) {
+  std::vector<std::uint32_t> all(e.conditional.size());
+  for (std::uint32_t k = 0; k < all.size(); ++k) all[k] = k;
+  return all;
+}
+
+// The snaps of an action with conditional effects, footprinted as where
+// none fires (TaskIndex::footprint): the effects left out, their
+// conditions read first (widened as every footprint is).
+template <typename Widen>
+void quiet_footprints(const GroundTask& t, ActionId a, ConditionFootprint over_all, const Widen& widen,
+                      TaskIndex::QuietFootprints& quiet) {
+  const GroundAction& action = t.actions[a];
+  auto first_reads = [&](const HappeningEffects& e, Footprint& fp) {
+    Footprint conditions;
+    for (const ConditionalEffect& c : e.conditional) {
+      condition_reads(c.condition, conditions);
+      for (std::uint32_t g : c.condition.ghost_mentioned) conditions.reads.push_back(t.facts.size() + g);
+    }
+    finish(conditions);
+    widen(conditions, ConditionSet{}, HappeningEffects{});
+    fp.reads_first.insert(fp.reads_first.end(), conditions.reads.begin(), conditions.reads.end());
+    fp.reads_first_values.insert(fp.reads_first_values.end(), conditions.reads_values.begin(),
+                                 conditions.reads_values.end());
+    finish(fp);
+  };
+  if (!action.durative) {
+    if (action.start.conditional.empty()) return;
+    Footprint fp;
+    condition_reads(action.at_start, fp);
+    effect_footprint(action.start, fp, all_conditionals(action.start));
+    for (const GroundPreference& p : action.preferences) condition_reads(p.condition, fp);
+    finish(fp);
+    widen(fp, action.at_start, without(action.start, all_conditionals(action.start)));
+    first_reads(action.start, fp);
+    quiet.instant.emplace_back(a, std::move(fp));
+    return;
+  }
+  if (action.start.conditional.empty() && action.end.conditional.empty()) return;
+  Footprint start, end;
+  durative_footprints(action, over_all, all_conditionals(action.start), all_conditionals(action.end), start, end);
+  widen(start, action.at_start, without(action.start, all_conditionals(action.start)));
+  widen(end, action.at_end, without(action.end, all_conditionals(action.end)));
+  first_reads(action.start, start);
+  first_reads(action.end, end);
+  if (!action.start.conditional.empty()) quiet.start.emplace_back(a, std::move(start));
+  if (!action.end.conditional.empty()) quiet.end.emplace_back(a, std::move(end));
+}
+
 }  // namespace
 
 std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const GroundTask& t) {
@@ -410,6 +467,7 @@ std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const Gr
     widen(cross->end_footprint, action.at_end, without(action.end, cross->end));
     x.cross.emplace_back(a, std::move(*cross));
   }
+  for (ActionId a = 0; a < t.actions.size(); ++a) quiet_footprints(t, a, over_all, widen, x.quiet);
   mark_alone_snaps(t, x);
   return tables;
 }
@@ -431,6 +489,15 @@ void TaskIndex::mark_alone_snaps(const GroundTask& t, ActionTables& x) {
     }
     if (must_be_alone(without(t.actions[a].end, cross.end), cross.end_footprint)) alone.push_back(&cross.end_footprint);
   }
+  for (auto& [a, fp] : x.quiet.instant) {
+    if (must_be_alone(without(t.actions[a].start, all_conditionals(t.actions[a].start)), fp)) alone.push_back(&fp);
+  }
+  for (auto& [a, fp] : x.quiet.start) {
+    if (must_be_alone(without(t.actions[a].start, all_conditionals(t.actions[a].start)), fp)) alone.push_back(&fp);
+  }
+  for (auto& [a, fp] : x.quiet.end) {
+    if (must_be_alone(without(t.actions[a].end, all_conditionals(t.actions[a].end)), fp)) alone.push_back(&fp);
+  }
   if (alone.empty()) return;
   x.alone_key = alone_key_of(t);
   // Reads stay sorted: the key is above every fact and ghost key.
@@ -439,6 +506,9 @@ void TaskIndex::mark_alone_snaps(const GroundTask& t, ActionTables& x) {
   for (auto& [a, cross] : x.cross) {
     read(cross.start_footprint);
     read(cross.end_footprint);
+  }
+  for (auto* quiet : {&x.quiet.instant, &x.quiet.start, &x.quiet.end}) {
+    for (auto& [a, fp] : *quiet) read(fp);
   }
   for (Footprint* fp : alone) fp->writes.push_back(*x.alone_key);
 }
@@ -487,6 +557,18 @@ const TaskIndex::CrossConditionals* TaskIndex::cross_conditionals(ActionId actio
   auto it = std::lower_bound(cross.begin(), cross.end(), action,
                              [](const auto& entry, ActionId a) { return entry.first < a; });
   return it != cross.end() && it->first == action ? &it->second : nullptr;
+}
+
+const Footprint& TaskIndex::footprint(Snap snap, bool quiet) const {
+  if (quiet && snap.kind != SnapKind::TimedLiteral) {
+    const auto& list = snap.kind == SnapKind::Instant ? actions_->quiet.instant
+                       : snap.kind == SnapKind::Start ? actions_->quiet.start
+                                                      : actions_->quiet.end;
+    auto it = std::lower_bound(list.begin(), list.end(), snap.index,
+                               [](const auto& entry, ActionId a) { return entry.first < a; });
+    if (it != list.end() && it->first == snap.index) return it->second;
+  }
+  return footprint(snap);
 }
 
 const Footprint& TaskIndex::footprint(Snap snap) const {

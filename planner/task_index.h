@@ -30,6 +30,11 @@ class TaskIndex {
   const std::shared_ptr<const GroundTask>& task_pointer() const { return task_; }
 
   const Footprint& footprint(Snap snap) const;
+  // With `quiet`, the footprint of the snap where none of its conditional
+  // effects fires (their conditions read first, Footprint::reads_first;
+  // their effects left out): VAL counts a condition read only where it
+  // holds. The same as footprint(snap) for a snap without any.
+  const Footprint& footprint(Snap snap, bool quiet) const;
   // Actions whose at-start (instantaneous: whole) precondition contains the
   // fact; every action is listed under exactly one fact, or in unindexed().
   const std::vector<ActionId>& indexed_by(FactId fact) const { return actions_->by_fact[fact]; }
@@ -50,6 +55,11 @@ class TaskIndex {
     Footprint start_footprint, end_footprint;  // the snaps' footprints without these effects
   };
   const CrossConditionals* cross_conditionals(ActionId action) const;
+  // Quiet footprints (footprint(snap, true)) of the snaps that have
+  // conditional effects, sorted by action.
+  struct QuietFootprints {
+    std::vector<std::pair<ActionId, Footprint>> instant, start, end;
+  };
   // The first construct of the task the planner refuses, with its position.
   const std::optional<std::string>& unsupported() const { return unsupported_; }
 
@@ -62,6 +72,7 @@ class TaskIndex {
     std::optional<std::string> unsupported;
     std::shared_ptr<const ContinuousModel> continuous;
     std::vector<std::pair<ActionId, CrossConditionals>> cross;  // sorted by action
+    QuietFootprints quiet;
     // Set where some snap must be alone in its happening (task_index.cpp,
     // must_be_alone): every footprint reads it, such snaps write it.
     std::optional<std::uint32_t> alone_key;

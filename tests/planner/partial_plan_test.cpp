@@ -78,3 +78,33 @@ TEST_CASE("a step started while an action runs leaves that action's end its full
   REQUIRE(plan.append({{SnapKind::Start, test::action_named(*task, "(bake)")}, kNoId, 3.0, 3.0}));
   CHECK(plan.latest_end_times(running).front() == Approx(10.0));
 }
+
+// VAL counts a conditional effect's condition as read only where it holds
+// before the happening (the differential tester's tasks 4294974730 and
+// 8589936741): a snap none of whose conditional effects fired is ordered by
+// its quiet footprint, which lets a later writer of the condition share its
+// happening but keeps an earlier one epsilon before it (the search
+// evaluates the condition where the snap stands).
+TEST_CASE("a conditional effect that did not fire lets later writers of its condition share the happening") {
+  const char* const domain = R"(
+(define (domain quiet) (:requirements :strips :conditional-effects)
+  (:predicates (p) (q) (r))
+  (:action check :parameters () :precondition (and) :effect (and (r) (when (p) (q))))
+  (:action set-p :parameters () :precondition (and) :effect (p)))
+)";
+  const auto task = ground(test::load_task_text(domain, "(define (problem q) (:domain quiet) (:goal (q)))").normalized);
+  const TaskIndex index(task);
+  const Snap check{SnapKind::Instant, test::action_named(*task, "(check)")};
+  const Snap set_p{SnapKind::Instant, test::action_named(*task, "(set-p)")};
+  auto makespan = [&](StepRecord first, StepRecord second) {
+    PartialPlan plan(index, 0.001);
+    REQUIRE(plan.append(first));
+    REQUIRE(plan.append(second));
+    return plan.makespan();
+  };
+  StepRecord quiet_check{check};
+  quiet_check.quiet = true;
+  CHECK(makespan(quiet_check, StepRecord{set_p}) == Approx(0.0));
+  CHECK(makespan(StepRecord{check}, StepRecord{set_p}) == Approx(0.001));  // fired: read
+  CHECK(makespan(StepRecord{set_p}, quiet_check) == Approx(0.001));         // written before it
+}
