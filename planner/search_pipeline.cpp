@@ -366,8 +366,10 @@ std::string order_dependent_mutex_limit(const GroundTask& task) {
 // Invariants inside one happening. The complete search searches a VAL
 // happening as snaps in some order (SuccessorGenerator): members' own
 // invariants are judged when the happening closes, but those of actions
-// running since before must hold after every member. Where each value such
-// an invariant reads only ever moves one way (constant increases only, or
+// running since before must hold after every member. (Facts cannot be
+// broken and restored inside one happening: a delete and an add of one
+// fact by two members are a mutex.) Where each value such an invariant
+// reads, itself or through a derived fact, only ever moves one way (constant increases only, or
 // constant decreases only), an invariant broken by some members stays
 // broken after all of them, so nothing is lost; where a value may move both
 // ways (or is assigned or scaled), one member may break it and another
@@ -399,16 +401,22 @@ std::string unsearched_happenings_limit(const GroundTask& task) {
       }
     }
   }
+  // What derived facts read (all of it: a derived fact's support is
+  // not followed rule by rule here).
+  std::vector<FactId> ignored;
+  std::vector<NumericVarId> derived_vars;
+  for (const GroundAxiom& x : task.axioms) append_reads(x.body, ignored, derived_vars);
   for (const GroundAction& a : task.actions) {
     if (!a.durative) continue;
+    std::vector<FactId> facts;
     std::vector<NumericVarId> vars;
-    for (const GroundComparison& c : a.over_all.numeric) {
-      append_variables(c.left, vars);
-      append_variables(c.right, vars);
+    append_reads(a.over_all, facts, vars);
+    if (std::any_of(facts.begin(), facts.end(), [&](FactId f) { return task.is_derived(f); })) {
+      vars.insert(vars.end(), derived_vars.begin(), derived_vars.end());
     }
     for (NumericVarId v : vars) {
       if (moves[v] != 0 && moves[v] != 1 && moves[v] != 2) {
-        return "the numeric over-all condition of " + task.action_name(a) + " reads " + task.variable_name(v) +
+        return "the over-all condition of " + task.action_name(a) + " reads " + task.variable_name(v) +
                ", which snaps change both ways: one member of a happening may break it and another restore it, "
                "an order the search does not try";
       }

@@ -173,7 +173,19 @@ bool SuccessorGenerator::settle_invariants(const SearchState& before, ActionId s
     // invariants; the happening closes once every invariant holds.
     s.step.simultaneous_with = before.open_happening();
     if (!invariants_hold(s.state, true)) return false;
-    if (invariants_hold(s.state)) s.state.close_happening();
+    if (invariants_hold(s.state)) {
+      s.state.close_happening();
+      return true;
+    }
+    // A joiner whose own invariant fails needs a member still to come that
+    // may give it, as the opener did (only members change the state here).
+    if (started == kNoId) return true;
+    for (const RunningAction& r : s.state.running()) {
+      if (r.action == started && r.start_step == kStepNotYetKnown &&
+          !condition_holds(index_.task().actions[started].over_all, s.state, r.min_duration)) {
+        return may_be_given(started, before, s.state);
+      }
+    }
     return true;
   }
   if (invariants_hold(s.state)) return true;
