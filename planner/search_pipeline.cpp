@@ -363,34 +363,20 @@ std::string order_dependent_mutex_limit(const GroundTask& task) {
   return "";
 }
 
-// Invariants inside one happening. The complete search searches a VAL
-// happening as snaps in some order (SuccessorGenerator): members' own
-// invariants are judged when the happening closes, but those of actions
-// running since before must hold after every member. (Facts cannot be
-// broken and restored inside one happening: a delete and an add of one
-// fact by two members are a mutex.) Where each value such an invariant
-// reads, itself or through a derived fact, only ever moves one way (constant increases only, or
-// constant decreases only), an invariant broken by some members stays
-// broken after all of them, so nothing is lost; where a value may move both
-// ways (or is assigned or scaled), one member may break it and another
-// restore it, an order the search does not try. Nor does it model VAL's
-// order of claims inside a zero-duration action's happening (its start is
-// judged before its end, so a start that reads and then itself increases a
-// value lets its end increase it too: task 8589940174); the footprints keep
-// such a start and end apart.
-std::string unsearched_happenings_limit(const GroundTask& task) {
-  // Per variable: bit 1, some snap raises it; bit 2, lowers it; bit 4,
-  // changes it some other way (assign, scale, an amount read from the state).
+// Per numeric variable, how snaps change it: bit 1, some raises it by a
+// constant; bit 2, some lowers it by one; bit 4, some changes it another
+// way (assign, scale, an amount read from the state).
+std::vector<unsigned> value_moves(const GroundTask& task) {
   std::vector<unsigned> moves(task.numeric.size(), 0);
   auto note = [&](const NumericAssignment& n) {
     using Op = pddl::AssignOperator;
-    const bool constant = n.value.kind == GroundExpression::Kind::Constant;
-    const bool up = constant && ((n.assign == Op::Increase && n.value.value > 0) ||
-                                 (n.assign == Op::Decrease && n.value.value < 0));
-    const bool down = constant && ((n.assign == Op::Decrease && n.value.value > 0) ||
-                                   (n.assign == Op::Increase && n.value.value < 0));
-    if (constant && n.value.value == 0 && (n.assign == Op::Increase || n.assign == Op::Decrease)) return;
-    moves[n.variable] |= up ? 1u : down ? 2u : 4u;
+    const bool additive = n.assign == Op::Increase || n.assign == Op::Decrease;
+    if (!additive || n.value.kind != GroundExpression::Kind::Constant) {
+      moves[n.variable] |= 4u;
+      return;
+    }
+    const double signed_amount = n.assign == Op::Increase ? n.value.value : -n.value.value;
+    if (signed_amount != 0.0) moves[n.variable] |= signed_amount > 0 ? 1u : 2u;
   };
   for (const GroundAction& a : task.actions) {
     for (const HappeningEffects* e : {&a.start, &a.end}) {
@@ -401,30 +387,109 @@ std::string unsearched_happenings_limit(const GroundTask& task) {
       }
     }
   }
-  // What derived facts read (all of it: a derived fact's support is
-  // not followed rule by rule here).
-  std::vector<FactId> ignored;
-  std::vector<NumericVarId> derived_vars;
-  for (const GroundAxiom& x : task.axioms) append_reads(x.body, ignored, derived_vars);
+  return moves;
+}
+
+// Whether an expression is linear in the variables it reads (so, read with
+// one variable, monotone in it).
+bool linear(const GroundExpression& e) {
+  using K = GroundExpression::Kind;
+  auto reads = [](const GroundExpression& x) {
+    std::vector<NumericVarId> v;
+    append_variables(x, v);
+    return !v.empty();
+  };
+  switch (e.kind) {
+    case K::Multiply:
+      return std::all_of(e.operands.begin(), e.operands.end(), linear) &&
+             std::count_if(e.operands.begin(), e.operands.end(), reads) <= 1;
+    case K::Divide:
+      return e.operands.size() == 2 && linear(e.operands[0]) && !reads(e.operands[1]);
+    default:
+      return std::all_of(e.operands.begin(), e.operands.end(), linear);
+  }
+}
+
+// Why an invariant of `a` may be broken by one member of a happening and
+// restored by another, or "" where it cannot be. Facts cannot: a delete and
+// an add of one fact by two members are a mutex. A comparison linear in
+// one variable that only ever moves one way (constant increases only, or
+// constant decreases only) cannot: broken, it stays broken. Anything else
+// may: a value moving both ways, two variables, a product of variables, a
+// disjunction or a derived fact over facts different members write.
+std::string restorable_invariant(const GroundTask& task, const GroundAction& a, const std::vector<unsigned>& moves) {
+  auto changed = [&](NumericVarId v) { return moves[v] != 0; };
+  if (!a.over_all.complex.empty() ||
+      std::any_of(a.over_all.positive.begin(), a.over_all.positive.end(), [&](FactId f) { return task.is_derived(f); }) ||
+      std::any_of(a.over_all.negative.begin(), a.over_all.negative.end(), [&](FactId f) { return task.is_derived(f); })) {
+    return "the over-all condition of " + task.action_name(a) + " is a formula or derived fact over several atoms";
+  }
+  for (const GroundComparison& c : a.over_all.numeric) {
+    std::vector<NumericVarId> vars;
+    append_variables(c.left, vars);
+    append_variables(c.right, vars);
+    std::sort(vars.begin(), vars.end());
+    vars.erase(std::unique(vars.begin(), vars.end()), vars.end());
+    std::erase_if(vars, [&](NumericVarId v) { return !changed(v); });
+    if (vars.empty()) continue;
+    if (vars.size() > 1 || !linear(c.left) || !linear(c.right)) {
+      return "the over-all condition of " + task.action_name(a) + " compares values several snaps may change";
+    }
+    if (moves[vars.front()] != 1 && moves[vars.front()] != 2) {
+      return "the over-all condition of " + task.action_name(a) + " reads " + task.variable_name(vars.front()) +
+             ", which snaps change both ways";
+    }
+  }
+  return "";
+}
+
+// Invariants inside one happening. The complete search searches a VAL
+// happening as snaps in some order (SuccessorGenerator): members' own
+// invariants are judged when the happening closes, but those of actions
+// running since before must hold after every member, so an invariant one
+// member breaks and another restores (restorable_invariant) is an order the
+// search does not try. Nor does it model VAL's order of claims inside a
+// zero-duration action's happening (its start is judged before its end, so
+// a start that reads and then itself increases a value lets its end
+// increase it too: task 8589940174); the footprints keep such a start and
+// end apart.
+std::string unsearched_happenings_limit(const GroundTask& task) {
+  const std::vector<unsigned> moves = value_moves(task);
   for (const GroundAction& a : task.actions) {
     if (!a.durative) continue;
-    std::vector<FactId> facts;
-    std::vector<NumericVarId> vars;
-    append_reads(a.over_all, facts, vars);
-    if (std::any_of(facts.begin(), facts.end(), [&](FactId f) { return task.is_derived(f); })) {
-      vars.insert(vars.end(), derived_vars.begin(), derived_vars.end());
-    }
-    for (NumericVarId v : vars) {
-      if (moves[v] != 0 && moves[v] != 1 && moves[v] != 2) {
-        return "the over-all condition of " + task.action_name(a) + " reads " + task.variable_name(v) +
-               ", which snaps change both ways: one member of a happening may break it and another restore it, "
-               "an order the search does not try";
-      }
+    // A zero-duration action's invariant is never checked (VAL).
+    std::string why = always_zero_duration(a) ? "" : restorable_invariant(task, a, moves);
+    if (!why.empty()) {
+      return why + ": one member of a happening may break it and another restore it, an order the search does not try";
     }
     if (always_zero_duration(a) && !a.start.numeric.empty() && !a.end.numeric.empty()) {
       return "the start and end of " + task.action_name(a) +
              " share a happening, where VAL judges the start's claims before the end's; the search keeps them apart "
              "where both touch one value";
+    }
+  }
+  return "";
+}
+
+// A snap that may add again a fact it reads is kept alone in its happening
+// (TaskIndex), taking every conditional effect as firing; a zero-duration
+// action's start and end share one, so such an action is never scheduled,
+// where VAL refuses it only when the second add happens (two conditional
+// adds of one fact that do not both fire are fine).
+std::string zero_duration_alone_limit(const TaskIndex& index) {
+  const std::optional<std::uint32_t> key = index.alone_key();
+  if (!key) return "";
+  const GroundTask& task = index.task();
+  for (ActionId a = 0; a < task.actions.size(); ++a) {
+    if (!task.actions[a].durative || !always_zero_duration(task.actions[a])) continue;
+    const TaskIndex::CrossConditionals* cross = index.cross_conditionals(a);
+    for (const Footprint* fp : {cross ? &cross->start_footprint : &index.footprint({SnapKind::Start, a}),
+                                cross ? &cross->end_footprint : &index.footprint({SnapKind::End, a})}) {
+      if (std::find(fp->writes.begin(), fp->writes.end(), *key) != fp->writes.end()) {
+        return "the start and end of " + task.action_name(task.actions[a]) +
+               " share a happening, where one may add again a fact it reads, which the search never allows; VAL "
+               "refuses it only when the second add happens";
+      }
     }
   }
   return "";
@@ -444,6 +509,7 @@ std::string proof_limits(const TaskIndex& index) {
   if (std::string limit = zero_duration_conditional_limit(task); !limit.empty()) return limit;
   if (std::string limit = order_dependent_mutex_limit(task); !limit.empty()) return limit;
   if (std::string limit = unsearched_happenings_limit(task); !limit.empty()) return limit;
+  if (std::string limit = zero_duration_alone_limit(index); !limit.empty()) return limit;
   for (ActionId a = 0; a < task.actions.size(); ++a) {
     if (task.actions[a].durative && index.duration_dependent(a)) {
       return "only the shortest and longest durations of " + task.action_name(task.actions[a]) +

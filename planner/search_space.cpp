@@ -188,6 +188,10 @@ void SearchSpace::set_root_heuristic(Heuristic& heuristic, SearchStatistics& sta
 }
 
 bool SearchSpace::known(const Child& child, SearchStatistics& stats) const {
+  // Inside an open happening the members so far (their footprints, tied to
+  // the opener's time) decide which snaps may still join, and a state does
+  // not say which they are: such states are never pruned as duplicates.
+  if (child.node.state.open_happening() != kNoId) return false;
   const auto it = seen_.find(&child.node.state);
   if (it == seen_.end()) return false;
   const bool duplicate =

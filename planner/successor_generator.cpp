@@ -214,14 +214,16 @@ bool SuccessorGenerator::may_be_given(ActionId started, const SearchState& befor
                        [&](const GroundTimedLiteral& l) { return l.fact == f && l.positive == positive; });
   };
   auto in = [](const std::vector<FactId>& v, FactId f) { return std::find(v.begin(), v.end(), f) != v.end(); };
+  // A derived fact may be given by whatever its rules read: not filtered.
+  const GroundTask& task = index_.task();
   for (FactId f : action.over_all.positive) {
     // Its own start deleting it: another member adding it is a mutex.
-    if (!after.fact(f) && (in(action.start.del, f) || !(can_join(givers_at_start_[f]) || literal_sets(f, true)))) {
+    if (!after.fact(f) && !task.is_derived(f) && (in(action.start.del, f) || !(can_join(givers_at_start_[f]) || literal_sets(f, true)))) {
       return false;
     }
   }
   for (FactId f : action.over_all.negative) {
-    if (after.fact(f) && (in(action.start.add, f) || !(can_join(takers_at_start_[f]) || literal_sets(f, false)))) {
+    if (after.fact(f) && !task.is_derived(f) && (in(action.start.add, f) || !(can_join(takers_at_start_[f]) || literal_sets(f, false)))) {
       return false;
     }
   }

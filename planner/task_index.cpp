@@ -3,239 +3,12 @@
 #include <algorithm>
 #include <map>
 
-#include "planner/derived_support.h"
+#include "planner/footprint_parts.h"
 
 namespace alplan {
 namespace {
 
-bool mentions_duration(const GroundExpression& e) {
-  if (e.kind == GroundExpression::Kind::Duration) return true;
-  return std::any_of(e.operands.begin(), e.operands.end(), mentions_duration);
-}
-
-void condition_reads(const ConditionSet& c, Footprint& fp) { append_reads(c, fp.reads, fp.reads_values); }
-
-// An over-all condition: held, not read (snap_action.h).
-void condition_holds(const ConditionSet& c, Footprint& fp) { append_reads(c, fp.holds, fp.holds_values); }
-
-bool additive(pddl::AssignOperator op) {
-  return op == pddl::AssignOperator::Increase || op == pddl::AssignOperator::Decrease;
-}
-
-// `skipped`: conditional effects left out, condition and effects.
-void effect_footprint(const HappeningEffects& e, Footprint& fp, const std::vector<std::uint32_t>& skipped = {}) {
-  std::vector<NumericVarId> other_values;  // written otherwise than additively, unconditionally
-  auto numeric = [&](const std::vector<NumericAssignment>& assignments, bool conditional) {
-    for (const NumericAssignment& a : assignments) {
-      fp.writes_values.push_back(a.variable);
-      append_variables(a.value, fp.reads_values);
-      (additive(a.assign) && !conditional ? fp.additive_values : other_values).push_back(a.variable);
-    }
-  };
-  fp.writes.insert(fp.writes.end(), e.add.begin(), e.add.end());
-  fp.writes.insert(fp.writes.end(), e.del.begin(), e.del.end());
-  fp.adds.insert(fp.adds.end(), e.add.begin(), e.add.end());
-  fp.dels.insert(fp.dels.end(), e.del.begin(), e.del.end());
-  numeric(e.numeric, false);
-  for (std::uint32_t k = 0; k < e.conditional.size(); ++k) {
-    const ConditionalEffect& c = e.conditional[k];
-    if (std::find(skipped.begin(), skipped.end(), k) != skipped.end()) continue;
-    condition_reads(c.condition, fp);
-    fp.writes.insert(fp.writes.end(), c.add.begin(), c.add.end());
-    fp.writes.insert(fp.writes.end(), c.del.begin(), c.del.end());
-    // A conditional add is an add whether or not it fires (and nothing
-    // where it does not): it commutes with other adds as a plain one does.
-    // Counting it as neither kept a zero-duration action whose start adds a
-    // fact conditionally and whose end adds it apart from itself, so that
-    // the search proved "no plan exists" where VAL accepts a plan (the
-    // differential tester's task 4294971080).
-    fp.adds.insert(fp.adds.end(), c.add.begin(), c.add.end());
-    fp.dels.insert(fp.dels.end(), c.del.begin(), c.del.end());
-    numeric(c.numeric, true);
-  }
-  // A key written two ways is written neither way only.
-  auto drop = [](std::vector<std::uint32_t>& from, const std::vector<std::uint32_t>& keys) {
-    std::erase_if(from, [&](std::uint32_t k) { return std::find(keys.begin(), keys.end(), k) != keys.end(); });
-  };
-  const std::vector<FactId> adds = fp.adds, dels = fp.dels;
-  drop(fp.adds, dels);
-  drop(fp.dels, adds);
-  drop(fp.additive_values, other_values);
-}
-
-template <typename T>
-void unique(std::vector<T>& v);
-void finish(Footprint& fp);
-
-// Atoms that are never facts but that a snap's condition names or its
-// effects delete (GroundTask::ghosts), under keys after the facts': VAL's
-// mutex rule counts them, so they order snaps like facts do.
-void add_ghosts(const GroundTask& t, const ConditionSet& condition, const HappeningEffects& effects, Footprint& fp) {
-  const std::uint32_t base = t.facts.size();
-  auto reads = [&](const ConditionSet& c) {
-    for (std::uint32_t g : c.ghost_mentioned) fp.reads.push_back(base + g);
-  };
-  reads(condition);
-  for (std::uint32_t g : effects.ghost_del) {
-    fp.writes.push_back(base + g);
-    fp.dels.push_back(base + g);
-  }
-  for (const ConditionalEffect& c : effects.conditional) {
-    reads(c.condition);
-    for (std::uint32_t g : c.ghost_del) fp.writes.push_back(base + g);
-  }
-  finish(fp);
-}
-
-template <typename T>
-void unique(std::vector<T>& v) {
-  std::sort(v.begin(), v.end());
-  v.erase(std::unique(v.begin(), v.end()), v.end());
-}
-
-void finish(Footprint& fp) {
-  unique(fp.reads);
-  unique(fp.writes);
-  unique(fp.reads_values);
-  unique(fp.writes_values);
-  unique(fp.holds);
-  unique(fp.holds_values);
-  unique(fp.adds);
-  unique(fp.dels);
-  unique(fp.additive_values);
-  unique(fp.reads_first);
-  unique(fp.reads_first_values);
-  // What is read is not merely held; what is read is not written one way
-  // only (a reader and writer of one key conflicts with any other writer).
-  auto drop = [](std::vector<std::uint32_t>& from, const std::vector<std::uint32_t>& keys) {
-    std::erase_if(from, [&](std::uint32_t k) { return std::binary_search(keys.begin(), keys.end(), k); });
-  };
-  drop(fp.holds, fp.reads);
-  drop(fp.holds_values, fp.reads_values);
-  // Read first is more than held, less than read.
-  drop(fp.reads_first, fp.reads);
-  drop(fp.reads_first_values, fp.reads_values);
-  drop(fp.holds, fp.reads_first);
-  drop(fp.holds_values, fp.reads_first_values);
-  drop(fp.adds, fp.reads);
-  drop(fp.dels, fp.reads);
-  drop(fp.additive_values, fp.reads_values);
-}
-
-bool effects_mention_duration(const HappeningEffects& e) {
-  auto any = [](const std::vector<NumericAssignment>& v) {
-    return std::any_of(v.begin(), v.end(), [](const NumericAssignment& a) { return mentions_duration(a.value); });
-  };
-  if (any(e.numeric)) return true;
-  return std::any_of(e.conditional.begin(), e.conditional.end(),
-                     [&](const ConditionalEffect& c) { return any(c.numeric); });
-}
-
-bool conditions_mention_duration(const ConditionSet& c) {
-  return std::any_of(c.numeric.begin(), c.numeric.end(), [](const GroundComparison& cmp) {
-    return mentions_duration(cmp.left) || mentions_duration(cmp.right);
-  });
-}
-
-// A snap reading a derived fact reads every fact and variable of the
-// predicates and functions its rules read (derived_support.h says why not
-// only those of the planner's own axioms): without this, a writer of one of
-// them could be scheduled at the same time as the reader, which VAL rejects.
-class DerivedReads {
- public:
-  explicit DerivedReads(const GroundTask& task) : task_(task), lifted_(*task.lifted) {
-    facts_of_.resize(task.lifted->predicates.size());
-    variables_of_.resize(task.lifted->functions.size());
-    for (FactId f = 0; f < task.facts.size(); ++f) {
-      if (!task.is_derived(f)) facts_of_[task.facts.key(f).head].push_back(f);
-    }
-    for (NumericVarId v = 0; v < task.numeric.size(); ++v) variables_of_[task.numeric.key(v).head].push_back(v);
-  }
-
-  void expand(Footprint& fp) const {
-    expand(fp.reads, fp.reads, fp.reads_values);
-    expand(fp.holds, fp.holds, fp.holds_values);
-    expand(fp.reads_first, fp.reads_first, fp.reads_first_values);
-  }
-
- private:
-  void expand(const std::vector<FactId>& derived_from, std::vector<FactId>& facts,
-              std::vector<NumericVarId>& values) const {
-    std::vector<PredicateId> predicates;
-    std::vector<FunctionId> functions;
-    for (FactId f : derived_from) {
-      if (!task_.is_derived(f)) continue;
-      const PredicateId p = task_.facts.key(f).head;
-      predicates.insert(predicates.end(), lifted_.predicates(p).begin(), lifted_.predicates(p).end());
-      functions.insert(functions.end(), lifted_.functions(p).begin(), lifted_.functions(p).end());
-    }
-    unique(predicates);
-    unique(functions);
-    for (PredicateId p : predicates) facts.insert(facts.end(), facts_of_[p].begin(), facts_of_[p].end());
-    for (FunctionId f : functions) values.insert(values.end(), variables_of_[f].begin(), variables_of_[f].end());
-  }
-
- private:
-  const GroundTask& task_;
-  LiftedDerivedReads lifted_;
-  std::vector<std::vector<FactId>> facts_of_;
-  std::vector<std::vector<NumericVarId>> variables_of_;
-};
-
-template <typename T>
-bool intersect(const std::vector<T>& a, const std::vector<T>& b) {
-  auto i = a.begin();
-  auto j = b.begin();
-  while (i != a.end() && j != b.end()) {
-    if (*i < *j) {
-      ++i;
-    } else if (*j < *i) {
-      ++j;
-    } else {
-      return true;
-    }
-  }
-  return false;
-}
-
-// A hard PDDL 3 `always` constraint is read in every state the search makes
-// (successor_generator.h). The partial order keeps only the orders that
-// reads and writes ask for, so a snap that writes what the constraint reads
-// reads all of it: such snaps then keep the order in which the search
-// checked their states, and the schedule cannot interleave them into a state
-// it never checked.
-class AlwaysReads {
- public:
-  explicit AlwaysReads(const GroundTask& task) {
-    for (const GroundConstraint& g : task.pddl3.constraints) {
-      if (g.op != ModalOperator::Always || g.preference) continue;
-      Footprint f;
-      condition_reads(g.requirement, f);
-      finish(f);
-      if (!f.reads.empty() || !f.reads_values.empty()) reads_.push_back(std::move(f));
-    }
-  }
-  bool empty() const { return reads_.empty(); }
-
-  void expand(Footprint& fp) const {
-    bool grown = false;
-    for (const Footprint& r : reads_) {
-      if (!intersect(fp.writes, r.reads) && !intersect(fp.writes_values, r.reads_values)) continue;
-      fp.reads.insert(fp.reads.end(), r.reads.begin(), r.reads.end());
-      fp.reads_values.insert(fp.reads_values.end(), r.reads_values.begin(), r.reads_values.end());
-      grown = true;
-    }
-    if (grown) finish(fp);
-  }
-
- private:
-  std::vector<Footprint> reads_;
-};
-
-}  // namespace
-
-namespace {
-
+using namespace footprint_parts;
 using ConditionFootprint = void (*)(const ConditionSet&, Footprint&);
 
 // A durative action's start and end footprints; the conditional effects
@@ -324,8 +97,15 @@ std::optional<TaskIndex::CrossConditionals> cross_conditionals_of(const GroundAc
       widen(read, effects.conditional[k].condition, HappeningEffects{});
       const Footprint& own = &other == &end ? start : end;
       const ConditionalEffect& c = effects.conditional[k];
+      // Exact only where the snap changes p unconditionally too (or this
+      // effect adds it twice): two conditional adds of p make VAL refuse
+      // only when both fire, and are left to must_be_alone (a limit of the
+      // proof: search_pipeline.cpp).
       const bool adds_again = std::any_of(c.add.begin(), c.add.end(), [&](FactId p) {
-        return std::binary_search(own.reads.begin(), own.reads.end(), p) && may_add_again(effects, p);
+        const auto unconditional = std::count(effects.add.begin(), effects.add.end(), p) +
+                                   std::count(effects.del.begin(), effects.del.end(), p) +
+                                   std::count(c.add.begin(), c.add.end(), p) - 1;
+        return std::binary_search(own.reads.begin(), own.reads.end(), p) && unconditional > 0;
       });
       if (adds_again || intersect(read.reads, other.writes) || intersect(read.reads_values, other.writes_values)) {
         out.push_back(k);

@@ -55,6 +55,9 @@ class TaskIndex {
     Footprint start_footprint, end_footprint;  // the snaps' footprints without these effects
   };
   const CrossConditionals* cross_conditionals(ActionId action) const;
+  // The key a snap that must be alone in its happening writes and every
+  // snap reads (task_index.cpp, must_be_alone); none where no snap must.
+  std::optional<std::uint32_t> alone_key() const { return actions_->alone_key; }
   // Quiet footprints (footprint(snap, true)) of the snaps that have
   // conditional effects, sorted by action.
   struct QuietFootprints {

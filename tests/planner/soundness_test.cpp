@@ -266,3 +266,41 @@ TEST_CASE("two actions each deleting at its end what the other needs over all en
   REQUIRE(reference.ok());
   CHECK(oracle::Judge(reference.domain, reference.problem).judge(oracle::read_timed_plan(result.best()->text).plan).valid());
 }
+
+// Two running actions whose invariants compare two values each, and two
+// instantaneous actions each breaking one invariant that the other
+// restores: VAL accepts them in one happening (3c7a1f3: 0 run1, 0 run2,
+// 1 do-a, 1 do-b). The search holds a happening open only for starts'
+// own invariants, so it misses that plan; a review found that the draft
+// of this change then called the exhausted search a proof.
+TEST_CASE("invariants one member may break and another restore make exhaustion no proof") {
+  const std::string domain = R"(
+(define (domain crossed) (:requirements :strips :durative-actions :numeric-fluents :negative-preconditions)
+  (:predicates (open1) (open2) (r1) (r2) (a) (b)) (:functions (x) (y) (z) (w))
+  (:durative-action run1 :parameters () :duration (= ?duration 10)
+    :condition (and (at start (not (r1))) (at start (not (open1))) (over all (>= (x) (y))))
+    :effect (and (at start (open1)) (at end (not (open1))) (at end (r1))))
+  (:durative-action run2 :parameters () :duration (= ?duration 10)
+    :condition (and (at start (not (r2))) (at start (not (open2))) (over all (>= (z) (w))))
+    :effect (and (at start (open2)) (at end (not (open2))) (at end (r2))))
+  (:action do-a :parameters () :precondition (and (open1) (open2) (not (a)))
+    :effect (and (a) (increase (y) 1) (increase (z) 1)))
+  (:action do-b :parameters () :precondition (and (open1) (open2) (not (b)))
+    :effect (and (b) (increase (x) 1) (increase (w) 1))))
+)";
+  const std::string problem =
+      "(define (problem c) (:domain crossed) (:init (= (x) 0) (= (y) 0) (= (z) 0) (= (w) 0)) "
+      "(:goal (and (r1) (r2) (a) (b))))";
+  const oracle::LoadedTask reference = oracle::load_task_text(domain, problem);
+  REQUIRE(reference.ok());
+  const oracle::TimedPlanRead witness =
+      oracle::read_timed_plan("0: (run1) [10]\n0: (run2) [10]\n1: (do-a)\n1: (do-b)\n");
+  REQUIRE(witness.ok());
+  CHECK(oracle::Judge(reference.domain, reference.problem).judge(witness.plan).valid());
+  const PlannerResult result = plan_text(domain, problem);
+  INFO(result.message);
+  CHECK(result.status != PlannerResult::Status::Unsolvable);
+  if (result.status == PlannerResult::Status::Exhausted) {
+    CHECK(result.message.find("several snaps may change") != std::string::npos);
+  }
+}
