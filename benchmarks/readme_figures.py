@@ -37,7 +37,8 @@ SCATTERS = [("scatter-0", "0"), ("scatter-0.5", "0.5"), ("scatter-1", "1"),
 STABILITY = ["stability-ipc2002-1-5-2026-11-28", "stability-ipc2002-6-10-2026-11-28"]
 MODELS = ["full", "iot", "camera"]
 FUZZ = "fuzz-planner-2000-issue42-2026-12-02"
-FUZZ_SEEDS = ["fuzz-planner-seed1-issue42-2026-12-06", "fuzz-planner-seed2-issue42-2026-12-06"]
+FUZZ_SEEDS = ["fuzz-planner-seed1-issue42-2026-12-06", "fuzz-planner-seed2-issue42-2026-12-06",
+              "fuzz-planner-seed1-issue42-2026-12-07", "fuzz-planner-seed2-issue42-2026-12-07"]
 ORACLE_VAL = "oracle-against-val-300-2026-12-02"
 
 
@@ -302,6 +303,8 @@ BLOCKS = {
     "differential": differential_block,
     "differential-seed1": lambda: differential_block(FUZZ_SEEDS[0]),
     "differential-seed2": lambda: differential_block(FUZZ_SEEDS[1]),
+    "differential-seed1-happenings": lambda: differential_block(FUZZ_SEEDS[2]),
+    "differential-seed2-happenings": lambda: differential_block(FUZZ_SEEDS[3]),
     "oracle-against-val": oracle_against_val_block,
     "study-mix": study_mix,
     "study-switch": study_switch,

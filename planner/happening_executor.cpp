@@ -46,9 +46,16 @@ void collect_variables(const GroundFormula& f, std::set<NumericVarId>& out) {
   for (const GroundFormula& child : f.children) collect_variables(child, out);
 }
 
+// Atoms and values named where they decide nothing (ConditionSet::mentioned:
+// simplified away, or a precondition preference a round of the preference
+// search leaves out) count too: VAL reads every proposition a precondition
+// names (the differential tester's task 8589948526, a dropped preference's
+// read with a fact added twice).
 void collect_reads(const ConditionSet& c, std::set<FactId>& facts, std::set<NumericVarId>& values) {
   facts.insert(c.positive.begin(), c.positive.end());
   facts.insert(c.negative.begin(), c.negative.end());
+  facts.insert(c.mentioned.begin(), c.mentioned.end());
+  values.insert(c.mentioned_values.begin(), c.mentioned_values.end());
   for (const GroundComparison& cmp : c.numeric) {
     collect_variables(cmp.left, values);
     collect_variables(cmp.right, values);
