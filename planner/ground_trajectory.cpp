@@ -42,7 +42,7 @@ std::vector<GroundPreference> ground_preferences(const std::vector<PreferenceCon
   for (const PreferenceCondition& p : preferences) {
     for_each_binding(instantiate.task(), p.forall, binding, [&] {
       std::vector<ObjectId> scratch = binding;
-      result.push_back({p.preference, instantiate.condition(p.condition, scratch), p.time});
+      result.push_back({p.preference, instantiate.preference_condition(p.condition, scratch), p.time});
     });
   }
   return result;

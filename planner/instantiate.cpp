@@ -329,11 +329,18 @@ ConditionSet Instantiator::condition(const LiftedCondition& c, std::vector<Objec
   return flatten(formula(c, binding));
 }
 
-void Instantiator::add_mentions(const LiftedCondition& c, std::vector<ObjectId>& binding, ConditionSet& set) {
+ConditionSet Instantiator::preference_condition(const LiftedCondition& c, std::vector<ObjectId>& binding) {
+  ConditionSet set = condition(c, binding);
+  add_mentions(c, binding, set, true);
+  return set;
+}
+
+void Instantiator::add_mentions(const LiftedCondition& c, std::vector<ObjectId>& binding, ConditionSet& set,
+                                bool even_never) {
   // A literal simplified away still counts: VAL marks what a condition
   // names, true or not, so a statically true (not f) read by a start is a
   // mutex with its zero-duration end deleting f (differential tester).
-  if (!options_.simplify_static || set.never) return;
+  if (!options_.simplify_static || (set.never && !even_never)) return;
   std::vector<FactId> named;
   std::vector<std::uint32_t> ghosts;
   mentioned_facts(c, binding, named, ghosts);

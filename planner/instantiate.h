@@ -46,6 +46,10 @@ class Instantiator {
   // The goal is instantiated once, so it always says why it cannot hold.
   void set_explain(bool on) { options_.explain = on; }
   ConditionSet condition(const LiftedCondition& condition, std::vector<ObjectId>& binding);
+  // A preference's condition: with what it names recorded even where it can
+  // never hold (ConditionSet::mentioned, ghost_mentioned), as VAL's mutex
+  // rule reads a preference's atoms whatever its value.
+  ConditionSet preference_condition(const LiftedCondition& condition, std::vector<ObjectId>& binding);
   GroundFormula formula(const LiftedCondition& condition, std::vector<ObjectId>& binding);
   GroundExpression expression(const LiftedExpression& expression, const std::vector<ObjectId>& binding);
   // The id of a ground atom if it is (or, when interning, becomes) a fact.
@@ -68,7 +72,9 @@ class Instantiator {
   void mentioned_facts(const LiftedCondition& condition, std::vector<ObjectId>& binding, std::vector<FactId>& out,
                        std::vector<std::uint32_t>& ghosts);
   // Fills set.mentioned (ground_task.h) for one of an action's conditions.
-  void add_mentions(const LiftedCondition& condition, std::vector<ObjectId>& binding, ConditionSet& set);
+  // `even_never`: also where the condition can never hold.
+  void add_mentions(const LiftedCondition& condition, std::vector<ObjectId>& binding, ConditionSet& set,
+                    bool even_never = false);
 
   const NormalizedTask& task_;
   GroundKeyTable* ghosts_ = nullptr;

@@ -248,8 +248,48 @@ std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const Gr
     x.cross.emplace_back(a, std::move(*cross));
   }
   for (ActionId a = 0; a < t.actions.size(); ++a) quiet_footprints(t, a, over_all, widen, x.quiet);
+  add_preference_ghosts(t, x);
   mark_alone_snaps(t, x);
   return tables;
+}
+
+// A preference's atoms that are never facts (GroundTask::ghosts) are read
+// too: VAL's mutex rule counts a preference's propositions, so a snap
+// deleting such an atom may not share the happening (the differential
+// tester's task 4294973974: `(preference pp (at start (g0 ?x)))`, with
+// `(g0 o1)` never true and deleted by another action).
+void TaskIndex::add_preference_ghosts(const GroundTask& t, ActionTables& x) {
+  if (t.ghosts.size() == 0) return;
+  const std::uint32_t base = t.facts.size();
+  auto find = [](std::vector<std::pair<ActionId, Footprint>>& list, ActionId a) -> Footprint* {
+    auto it = std::lower_bound(list.begin(), list.end(), a, [](const auto& e, ActionId id) { return e.first < id; });
+    return it != list.end() && it->first == a ? &it->second : nullptr;
+  };
+  for (ActionId a = 0; a < t.actions.size(); ++a) {
+    const GroundAction& action = t.actions[a];
+    for (const GroundPreference& p : action.preferences) {
+      if (p.condition.ghost_mentioned.empty()) continue;
+      const bool at_end = action.durative && p.time == pddl::TimeSpecifier::AtEnd;
+      if (action.durative && !at_end && p.time != pddl::TimeSpecifier::AtStart) continue;
+      TaskIndex::CrossConditionals* cross = nullptr;
+      for (auto& [id, c] : x.cross) {
+        if (id == a) cross = &c;
+      }
+      std::vector<Footprint*> fps;
+      if (!action.durative) {
+        fps = {&x.instant[a], find(x.quiet.instant, a)};
+      } else if (at_end) {
+        fps = {&x.end[a], find(x.quiet.end, a), cross ? &cross->end_footprint : nullptr};
+      } else {
+        fps = {&x.start[a], find(x.quiet.start, a), cross ? &cross->start_footprint : nullptr};
+      }
+      for (Footprint* fp : fps) {
+        if (!fp) continue;
+        for (std::uint32_t g : p.condition.ghost_mentioned) fp->reads.push_back(base + g);
+        finish(*fp);
+      }
+    }
+  }
 }
 
 void TaskIndex::mark_alone_snaps(const GroundTask& t, ActionTables& x) {

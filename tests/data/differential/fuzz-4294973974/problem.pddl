@@ -1,0 +1,5 @@
+(define (problem fuzz-4294973974-1) (:domain fuzz-4294973974)
+  (:init)
+  (:goal (and (f2) (preference pg (f1))))
+  (:constraints (and (within 4 (f0))))
+  (:metric minimize (+ (total-time) (* 3 (is-violated pg)) (* 2 (is-violated pp)))))
