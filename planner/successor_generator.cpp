@@ -169,17 +169,10 @@ bool SuccessorGenerator::always_hold(const SearchState& state) const {
 
 bool SuccessorGenerator::settle_invariants(const SearchState& before, ActionId started, Successor& s) const {
   if (before.open_happening() != kNoId) {
-    // A member of the open happening: those outside it keep their
-    // invariants; the happening closes once every invariant holds.
-    s.step.simultaneous_with = before.open_happening();
-    if (!invariants_hold(s.state, true)) return false;
-    if (invariants_hold(s.state)) {
-      s.state.close_happening();
-      return true;
-    }
+    if (!join_open_happening(before, s)) return false;
+    if (s.state.open_happening() == kNoId || started == kNoId) return true;
     // A joiner whose own invariant fails needs a member still to come that
     // may give it, as the opener did (only members change the state here).
-    if (started == kNoId) return true;
     for (const RunningAction& r : s.state.running()) {
       if (r.action == started && r.start_step == kStepNotYetKnown &&
           !condition_holds(index_.task().actions[started].over_all, s.state, r.min_duration)) {
@@ -191,7 +184,13 @@ bool SuccessorGenerator::settle_invariants(const SearchState& before, ActionId s
   if (invariants_hold(s.state)) return true;
   if (!pending_invariants_ || started == kNoId || continuous_) return false;
   s.state.open_happening(kStepNotYetKnown, false);
-  if (!invariants_hold(s.state, true) || !may_be_given(started, before, s.state)) return false;
+  return invariants_hold(s.state, true) && may_be_given(started, before, s.state);
+}
+
+bool SuccessorGenerator::join_open_happening(const SearchState& before, Successor& s) const {
+  s.step.simultaneous_with = before.open_happening();
+  if (!invariants_hold(s.state, true)) return false;
+  if (invariants_hold(s.state)) s.state.close_happening();
   return true;
 }
 
@@ -201,31 +200,29 @@ bool SuccessorGenerator::may_be_given(ActionId started, const SearchState& befor
   // happening, as members of one happening do not interfere) and to change
   // what that part reads. Another run of the started action counts where
   // runs may overlap.
-  const GroundAction& action = index_.task().actions[started];
+  const GroundTask& task = index_.task();
+  const GroundAction& action = task.actions[started];
   auto can_join = [&](const std::vector<ActionId>& candidates) {
     return std::any_of(candidates.begin(), candidates.end(), [&](ActionId g) {
-      return (g != started || self_overlap_) && condition_holds(index_.task().actions[g].at_start, before, std::nan(""));
+      return (g != started || self_overlap_) && condition_holds(task.actions[g].at_start, before, std::nan(""));
     });
   };
   // A timed literal still to come may join too, where its time is the happening's.
-  const auto& literals = index_.task().timed_literals;
+  const auto& literals = task.timed_literals;
   auto literal_sets = [&](FactId f, bool positive) {
     return std::any_of(literals.begin() + before.next_timed_literal(), literals.end(),
                        [&](const GroundTimedLiteral& l) { return l.fact == f && l.positive == positive; });
   };
   auto in = [](const std::vector<FactId>& v, FactId f) { return std::find(v.begin(), v.end(), f) != v.end(); };
   // A derived fact may be given by whatever its rules read: not filtered.
-  const GroundTask& task = index_.task();
   for (FactId f : action.over_all.positive) {
+    if (after.fact(f) || task.is_derived(f)) continue;
     // Its own start deleting it: another member adding it is a mutex.
-    if (!after.fact(f) && !task.is_derived(f) && (in(action.start.del, f) || !(can_join(givers_at_start_[f]) || literal_sets(f, true)))) {
-      return false;
-    }
+    if (in(action.start.del, f) || !(can_join(givers_at_start_[f]) || literal_sets(f, true))) return false;
   }
   for (FactId f : action.over_all.negative) {
-    if (after.fact(f) && !task.is_derived(f) && (in(action.start.add, f) || !(can_join(takers_at_start_[f]) || literal_sets(f, false)))) {
-      return false;
-    }
+    if (!after.fact(f) || task.is_derived(f)) continue;
+    if (in(action.start.add, f) || !(can_join(takers_at_start_[f]) || literal_sets(f, false))) return false;
   }
   if (action.over_all.numeric.empty() && action.over_all.complex.empty()) return true;
   ConditionSet rest;
@@ -239,12 +236,12 @@ bool SuccessorGenerator::may_be_given(ActionId started, const SearchState& befor
   std::vector<FactId> facts;
   std::vector<NumericVarId> variables;
   append_reads(rest, facts, variables);
-  return std::any_of(variables.begin(), variables.end(), [&](NumericVarId v) { return can_join(changers_at_start_[v]); }) ||
-         std::any_of(facts.begin(), facts.end(),
-                     [&](FactId f) {
-                       return can_join(givers_at_start_[f]) || can_join(takers_at_start_[f]) || literal_sets(f, true) ||
-                              literal_sets(f, false);
-                     });
+  const auto changed = [&](NumericVarId v) { return can_join(changers_at_start_[v]); };
+  const auto written = [&](FactId f) {
+    return can_join(givers_at_start_[f]) || can_join(takers_at_start_[f]) || literal_sets(f, true) ||
+           literal_sets(f, false);
+  };
+  return std::any_of(variables.begin(), variables.end(), changed) || std::any_of(facts.begin(), facts.end(), written);
 }
 
 void SuccessorGenerator::add_end(const SearchState& state, std::size_t running_index,
@@ -279,7 +276,7 @@ void SuccessorGenerator::add_end(const SearchState& state, std::size_t running_i
     s.state.close_happening();
   } else {
     // Invariants this end broke: their actions may still end in its
-    // happening (ends_broken_by_end), where VAL checks none of them.
+    // happening (generate() offers only their ends), where VAL checks none.
     if (!pending_invariants_ || continuous_ || !always_hold(s.state)) return;
     if (state.open_happening() == kNoId) s.state.open_happening(kStepNotYetKnown, true);
   }
@@ -316,12 +313,8 @@ void SuccessorGenerator::add_timed_literal(const SearchState& state, std::vector
     if (invariants_hold(s.state)) out.push_back(std::move(s));
     return;
   }
-  // A member of the open happening, at its time (a literal giving the
-  // invariant of a start at its own time).
-  s.step.simultaneous_with = state.open_happening();
-  if (!invariants_hold(s.state, true)) return;
-  if (invariants_hold(s.state)) s.state.close_happening();
-  out.push_back(std::move(s));
+  // A literal giving the invariant of a start at its own time.
+  if (join_open_happening(state, s)) out.push_back(std::move(s));
 }
 
 void SuccessorGenerator::add_action(const SearchState& state, ActionId id, std::vector<Successor>& out) const {

@@ -78,6 +78,10 @@ class SuccessorGenerator {
   // the snap joins (or, as a start whose invariant fails and may be given,
   // opens) a happening. Sets the step's happening.
   bool settle_invariants(const SearchState& before, ActionId started, Successor& s) const;
+  // A snap joining the open happening: at its opener's time; the actions
+  // outside it keep their invariants (false where one fails); it closes once
+  // every invariant holds.
+  bool join_open_happening(const SearchState& before, Successor& s) const;
   // Whether every failing part of a just started action's invariant may be
   // given by a start or instantaneous action joining its happening.
   bool may_be_given(ActionId started, const SearchState& before, const SearchState& after) const;

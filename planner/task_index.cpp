@@ -11,9 +11,28 @@ namespace {
 using namespace footprint_parts;
 using ConditionFootprint = void (*)(const ConditionSet&, Footprint&);
 
+// Preferences are soft, but VAL's mutex rule counts what they read, atoms
+// that are never true included (under keys from `ghost_base`, the facts'
+// count: task 4294973974, `(preference pp (at start (g0 ?x)))` with
+// `(g0 o1)` never true and deleted by another action in the happening).
+void preference_reads(const GroundPreference& p, std::uint32_t ghost_base, Footprint& fp) {
+  condition_reads(p.condition, fp);
+  for (std::uint32_t g : p.condition.ghost_mentioned) fp.reads.push_back(ghost_base + g);
+}
+
+// An instantaneous action's footprint; the conditional effects listed in
+// `skipped` are left out.
+void instant_footprint(const GroundAction& action, std::uint32_t ghost_base, const std::vector<std::uint32_t>& skipped,
+                       Footprint& fp) {
+  condition_reads(action.at_start, fp);
+  effect_footprint(action.start, fp, skipped);
+  for (const GroundPreference& p : action.preferences) preference_reads(p, ghost_base, fp);
+  finish(fp);
+}
+
 // A durative action's start and end footprints; the conditional effects
 // listed in `skipped_*` are left out (they never fire where these are used).
-void durative_footprints(const GroundAction& action, ConditionFootprint over_all,
+void durative_footprints(const GroundAction& action, ConditionFootprint over_all, std::uint32_t ghost_base,
                          const std::vector<std::uint32_t>& skipped_start, const std::vector<std::uint32_t>& skipped_end,
                          Footprint& start, Footprint& end) {
   condition_reads(action.at_start, start);
@@ -23,10 +42,9 @@ void durative_footprints(const GroundAction& action, ConditionFootprint over_all
   condition_reads(action.at_end, end);
   over_all(action.over_all, end);
   effect_footprint(action.end, end, skipped_end);
-  // Preferences are soft, but VAL's mutex rule counts what they read.
   for (const GroundPreference& p : action.preferences) {
-    if (p.time == pddl::TimeSpecifier::AtStart) condition_reads(p.condition, start);
-    if (p.time == pddl::TimeSpecifier::AtEnd) condition_reads(p.condition, end);
+    if (p.time == pddl::TimeSpecifier::AtStart) preference_reads(p, ghost_base, start);
+    if (p.time == pddl::TimeSpecifier::AtEnd) preference_reads(p, ghost_base, end);
   }
   // A continuous effect changes its variable from the start to the end:
   // both snaps write it, so readers and writers are ordered around them.
@@ -135,9 +153,8 @@ void quiet_footprints(const GroundTask& t, ActionId a, ConditionFootprint over_a
     Footprint conditions;
     for (const ConditionalEffect& c : e.conditional) {
       condition_reads(c.condition, conditions);
-      for (std::uint32_t g : c.condition.ghost_mentioned) conditions.reads.push_back(t.facts.size() + g);
+      add_ghosts(t, c.condition, HappeningEffects{}, conditions);
     }
-    finish(conditions);
     widen(conditions, ConditionSet{}, HappeningEffects{});
     fp.reads_first.insert(fp.reads_first.end(), conditions.reads.begin(), conditions.reads.end());
     fp.reads_first_values.insert(fp.reads_first_values.end(), conditions.reads_values.begin(),
@@ -147,10 +164,7 @@ void quiet_footprints(const GroundTask& t, ActionId a, ConditionFootprint over_a
   if (!action.durative) {
     if (action.start.conditional.empty()) return;
     Footprint fp;
-    condition_reads(action.at_start, fp);
-    effect_footprint(action.start, fp, all_conditionals(action.start));
-    for (const GroundPreference& p : action.preferences) condition_reads(p.condition, fp);
-    finish(fp);
+    instant_footprint(action, t.facts.size(), all_conditionals(action.start), fp);
     widen(fp, action.at_start, without(action.start, all_conditionals(action.start)));
     first_reads(action.start, fp);
     quiet.instant.emplace_back(a, std::move(fp));
@@ -158,7 +172,8 @@ void quiet_footprints(const GroundTask& t, ActionId a, ConditionFootprint over_a
   }
   if (action.start.conditional.empty() && action.end.conditional.empty()) return;
   Footprint start, end;
-  durative_footprints(action, over_all, all_conditionals(action.start), all_conditionals(action.end), start, end);
+  durative_footprints(action, over_all, t.facts.size(), all_conditionals(action.start), all_conditionals(action.end),
+                      start, end);
   widen(start, action.at_start, without(action.start, all_conditionals(action.start)));
   widen(end, action.at_end, without(action.end, all_conditionals(action.end)));
   first_reads(action.start, start);
@@ -189,7 +204,7 @@ std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const Gr
   for (ActionId a = 0; a < t.actions.size(); ++a) {
     const GroundAction& action = t.actions[a];
     if (action.durative) {
-      durative_footprints(action, over_all, {}, {}, x.start[a], x.end[a]);
+      durative_footprints(action, over_all, t.facts.size(), {}, {}, x.start[a], x.end[a]);
       x.duration_dependent[a] = effects_mention_duration(action.start) || effects_mention_duration(action.end) ||
                                conditions_mention_duration(action.at_start) ||
                                conditions_mention_duration(action.over_all) ||
@@ -201,10 +216,7 @@ std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const Gr
         }
       }
     } else {
-      condition_reads(action.at_start, x.instant[a]);
-      effect_footprint(action.start, x.instant[a]);
-      for (const GroundPreference& p : action.preferences) condition_reads(p.condition, x.instant[a]);
-      finish(x.instant[a]);
+      instant_footprint(action, t.facts.size(), {}, x.instant[a]);
     }
     // Index under the least-loaded positive precondition, to spread the lists.
     const std::vector<FactId>& pre = action.at_start.positive;
@@ -242,54 +254,15 @@ std::shared_ptr<const TaskIndex::ActionTables> TaskIndex::index_actions(const Gr
     widen(x.end[a], action.at_end, action.end);
     std::optional<TaskIndex::CrossConditionals> cross = cross_conditionals_of(action, x.start[a], x.end[a], widen);
     if (!cross) continue;
-    durative_footprints(action, over_all, cross->start, cross->end, cross->start_footprint, cross->end_footprint);
+    durative_footprints(action, over_all, t.facts.size(), cross->start, cross->end, cross->start_footprint,
+                        cross->end_footprint);
     widen(cross->start_footprint, action.at_start, without(action.start, cross->start));
     widen(cross->end_footprint, action.at_end, without(action.end, cross->end));
     x.cross.emplace_back(a, std::move(*cross));
   }
   for (ActionId a = 0; a < t.actions.size(); ++a) quiet_footprints(t, a, over_all, widen, x.quiet);
-  add_preference_ghosts(t, x);
   mark_alone_snaps(t, x);
   return tables;
-}
-
-// A preference's atoms that are never facts (GroundTask::ghosts) are read
-// too: VAL's mutex rule counts a preference's propositions, so a snap
-// deleting such an atom may not share the happening (the differential
-// tester's task 4294973974: `(preference pp (at start (g0 ?x)))`, with
-// `(g0 o1)` never true and deleted by another action).
-void TaskIndex::add_preference_ghosts(const GroundTask& t, ActionTables& x) {
-  if (t.ghosts.size() == 0) return;
-  const std::uint32_t base = t.facts.size();
-  auto find = [](std::vector<std::pair<ActionId, Footprint>>& list, ActionId a) -> Footprint* {
-    auto it = std::lower_bound(list.begin(), list.end(), a, [](const auto& e, ActionId id) { return e.first < id; });
-    return it != list.end() && it->first == a ? &it->second : nullptr;
-  };
-  for (ActionId a = 0; a < t.actions.size(); ++a) {
-    const GroundAction& action = t.actions[a];
-    for (const GroundPreference& p : action.preferences) {
-      if (p.condition.ghost_mentioned.empty()) continue;
-      const bool at_end = action.durative && p.time == pddl::TimeSpecifier::AtEnd;
-      if (action.durative && !at_end && p.time != pddl::TimeSpecifier::AtStart) continue;
-      TaskIndex::CrossConditionals* cross = nullptr;
-      for (auto& [id, c] : x.cross) {
-        if (id == a) cross = &c;
-      }
-      std::vector<Footprint*> fps;
-      if (!action.durative) {
-        fps = {&x.instant[a], find(x.quiet.instant, a)};
-      } else if (at_end) {
-        fps = {&x.end[a], find(x.quiet.end, a), cross ? &cross->end_footprint : nullptr};
-      } else {
-        fps = {&x.start[a], find(x.quiet.start, a), cross ? &cross->start_footprint : nullptr};
-      }
-      for (Footprint* fp : fps) {
-        if (!fp) continue;
-        for (std::uint32_t g : p.condition.ghost_mentioned) fp->reads.push_back(base + g);
-        finish(*fp);
-      }
-    }
-  }
 }
 
 void TaskIndex::mark_alone_snaps(const GroundTask& t, ActionTables& x) {

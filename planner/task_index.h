@@ -82,7 +82,6 @@ class TaskIndex {
   };
   static std::shared_ptr<const ActionTables> index_actions(const GroundTask& task);
   static void mark_alone_snaps(const GroundTask& task, ActionTables& tables);
-  static void add_preference_ghosts(const GroundTask& task, ActionTables& tables);
   static std::uint32_t alone_key_of(const GroundTask& task);
   void index_rest();
 

@@ -202,13 +202,24 @@ TEST_CASE("a task without deadlines whose search space is finite is proven unsol
 // numeric invariant none gives alone, and two actions each deleting at its
 // end what the other needs over all may end together.
 const char* const kJointInvariant = R"(
-(define (domain joint) (:requirements :strips :durative-actions :numeric-fluents :negative-preconditions)
-  (:predicates (done) (lock)) (:functions (x))
+(define (domain joint) (:requirements :strips :durative-actions :numeric-fluents)
+  (:predicates (done)) (:functions (x))
   (:durative-action push :parameters () :duration (= ?duration 1)
-    :condition (over all (>= (x) 2)) :effect (and (at start (increase (x) 1)) (at end (done))))
+    :condition (over all (>= (x) 2)) :effect (and (at start (increase (x) 1)) (at end (done))))))";
+
+// A domain whose locked-push runs once (its start reads (not (lock)) and
+// adds it, so two runs would be a mutex, and lock never goes), needing
+// (>= (x) 2) over all and raising x by 1: `other` adds actions.
+std::string locked_push_domain(const std::string& other) {
+  return R"(
+(define (domain locked) (:requirements :strips :durative-actions :numeric-fluents :negative-preconditions)
+  (:predicates (done) (lock) (drained)) (:functions (x))
   (:durative-action locked-push :parameters () :duration (= ?duration 1)
     :condition (and (at start (not (lock))) (over all (>= (x) 2)))
-    :effect (and (at start (lock)) (at start (increase (x) 1)) (at end (done))))))";
+    :effect (and (at start (lock)) (at start (increase (x) 1)) (at end (done))))
+  )" + other + ")";
+}
+const char* const kLockedPushProblem = "(define (problem l) (:domain locked) (:init (= (x) 0)) (:goal (done)))";
 
 TEST_CASE("two runs of one action started together give its numeric invariant") {
   const std::string problem = "(define (problem j) (:domain joint) (:init (= (x) 0)) (:goal (done)))";
@@ -218,31 +229,18 @@ TEST_CASE("two runs of one action started together give its numeric invariant") 
 }
 
 TEST_CASE("where values move one way only, an invariant no happening can give is proven out of reach") {
-  // locked-push runs once (its start reads (not (lock)) and adds it, so two
-  // runs would be a mutex, and lock never goes): x reaches 1 < 2. x only
-  // rises, so no happening's order can matter and the search is a proof.
-  const std::string domain = R"(
-(define (domain once) (:requirements :strips :durative-actions :numeric-fluents :negative-preconditions)
-  (:predicates (done) (lock)) (:functions (x))
-  (:durative-action locked-push :parameters () :duration (= ?duration 1)
-    :condition (and (at start (not (lock))) (over all (>= (x) 2)))
-    :effect (and (at start (lock)) (at start (increase (x) 1)) (at end (done))))))";
-  const std::string problem = "(define (problem o) (:domain once) (:init (= (x) 0)) (:goal (done)))";
-  const PlannerResult result = plan_text(domain, problem);
+  // locked-push runs once: x reaches 1 < 2. x only rises, so no
+  // happening's order can matter and the search is a proof.
+  const PlannerResult result = plan_text(locked_push_domain(""), kLockedPushProblem);
   INFO(result.message);
   CHECK(result.status == PlannerResult::Status::Unsolvable);
 }
 
 TEST_CASE("where a value an invariant reads moves both ways, exhaustion is no proof and says why") {
-  const std::string domain = R"(
-(define (domain both) (:requirements :strips :durative-actions :numeric-fluents :negative-preconditions)
-  (:predicates (done) (lock) (drained)) (:functions (x))
-  (:action drain :parameters () :precondition (not (drained)) :effect (and (drained) (decrease (x) 5)))
-  (:durative-action locked-push :parameters () :duration (= ?duration 1)
-    :condition (and (at start (not (lock))) (over all (>= (x) 2)))
-    :effect (and (at start (lock)) (at start (increase (x) 1)) (at end (done))))))";
-  const std::string problem = "(define (problem b) (:domain both) (:init (= (x) 0)) (:goal (done)))";
-  const PlannerResult result = plan_text(domain, problem);
+  const PlannerResult result = plan_text(
+      locked_push_domain("(:action drain :parameters () :precondition (not (drained)) "
+                         ":effect (and (drained) (decrease (x) 5)))"),
+      kLockedPushProblem);
   INFO(result.message);
   REQUIRE(result.status == PlannerResult::Status::Exhausted);
   CHECK(result.message.find("this is not a proof") != std::string::npos);
