@@ -41,7 +41,8 @@ import json, sys
 log, name, battery = sys.argv[1:]
 events = [json.loads(line) for line in open(log)]
 seconds = sorted(e["planning_seconds"] for e in events if e["type"] == "plan")
-nearest = lambda q: seconds[min(len(seconds) - 1, int(q * (len(seconds) - 1) + 0.5))] if seconds else 0.0
+# Nearest rank, ceil(q n) (stats/quantile.h), every call counted.
+nearest = lambda q: seconds[min(len(seconds), max(1, -(-round(q * len(seconds) * 1e9) // 10**9))) - 1] if seconds else 0.0
 goals = sum(e["type"] == "goal" for e in events)
 within = sum(e["type"] == "comforted" and e.get("within_window", False) for e in events)
 recharges = sum(e["type"] == "action_start" and e["action"].startswith("(recharge ") for e in events)

@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Re-derives the repair figures of benchmarks/README.md from the committed
-runs (issue 32), and the differential tester's (issue 42): the README's
-figures must match their files.
+runs (issue 32), the differential tester's (issue 42), the test-set ledger
+and the fleet study of home/README.md (issue 43): the READMEs' figures must
+match their files. Quantiles are nearest ranks, computed here on their own
+(nearest_rank, the definition of stats/quantile.h).
 
 Each block of figures in the README stands between
     <!-- figures:NAME -->  and  <!-- /figures:NAME -->
@@ -13,10 +15,13 @@ program wrote with the numbers). Usage:
     benchmarks/readme_figures.py             print every block
     benchmarks/readme_figures.py NAME        print one
     benchmarks/readme_figures.py --check     exit 1 naming each block of the
-                                             README that differs (a test runs it)
-    benchmarks/readme_figures.py --write     rewrite the README's blocks
+                                             READMEs that differs (a test runs it)
+    benchmarks/readme_figures.py --write     rewrite the READMEs' blocks
+    benchmarks/readme_figures.py --home-fleet DIR   the fleet table of a
+                                             benchmarks/home_fleet.sh run
 """
 import json
+import math
 import os
 import re
 import statistics
@@ -26,6 +31,10 @@ from collections import Counter, defaultdict
 HERE = os.path.dirname(os.path.abspath(__file__))
 RESULTS = os.path.join(HERE, "results")
 README = os.path.join(HERE, "README.md")
+HOME_README = os.path.join(HERE, "..", "home", "README.md")
+FLEET = "home-fleet-40-seniors-8h-2026-12-07"
+FLEET_RUNS = ["dispatch-hard", "allocate-hard", "allocate-soft"]
+FAILED_CALLS = ("none", "merge_failed", "repair_failed")
 STUDY = "repair-study-40-homes-2026-11-28"
 SCATTERED = "repair-study-scatter-2026-11-28"
 TAGS = "tags-by-scatter-2026-11-28"
@@ -34,7 +43,9 @@ TAGS = "tags-by-scatter-2026-11-28"
 SCATTERS = [("scatter-0", "0"), ("scatter-0.5", "0.5"), ("scatter-1", "1"),
             ("scatter-1-min-weight-1", "1, repairs to weight 1"),
             ("scatter-1-min-weight-1-adapt-1", "1, repairs and adapt to weight 1")]
-STABILITY = ["stability-ipc2002-1-5-2026-11-28", "stability-ipc2002-6-10-2026-11-28"]
+STABILITY = ["stability-ipc2002-1-5-2026-11-28", "stability-ipc2002-6-10-2026-11-28",
+             "stability-ipc2002-6-10-2026-11-28-first-run"]
+LEDGER = os.path.join(HERE, "test_set_ledger.jsonl")
 MODELS = ["full", "iot", "camera"]
 FUZZ = "fuzz-planner-2000-issue42-2026-12-02"
 FUZZ_SEEDS = ["fuzz-planner-seed1-issue42-2026-12-06", "fuzz-planner-seed2-issue42-2026-12-06",
@@ -45,6 +56,30 @@ ORACLE_VAL = "oracle-against-val-300-2026-12-02"
 def load(path):
     with open(os.path.join(RESULTS, path)) as f:
         return json.load(f)
+
+
+def nearest_rank(values, q):
+    """The value at rank ceil(q n) of the sorted values (Hyndman & Fan's
+    definition 1), as stats/quantile.h defines it for the C++ studies; a
+    share within 1e-9 of a whole rank is that rank. Written here on its own:
+    this script checks figures the C++ side printed and shares no code with
+    it. None for no values."""
+    if not values:
+        return None
+    ordered = sorted(values)
+    position = q * len(ordered)
+    rank = round(position) if abs(position - round(position)) <= 1e-9 else math.ceil(position)
+    return ordered[min(max(rank, 1), len(ordered)) - 1]
+
+
+def check_nearest_rank():
+    """Hand-computed ranks, the same cases as tests/stats/quantile_test.cpp."""
+    twenty = list(range(20, 0, -1))
+    assert nearest_rank(twenty, 0.95) == 19 and nearest_rank(twenty, 0.5) == 10
+    assert nearest_rank(twenty, 1.0) == 20 and nearest_rank(twenty, 0.0) == 1 and nearest_rank(twenty, 0.96) == 20
+    assert nearest_rank([0.05] * 11 + [0.9], 0.95) == 0.9
+    assert nearest_rank(list(range(1, 101)), 0.07) == 7 and nearest_rank(list(range(1, 101)), 0.29) == 29
+    assert nearest_rank([3.0, 1.0, 2.0, 2.0], 0.76) == 3.0 and nearest_rank([], 0.5) is None
 
 
 def table(header, rows):
@@ -76,7 +111,7 @@ def study_mix(folder=STUDY):
             runs = [r for r in by_model[m] if r["strategy"] == s]
             row.append(f"{sum(r['comforted'] for r in runs)}/{len(runs)}")
         latencies = [x for r in iot if r["strategy"] == s for x in r["latency_ms"]]
-        row.append(f"{statistics.median(latencies):.1f}" if latencies else "-")
+        row.append(f"{nearest_rank(latencies, 0.5):.1f}" if latencies else "-")
         rows.append(row)
     out.append(table(["strategy"] + [f"comforted, {m}" for m in MODELS] + ["median repair ms (iot)"], rows))
     return "\n".join(out)
@@ -185,7 +220,7 @@ def stability_block(folder):
             f"{statistics.mean(r['distance'] for r in on_paired):.2f}" if n else "-",
             f"{100.0 * sum(r['same_first'] for r in on_paired) / n:.1f}%" if n else "-",
             f"{statistics.mean(r['makespan'] for r in on_paired):.1f}" if n else "-",
-            f"{statistics.median(r['seconds'] for r in mine):.3f}",
+            f"{nearest_rank([r['seconds'] for r in mine], 0.5):.3f}",
             str(proven) if s == "stable" else "-"])
     kinds = Counter(r["kind"] for r in runs if r["strategy"] == strategies[0])
     head = (f"{len(runs) // len(strategies)} perturbations ("
@@ -246,7 +281,7 @@ def proof_search_block():
                      str(sum("proven minimal by" in r["how"] for r in runs)),
                      f"{statistics.mean(by[search][k]['distance'] for k in both):.2f}",
                      str(sum(by[search][k]["distance"] < other[k]["distance"] for k in both)),
-                     f"{statistics.median(r['seconds'] for r in runs):.3f}"])
+                     f"{nearest_rank([r['seconds'] for r in runs], 0.5):.3f}"])
     return (f"{len(by['blind'])} perturbations, {len(both)} repaired validly under both.\n\n"
             + table(["proof search", "valid", "proven minimal", "distance (paired)", "closer than the other",
                      "median s"], rows))
@@ -279,10 +314,13 @@ def differential_block(folder=FUZZ):
 def differential_block_json(report):
     tasks = report["tasks"]
     rows = [[name, str(c["tasks"]), str(c["non_trivial"])] for name, c in sorted(report["classes"].items())
-            if name not in ("undecided", "missed_val_order_only")]
+            if name not in ("undecided", "missed_val_order_only", "missed_sub_epsilon_only")]
     rows.append(["undecided (never agreement)", str(report["undecided"]), ""])
     if report["missed_val_order_only"]:
         rows.append(["missed, a plan only by VAL's order of claims (neither)", str(report["missed_val_order_only"]), ""])
+    if report.get("missed_sub_epsilon_only"):
+        rows.append(["missed, a plan only with interfering happenings closer than epsilon (neither)",
+                     str(report["missed_sub_epsilon_only"]), ""])
     rows.append(["**disagreements**", f"**{report['disagreements']}**", ""])
     return (f"{tasks} tasks in {report['seconds']:.0f} s, {report['judgements']:,} plans judged by the reference "
             f"semantics; non-trivial {report['non_trivial']} ({100 * report['non_trivial'] / tasks:.1f} %), "
@@ -299,6 +337,98 @@ def oracle_against_val_block(folder=ORACLE_VAL):
                    counts["val_cannot_judge"], counts["oracle_cannot_judge"]]])
 
 
+def ledger_result(result):
+    """A ledger entry's result in a line: statuses, or per strategy valid
+    repairs and mean distance."""
+    if result is None:
+        return "never finished"
+    if "statuses" in result:
+        return (f"{result['problems']} problems: "
+                + ", ".join(f"{n} {s}" for s, n in result["statuses"].items()) + f"; {result['invalid']} invalid")
+    if "strategies" in result:
+        return "; ".join(f"{name} {s['valid']}/{s['runs']} valid (mean distance of those {s['mean_distance_valid']:.2f})"
+                         for name, s in result["strategies"].items())
+    return ", ".join(f"{k}: {v}" for k, v in result.items())
+
+
+def fleet_row_cells(r):
+    """One bench-home.json's cells: outcomes, and planning latency as nearest
+    ranks over every call, failed ones included (computed here from the
+    calls' seconds, not taken from the file's own quantiles)."""
+    s = r["summary"]
+    by_reason = r["planning_seconds_by_reason"]
+    every = [x for seconds in by_reason.values() for x in seconds]
+    failed = [x for reason in FAILED_CALLS for x in by_reason.get(reason, [])]
+    replanning = [x for reason in ("merge", "repair", "merge_failed", "repair_failed") for x in by_reason.get(reason, [])]
+    def q(values, share):
+        v = nearest_rank(values, share)
+        return "-" if v is None else f"{v:.3f}"
+    return [str(s["robots_down"]), str(s["goals"]),
+            f"{s['within_window']} ({100 * r['comforted_within_window_share']:.1f}%)",
+            f"{round(r['meetable_within_window_share'] * r['meetable_goals'])} of {r['meetable_goals']}",
+            str(r["never_served"]), str(r["in_course_at_end"]), f"{r['weighted_lateness_s']:.0f}",
+            f"{100 * r['robot_utilisation']:.1f}%",
+            f"{len(every)}: {q(every, 0.5)} / {q(every, 0.95)} / {q(every, 1.0)}",
+            f"{len(failed)}", q(replanning, 0.95)]
+
+
+def home_fleet_block(folder=FLEET, root=RESULTS):
+    """The fleet study (benchmarks/home_fleet.sh): every run, then what
+    breakdowns cost, paired by seed and setting."""
+    if not os.path.isdir(os.path.join(root, folder)):
+        raise FileNotFoundError(f"no fleet study in {os.path.join(root, folder)}")
+    def read(run, seed):
+        path = os.path.join(root, folder, run, f"seed-{seed}", "bench-home.json")
+        if not os.path.exists(path):
+            return None
+        with open(path) as f:
+            return json.load(f)
+    rows, cost = [], []
+    for seed in (1, 2, 3):
+        for run in FLEET_RUNS:
+            for variant in ("", "-breakdowns"):
+                r = read(run + variant, seed)
+                if r is not None:
+                    rows.append([str(seed), run + variant] + fleet_row_cells(r))
+    for run in FLEET_RUNS:
+        pairs = [(read(run, seed), read(run + "-breakdowns", seed)) for seed in (1, 2, 3)]
+        pairs = [(a, b) for a, b in pairs if a is not None and b is not None]
+        if not pairs:
+            continue
+        within = [100 * (b["comforted_within_window_share"] - a["comforted_within_window_share"]) for a, b in pairs]
+        lateness = [b["weighted_lateness_s"] - a["weighted_lateness_s"] for a, b in pairs]
+        dropped = [b["never_served"] - a["never_served"] for a, b in pairs]
+        downs = [b["summary"]["robots_down"] for a, b in pairs]
+        cost.append([run, str(len(pairs)), " / ".join(str(d) for d in downs),
+                     " / ".join(f"{x:+.1f}" for x in within) + f" (mean {sum(within) / len(within):+.1f})",
+                     " / ".join(f"{x:+.0f}" for x in lateness), " / ".join(f"{x:+d}" for x in dropped)])
+    head = ["seed", "run", "breakdowns", "goals", "within window", "meetable alone: within", "never served",
+            "in course at end", "weighted lateness s", "robots at work",
+            "planner calls: p50 / p95 / max s, every call", "calls that found no plan", "replanning p95 s"]
+    return (table(head, rows) + "\n\nWhat breakdowns cost (with minus without, the same seed and setting; seeds 1 / 2 / 3):\n\n"
+            + table(["setting", "seeds", "breakdowns", "within window, points", "weighted lateness s",
+                     "never served"], cost))
+
+
+def test_set_ledger_block():
+    """Every run the test-set ledger holds (benchmarks/test_set_ledger.jsonl),
+    in order, the ones that never finished and the repeats included."""
+    with open(LEDGER) as f:
+        lines = [json.loads(line) for line in f if line.strip()]
+    started = [l for l in lines if l["status"] == "started"]
+    finished = {l["id"]: l for l in lines if l["status"] == "finished"}
+    rows = []
+    for n, run in enumerate(started, 1):
+        end = finished.get(run["id"])
+        rows.append([n, run["harness"], run["test_set"], run["commit"][:7], run["reason"],
+                     run.get("repeat", "-"), ledger_result(end["result"] if end else None),
+                     f"`{os.path.relpath(run['out'], 'benchmarks')}`" if run["out"].startswith("benchmarks/") else f"`{run['out']}`",
+                     "yes" if "backfilled" in run else "-"])
+    return (f"{len(started)} runs on test sets, {len(finished)} finished.\n\n"
+            + table(["#", "harness", "test set", "commit", "the change it measures", "a repeat: why", "result",
+                     "results", "written after the fact"], rows))
+
+
 BLOCKS = {
     "differential": differential_block,
     "differential-seed1": lambda: differential_block(FUZZ_SEEDS[0]),
@@ -313,10 +443,18 @@ BLOCKS = {
     "tags-by-scatter": tags_by_scatter,
     "stability-1-5": lambda: stability_block(STABILITY[0]),
     "stability-6-10": lambda: stability_block(STABILITY[1]),
+    "stability-6-10-first-run": lambda: stability_block(STABILITY[2]),
+    "test-set-ledger": test_set_ledger_block,
     "stability-domains-1-5": lambda: stability_by_domain(STABILITY[0]),
     "stable-proof-search": proof_search_block,
     "camera-search": camera_search,
 }
+
+# The blocks of home/README.md.
+HOME_BLOCKS = {
+    "home-fleet": home_fleet_block,
+}
+READMES = [(README, BLOCKS), (HOME_README, HOME_BLOCKS)]
 
 
 def readme_blocks(text):
@@ -325,28 +463,37 @@ def readme_blocks(text):
 
 
 def main(argv):
+    check_nearest_rank()
+    if len(argv) > 2 and argv[1] == "--home-fleet":
+        print(home_fleet_block(os.path.basename(os.path.normpath(argv[2])), os.path.dirname(os.path.abspath(argv[2]))))
+        return 0
     if len(argv) > 1 and argv[1] in ("--check", "--write"):
-        with open(README) as f:
-            text = f.read()
-        found = readme_blocks(text)
-        if argv[1] == "--write":
-            for name, make in BLOCKS.items():
-                text = re.sub(rf"(<!-- figures:{name} -->\n).*?(<!-- /figures:{name} -->)",
-                              lambda m: m.group(1) + make() + "\n" + m.group(2), text, flags=re.S)
-            with open(README, "w") as f:
-                f.write(text)
-            return 0
-        bad = [n for n, make in BLOCKS.items() if found.get(n) != make()]
-        for n in bad:
-            print(f"README.md: the figures of block '{n}' differ from what {os.path.basename(__file__)} derives "
-                  f"from the results" if n in found else f"README.md: no block '{n}'", file=sys.stderr)
+        bad = []
+        for readme, blocks in READMES:
+            with open(readme) as f:
+                text = f.read()
+            found = readme_blocks(text)
+            if argv[1] == "--write":
+                for name, make in blocks.items():
+                    text = re.sub(rf"(<!-- figures:{name} -->\n).*?(<!-- /figures:{name} -->)",
+                                  lambda m: m.group(1) + make() + "\n" + m.group(2), text, flags=re.S)
+                with open(readme, "w") as f:
+                    f.write(text)
+                continue
+            shown = os.path.relpath(readme, os.path.join(HERE, ".."))
+            for n, make in blocks.items():
+                if found.get(n) != make():
+                    bad.append(n)
+                    print(f"{shown}: the figures of block '{n}' differ from what {os.path.basename(__file__)} derives "
+                          f"from the results" if n in found else f"{shown}: no block '{n}'", file=sys.stderr)
         return 1 if bad else 0
-    names = argv[1:] or list(BLOCKS)
+    every = {**BLOCKS, **HOME_BLOCKS}
+    names = argv[1:] or list(every)
     for name in names:
-        if name not in BLOCKS:
-            print(f"unknown block '{name}'; blocks: {', '.join(BLOCKS)}", file=sys.stderr)
+        if name not in every:
+            print(f"unknown block '{name}'; blocks: {', '.join(every)}", file=sys.stderr)
             return 2
-        print(f"<!-- figures:{name} -->\n{BLOCKS[name]()}\n<!-- /figures:{name} -->\n")
+        print(f"<!-- figures:{name} -->\n{every[name]()}\n<!-- /figures:{name} -->\n")
     return 0
 
 

@@ -12,6 +12,7 @@
 #include "benchmarks/harness/process_runner.h"
 #include "cli/commands.h"
 #include "cli/slurm_options.h"
+#include "cli/test_set_flags.h"
 
 namespace alplan::cli {
 namespace {
@@ -53,6 +54,7 @@ struct BenchPlannersOptions {
   std::string order;  // "": the planner's default
   std::vector<std::string> plan_args;
   SlurmFlags slurm;
+  bench::TestSetRunOptions test_set;
 };
 
 int run_planners(const BenchPlannersOptions& options) {
@@ -80,6 +82,7 @@ int run_planners(const BenchPlannersOptions& options) {
   o.search = options.search;
   o.order = options.order;
   o.plan_args = options.plan_args;
+  o.test_set = options.test_set;
   std::string error;
   if (!array_run(options.slurm, options.out, o.array, error)) {
     std::cerr << "error: " << error << "\n";
@@ -87,6 +90,9 @@ int run_planners(const BenchPlannersOptions& options) {
   }
   try {
     return bench::run_planner_bench(o, std::cout, std::cerr) == 0 ? kExitOk : kExitInvalid;
+  } catch (const bench::TestSetRefused& e) {
+    std::cerr << "error: refused: " << e.what() << "\n";
+    return kExitInputError;
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kExitInputError;
@@ -132,6 +138,7 @@ void add_bench_command(CLI::App& app, int& exit_code) {
                 "A flag for every alplan plan run, as given (repeat it; e.g. --plan-arg=--deferred)")
       ->allow_extra_args(false);
   add_slurm_options(p, planners->slurm);
+  add_test_set_flags(p, planners->test_set);
   p->callback([planners, &exit_code] { exit_code = run_planners(*planners); });
 
   add_bench_repair_command(bench, exit_code);

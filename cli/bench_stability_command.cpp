@@ -6,11 +6,14 @@
 
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "benchmarks/harness/stability_bench.h"
 #include "cli/commands.h"
+#include "cli/test_set_flags.h"
 #include "planner/search_configuration.h"
 #include "repair/repair_strategy.h"
 
@@ -28,6 +31,7 @@ struct BenchStabilityOptions {
   double repair_seconds = 10.0;
   double min_weight = 3.0;
   std::uint64_t expansions = 1000;
+  bench::TestSetRunOptions test_set;
 };
 
 std::vector<std::string> split(const std::string& list) {
@@ -115,6 +119,24 @@ int summarize(const BenchStabilityOptions& o) {
   }
 }
 
+// What the ledger keeps of a run: per strategy, runs, valid repairs and the
+// mean distance over its valid ones (the README's tables come from runs.json).
+nlohmann::json ledger_result(const bench::StabilityBenchResult& result) {
+  nlohmann::json strategies = nlohmann::json::object();
+  std::map<std::string, std::pair<double, int>> distances;
+  for (const bench::StabilityRun& r : result.runs) {
+    nlohmann::json& s = strategies[r.strategy];
+    s["runs"] = s.value("runs", 0) + 1;
+    s["valid"] = s.value("valid", 0) + (r.valid ? 1 : 0);
+    if (r.valid) {
+      distances[r.strategy].first += static_cast<double>(r.distance);
+      ++distances[r.strategy].second;
+    }
+  }
+  for (const auto& [name, sum] : distances) strategies[name]["mean_distance_valid"] = sum.first / sum.second;
+  return {{"strategies", strategies}, {"skipped", result.skipped.size()}};
+}
+
 int run_stability(BenchStabilityOptions o) {
   if (!o.summarize.empty()) return summarize(o);
   const std::string error = resolve(o);
@@ -124,10 +146,23 @@ int run_stability(BenchStabilityOptions o) {
   }
   o.bench.progress = &std::cerr;
   try {
+    std::vector<int> numbers;
+    for (int n = o.bench.first_problem; n <= o.bench.last_problem; ++n) numbers.push_back(n);
+    std::optional<bench::TestSetRun> ledger;
+    if (const std::optional<std::string> test_set = bench::instance_test_set(numbers)) {
+      ledger.emplace(bench::TestSetRunHead{*test_set, "bench stability", bench::command_line(), o.out}, o.test_set);
+    }
     const bench::StabilityBenchResult result = bench::run_stability_bench(o.bench);
     bench::write_stability_results(result, o.bench, o.out);
     std::cout << bench::stability_summary(result, o.bench) << "wrote " << o.out << "/runs.csv, runs.json, summary.md\n";
+    if (ledger) {
+      ledger->finish(ledger_result(result));
+      std::cerr << "recorded in the test-set ledger: " << ledger->ledger() << " (" << ledger->id() << ")\n";
+    }
     return 0;
+  } catch (const bench::TestSetRefused& e) {
+    std::cerr << "error: refused: " << e.what() << "\n";
+    return kExitInputError;
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kExitInputError;
@@ -160,6 +195,7 @@ void add_bench_stability_command(CLI::App* bench, int& exit_code) {
                 "stable: the complete search on the distance that proves its repair minimal (default "
                 "complete(wastar(lmcut, w=1, order=metric, preferred=false)), A*; blind for uniform-cost search)");
   s->add_option("--out", o->out, "Folder for runs.csv, runs.json, summary.md");
+  add_test_set_flags(s, o->test_set);
   s->add_option("--summarize", o->summarize, "Write a run folder's summary.md again from its runs.json; runs nothing");
   s->callback([o, &exit_code] { exit_code = run_stability(*o); });
 }

@@ -49,6 +49,10 @@ void add_home_run_options(CLI::App& cmd, home::HomeSettings& s) {
   cmd.add_option("--robot-repair", s.robot_repair_s,
                  "Seconds a broken-down robot (failure kind robot_down) is out of service")
       ->check(CLI::Range(0.0, 1e7));
+  cmd.add_option("--breakdown-rate", s.breakdown_rate_per_hour,
+                 "Breakdowns per robot and simulated hour in service, at random times (a Poisson process), besides "
+                 "drawn and scripted ones; each out of service --robot-repair seconds (default 0: none)")
+      ->check(CLI::Range(0.0, 100.0));
   cmd.add_flag("!--no-dispatch", s.dispatch,
                "With --fleet dispatch: plan each mission with every robot, not the nearest one per senior");
   add_battery_options(cmd, s);

@@ -3,22 +3,50 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <functional>
+
+#include "stats/quantile.h"
 
 namespace alplan::home {
 namespace {
 
+// Nearest ranks (stats/quantile.h): each a time some call took. None for no
+// call: null in JSON, "-" in the table.
 nlohmann::json latency(const std::vector<double>& seconds) {
-  return {{"plans", seconds.size()},
-          {"p50_s", quantile(seconds, 0.5)},
-          {"p95_s", quantile(seconds, 0.95)},
-          {"max_s", quantile(seconds, 1.0)}};
+  const auto rank = [&](double q) -> nlohmann::json {
+    if (seconds.empty()) return nullptr;
+    return stats::nearest_rank(seconds, q);
+  };
+  return {{"plans", seconds.size()}, {"p50_s", rank(0.5)}, {"p95_s", rank(0.95)}, {"max_s", rank(1.0)}};
+}
+
+std::string seconds_cell(const std::vector<double>& seconds, double q) {
+  if (seconds.empty()) return "-";
+  char cell[32];
+  std::snprintf(cell, sizeof cell, "%.3f", stats::nearest_rank(seconds, q));
+  return cell;
 }
 
 std::string row(const std::string& what, const std::vector<double>& seconds) {
-  char line[160];
-  std::snprintf(line, sizeof line, "| %-28s | %6zu | %8.3f | %8.3f | %8.3f |\n", what.c_str(), seconds.size(),
-                quantile(seconds, 0.5), quantile(seconds, 0.95), quantile(seconds, 1.0));
+  char line[200];
+  std::snprintf(line, sizeof line, "| %-28s | %6zu | %8s | %8s | %8s |\n", what.c_str(), seconds.size(),
+                seconds_cell(seconds, 0.5).c_str(), seconds_cell(seconds, 0.95).c_str(),
+                seconds_cell(seconds, 1.0).c_str());
   return line;
+}
+
+// A call that found no plan: its time is the time to the failure.
+bool is_failure(const std::string& reason) {
+  return reason == "none" || reason == "merge_failed" || reason == "repair_failed";
+}
+
+// Every call of the reasons `keep` accepts.
+std::vector<double> calls(const HomeSummary& summary, const std::function<bool(const std::string&)>& keep) {
+  std::vector<double> out;
+  for (const auto& [reason, seconds] : summary.planning_by_reason) {
+    if (keep(reason)) out.insert(out.end(), seconds.begin(), seconds.end());
+  }
+  return out;
 }
 
 // Replanning: merges and repairs, the calls that found no plan included.
@@ -26,13 +54,7 @@ bool is_replanning(const std::string& reason) {
   return reason == "merge" || reason == "repair" || reason == "merge_failed" || reason == "repair_failed";
 }
 
-std::vector<double> replanning_seconds(const HomeSummary& summary) {
-  std::vector<double> out;
-  for (const auto& [reason, seconds] : summary.planning_by_reason) {
-    if (is_replanning(reason)) out.insert(out.end(), seconds.begin(), seconds.end());
-  }
-  return out;
-}
+std::vector<double> replanning_seconds(const HomeSummary& summary) { return calls(summary, is_replanning); }
 
 // part / whole, 0 for no whole.
 double share(std::size_t part, std::size_t whole) {
@@ -63,7 +85,11 @@ nlohmann::json HomeBenchResult::json(const HomeSettings& settings) const {
           {"summary", summary.json()},
           {"planning", latency(summary.planning_seconds)},
           {"replanning", latency(replanning)},
+          {"planning_found", latency(calls(summary, [](const std::string& r) { return !is_failure(r); }))},
+          {"planning_failed", latency(calls(summary, is_failure))},
           {"planning_by_reason", by_reason},
+          // Every call's seconds by reason: a reader computes any quantile again.
+          {"planning_seconds_by_reason", summary.planning_by_reason},
           {"comforted_within_window_share", share(summary.within_window, summary.goals)},
           {"meetable_goals", summary.meetable},
           {"meetable_within_window_share", share(summary.meetable_within_window, summary.meetable)},
@@ -88,10 +114,12 @@ HomeBenchResult run_home_bench(const HomeSettings& settings, const std::function
 
 void print_home_bench(std::ostream& out, const HomeSettings& settings, const HomeBenchResult& r) {
   const HomeSummary& s = r.summary;
-  out << "| planning (seconds, wall)     | plans  |      p50 |      p95 |      max |\n"
+  out << "| planning (seconds, wall)     | calls  |      p50 |      p95 |      max |\n"
       << "|------------------------------|--------|----------|----------|----------|\n";
   for (const auto& [reason, seconds] : s.planning_by_reason) out << row(reason_label(reason), seconds);
-  out << row("replanning, failed included", replanning_seconds(s)) << row("every planner call", s.planning_seconds);
+  out << row("replanning, failed included", replanning_seconds(s))
+      << row("calls that found a plan", calls(s, [](const std::string& reason) { return !is_failure(reason); }))
+      << row("calls that found none", calls(s, is_failure)) << row("every planner call", s.planning_seconds);
   char line[400];
   std::snprintf(line, sizeof line,
                 "\n%zu goals: %zu comforted within their windows (%.1f%%), %zu late, %zu windows missed; "

@@ -64,9 +64,6 @@ struct HomeSummary {
   nlohmann::json json() const;
 };
 
-// The q-quantile (0..1) of the values, nearest rank; 0 for none.
-double quantile(std::vector<double> values, double q);
-
 // Throws std::invalid_argument (bad settings: an unknown strategy, senior,
 // observation model) or the loaders' errors naming the file.
 // `on_time`: told the simulated time as the run goes (a progress meter).

@@ -54,6 +54,8 @@ nlohmann::json HomeSettings::json() const {
   if (live) j["live"] = true;
   // Likewise only with batteries: runs without them keep their settings.
   if (battery) j["battery"] = battery_options.json();
+  // And only with breakdowns at random: older logs replay unchanged.
+  if (breakdown_rate_per_hour > 0.0) j["breakdown_rate_per_hour"] = breakdown_rate_per_hour;
   return j;
 }
 
@@ -86,6 +88,7 @@ HomeSettings HomeSettings::from_json(const nlohmann::json& j) {
     }
     s.until = j.at("until").get<double>();
     s.seed = j.at("seed").get<std::uint64_t>();
+    s.breakdown_rate_per_hour = j.value("breakdown_rate_per_hour", 0.0);  // written only when set
     const nlohmann::json& m = j.at("seniors_model");
     s.seniors.episodes_per_hour = m.at("episodes_per_hour").get<double>();
     s.seniors.calm_start_s = m.at("calm_start_s").get<double>();

@@ -123,6 +123,10 @@ struct HomeSettings {
   // With the failure kind "robot_down": how long a broken-down robot is out
   // of service before it stands again where it broke down.
   double robot_repair_s = 1800.0;
+  // Breakdowns at random, per robot and hour in service, besides those
+  // drawn against plans and those scripted: a Poisson process per robot
+  // (home/robot_faults.h), each out of service robot_repair_s. 0: none.
+  double breakdown_rate_per_hour = 0.0;
   // With "dispatch": each mission plans with the nearest free robot per
   // senior in need (home/robot_dispatch.h); off: with every robot.
   bool dispatch = true;

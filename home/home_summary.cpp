@@ -1,23 +1,27 @@
-// HomeSummary's figures (home_run.h).
-#include <algorithm>
-
+// HomeSummary's figures (home_run.h). Latency quantiles are nearest ranks
+// (stats/quantile.h) over every planner call, failed ones included; none for
+// no call (null in JSON).
 #include "home/home_run.h"
+#include "stats/quantile.h"
 
 namespace alplan::home {
+namespace {
 
-double quantile(std::vector<double> values, double q) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  const auto at = static_cast<std::size_t>(q * static_cast<double>(values.size() - 1) + 0.5);
-  return values[std::min(at, values.size() - 1)];
+// A quantile of no call is no number: null, never 0 (a latency nobody had).
+nlohmann::json nearest_rank_or_null(const std::vector<double>& seconds, double q) {
+  if (seconds.empty()) return nullptr;
+  return stats::nearest_rank(seconds, q);
 }
+
+}  // namespace
 
 nlohmann::json HomeSummary::json() const {
   nlohmann::json j = {{"goals", goals},         {"comforted", comforted},     {"within_window", within_window},
           {"windows_missed", windows_missed}, {"failures", failures}, {"plans", plans},
           {"merges", merges},       {"repairs", repairs},         {"repairs_failed", repairs_failed},
           {"objects_recognized", objects_recognized},
-          {"planning_p50_s", quantile(planning_seconds, 0.5)}, {"planning_p95_s", quantile(planning_seconds, 0.95)},
+          {"planning_p50_s", nearest_rank_or_null(planning_seconds, 0.5)},
+          {"planning_p95_s", nearest_rank_or_null(planning_seconds, 0.95)},
           {"episodes", episodes},   {"episodes_detected", episodes_detected}, {"false_alarms", false_alarms}, {"end_time", end_time},
           {"never_served", never_served}, {"in_course_at_end", in_course_at_end}, {"weighted_lateness", weighted_lateness},
           {"robots_down", robots_down}, {"robots", robots}, {"robot_busy_s", robot_busy_s}, {"superseded", superseded}};

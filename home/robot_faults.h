@@ -1,14 +1,16 @@
 // Robots that break down (the home's failure kind robot_down, issue 31).
-// The simulation's side: a breakdown scripted in the settings or drawn
-// within a new plan, the robot's actions halted where they are (their ends
-// never come), and the robot standing again where it broke down
-// robot_repair_s later. The home's side: each robot's own fault report,
+// The simulation's side: a breakdown scripted in the settings, drawn
+// within a new plan, or at random (settings.breakdown_rate_per_hour, issue
+// 43), the robot's actions halted where they are (their ends never come),
+// and the robot standing again where it broke down robot_repair_s later;
+// one breakdown of a robot at a time. The home's side: each robot's own fault report,
 // heard at the home's next look; the home knows nothing else of the world
 // from it.
 #pragma once
 
 #include <functional>
 #include <map>
+#include <random>
 #include <set>
 #include <string>
 #include <vector>
@@ -44,6 +46,19 @@ class RobotFaults {
   bool down(const std::string& robot) const { return down_.count(robot) != 0; }
 
  private:
+  // Breakdowns at random: while in service, each robot breaks down at the
+  // rate per hour whatever it is doing (a Poisson process in service time:
+  // care home robots fail working and idle alike), so the gaps between
+  // breakdowns are robot_repair_s plus an exponential draw. Drawn one at a
+  // time, the next when the last has begun (a live run has no end to draw
+  // up to), each robot from its own stream keyed by its name and the seed.
+  struct RandomBreakdowns {
+    std::mt19937_64 random;
+    double next = -1.0;  // the one scheduled; negative: none left in the run
+  };
+  void draw_random_after(const std::string& robot, double from);
+  // No breakdown of `robot` scheduled overlaps one at `at`.
+  bool free_at(const std::string& robot, double at) const;
   void schedule(const std::string& robot, double at);
   std::string last_room(const std::string& robot, const repair::WorldState& believed) const;
 
@@ -52,7 +67,8 @@ class RobotFaults {
   const HomeSettings& settings_;
   std::set<std::string> down_;                         // as reported
   std::map<std::string, std::string> down_at_;         // where each broke down
-  std::map<std::string, double> out_of_service_until_;  // the simulation's: breakdowns scheduled
+  std::map<std::string, std::vector<double>> scheduled_;  // the simulation's: each robot's breakdowns
+  std::map<std::string, RandomBreakdowns> random_;        // with a breakdown rate
 };
 
 }  // namespace alplan::home

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <set>
 
 #include "oracle/derived.h"
@@ -97,6 +98,7 @@ class Judge::Run {
   bool record_effects(const Member& m, int id, const State& before, Ownership& ownership, bool claim_reads,
                       double time, HappeningChanges& changes);
   bool invariants_hold(const State& after, double time, double next);
+  bool separated(const Happening& h, Ownership& claims, double time);
   bool finish(const State& final_state, const State* frozen, double frozen_time);
   std::string member_text(const Member& m) const;
 
@@ -111,6 +113,14 @@ class Judge::Run {
   std::map<std::string, double> counts_;  // preference violations counted in formulas
   std::set<int> running_;                 // steps between their start and their end
   std::map<int, std::map<const pddl::Effect*, bool>> decided_;  // deferred conditional effects, by step
+  // Under the epsilon-separated rule: the happenings of the last epsilon,
+  // with what their members claimed and their texts.
+  struct RecentHappening {
+    double time = 0.0;
+    Ownership claims;
+    std::vector<std::string> members;
+  };
+  std::deque<RecentHappening> recent_;
 };
 
 bool Judge::Run::resolve() {
@@ -314,6 +324,28 @@ bool Judge::Run::invariants_hold(const State& after, double time, double next) {
   return true;
 }
 
+bool Judge::Run::separated(const Happening& h, Ownership& claims, double time) {
+  // Within a relative 1e-9 of epsilon is epsilon: a planner's times are
+  // sums of epsilons and durations written with a few decimals.
+  const double epsilon = j_.options_.epsilon_separation * (1.0 - 1e-9);
+  while (!recent_.empty() && time - recent_.front().time >= epsilon) recent_.pop_front();
+  for (const RecentHappening& r : recent_) {
+    if (r.time >= time) continue;
+    if (const std::optional<Ownership::Conflict> c = claims.conflict_with_earlier(r.claims)) {
+      const std::string key = c->fluent ? to_string(world_.fluents().name(c->key)) : to_string(world_.atoms().name(c->key));
+      return fail(Failure::Mutex,
+                  r.members[static_cast<std::size_t>(c->first)] + " at " + number(r.time) + " and " +
+                      member_text(h.members[static_cast<std::size_t>(c->second)]) + " at " + number(time) +
+                      " both touch " + key + ", one writing it, closer than epsilon (the epsilon-separated rule)",
+                  time);
+    }
+  }
+  RecentHappening mine{time, std::move(claims), {}};
+  for (const Member& m : h.members) mine.members.push_back(member_text(m));
+  recent_.push_back(std::move(mine));
+  return true;
+}
+
 void Judge::Run::execute() {
   State state = initial_state();
   double now = 0.0;
@@ -347,6 +379,12 @@ void Judge::Run::execute() {
                              ", one writing it, at " + number(now) + " (the symmetric rule)",
                          now));
       }
+    }
+    if (j_.options_.epsilon_separation > 0.0) {
+      // A lone member's reads were not claimed (nothing to interfere with
+      // inside its happening); a happening just before may.
+      if (!several && !h.members.empty() && !claim_reads(h.members.front(), 0, ownership)) return;
+      if (!separated(h, ownership, now)) return;
     }
     changes.apply_to(state);
     close_derived(world_, state, conditions_);

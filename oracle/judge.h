@@ -45,6 +45,12 @@ struct JudgeOptions {
   // Also judge each pair of a happening's members by all they claim,
   // whatever VAL's order of claims (ownership.h): stricter than VAL.
   bool symmetric_mutex = false;
+  // Above 0: also a mutex where two happenings at distinct times closer
+  // than this touch one fact or fluent, one writing it, in a way that does
+  // not commute (the symmetric rule across the gap; ownership.h). Stricter
+  // than VAL, which judges distinct times apart however close: what a
+  // planner that separates interfering happenings by epsilon can produce.
+  double epsilon_separation = 0.0;
 };
 
 enum class Failure : unsigned char {

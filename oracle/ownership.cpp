@@ -86,29 +86,37 @@ std::optional<int> common(const std::set<int>& a, const std::set<int>& b) {
 
 }  // namespace
 
+std::optional<std::pair<bool, int>> Ownership::pair_conflict(const Claims& x, const Claims& y) {
+  for (const auto& [p, q] : {std::pair{&x, &y}, std::pair{&y, &x}}) {
+    // A fact: read by one and written by the other, or added by one and
+    // deleted by the other (a member both adding and deleting it counts as
+    // both).
+    if (auto key = common(p->reads, q->adds)) return std::pair{false, *key};
+    if (auto key = common(p->reads, q->deletes)) return std::pair{false, *key};
+    if (auto key = common(p->adds, q->deletes)) return std::pair{false, *key};
+    // A fluent: read by one and written by the other; assigned by one and
+    // written in any way by the other (increases commute).
+    if (auto key = common(p->fluent_reads, q->increases)) return std::pair{true, *key};
+    if (auto key = common(p->fluent_reads, q->assigns)) return std::pair{true, *key};
+    if (auto key = common(p->assigns, q->increases)) return std::pair{true, *key};
+    if (auto key = common(p->assigns, q->assigns)) return std::pair{true, *key};
+  }
+  return std::nullopt;
+}
+
 std::optional<Ownership::Conflict> Ownership::symmetric_conflict() const {
   for (auto a = claims_.begin(); a != claims_.end(); ++a) {
     for (auto b = std::next(a); b != claims_.end(); ++b) {
-      const Claims& x = a->second;
-      const Claims& y = b->second;
-      auto found = [&](std::optional<int> key, bool fluent) -> std::optional<Conflict> {
-        if (!key) return std::nullopt;
-        return Conflict{a->first, b->first, fluent, *key};
-      };
-      // A fact: read by one and written by the other, or added by one and
-      // deleted by the other (a member both adding and deleting it counts
-      // as both).
-      for (const auto& [p, q] : {std::pair{&x, &y}, std::pair{&y, &x}}) {
-        if (auto c = found(common(p->reads, q->adds), false)) return c;
-        if (auto c = found(common(p->reads, q->deletes), false)) return c;
-        if (auto c = found(common(p->adds, q->deletes), false)) return c;
-        // A fluent: read by one and written by the other; assigned by one
-        // and written in any way by the other (increases commute).
-        if (auto c = found(common(p->fluent_reads, q->increases), true)) return c;
-        if (auto c = found(common(p->fluent_reads, q->assigns), true)) return c;
-        if (auto c = found(common(p->assigns, q->increases), true)) return c;
-        if (auto c = found(common(p->assigns, q->assigns), true)) return c;
-      }
+      if (const auto c = pair_conflict(a->second, b->second)) return Conflict{a->first, b->first, c->first, c->second};
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<Ownership::Conflict> Ownership::conflict_with_earlier(const Ownership& earlier) const {
+  for (const auto& [a, x] : earlier.claims_) {
+    for (const auto& [b, y] : claims_) {
+      if (const auto c = pair_conflict(x, y)) return Conflict{a, b, c->first, c->second};
     }
   }
   return std::nullopt;

@@ -38,6 +38,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <utility>
 
 namespace alplan::oracle {
 
@@ -60,11 +61,20 @@ class Ownership {
     int key = 0;
   };
   std::optional<Conflict> symmetric_conflict() const;
+  // The same pairwise rule between a member of `earlier` (first) and one of
+  // this happening (second): the epsilon-separated rule
+  // (JudgeOptions::epsilon_separation) asks it of happenings at distinct
+  // times closer than epsilon, which a planner separating interfering
+  // happenings by epsilon (Fox & Long 2003, section 5) cannot produce.
+  std::optional<Conflict> conflict_with_earlier(const Ownership& earlier) const;
 
  private:
   struct Claims {
     std::set<int> reads, adds, deletes, fluent_reads, increases, assigns;
   };
+  // Whether one member's claims and another's do not commute: the fluent
+  // flag and the key of the first clash.
+  static std::optional<std::pair<bool, int>> pair_conflict(const Claims& x, const Claims& y);
   std::map<int, Claims> claims_;  // every claim of each member, granted or not
 
   enum class Kind : unsigned char { Read, Add, Delete, ReadAdd, ReadDelete, Assign };

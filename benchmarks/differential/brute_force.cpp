@@ -214,6 +214,7 @@ BruteForceResult brute_force_plan(std::shared_ptr<const pddl::Domain> domain,
     judge_options.tolerance = options.epsilon;
     judge_options.exact = true;
     judge_options.symmetric_mutex = options.symmetric_mutex;
+    if (options.epsilon_separated) judge_options.epsilon_separation = options.epsilon;
     oracle::Judge judge(domain, problem, judge_options);
     oracle::World world(domain, problem);
     std::vector<double> til_times;

@@ -42,6 +42,9 @@ struct BruteForceOptions {
   std::uint64_t max_judgements = 300000;
   // Judge with the symmetric mutex rule as well (oracle/ownership.h).
   bool symmetric_mutex = false;
+  // Judge with the epsilon-separated rule as well (oracle/judge.h): no
+  // interfering happenings closer than `epsilon`.
+  bool epsilon_separated = false;
 };
 
 struct BruteForceResult {

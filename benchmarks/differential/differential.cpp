@@ -129,6 +129,20 @@ bool only_val_order_gives_a_plan(const oracle::LoadedTask& task, const Different
   return !strict.plan && !strict.cut_short;
 }
 
+// Every plan in the bound needs two interfering happenings closer than
+// epsilon (under the symmetric rule too, so that this class and the one
+// above do not overlap): a planner separating them by epsilon cannot
+// produce one (oracle/judge.h, epsilon_separation).
+bool only_sub_epsilon_gives_a_plan(const oracle::LoadedTask& task, const DifferentialOptions& options,
+                                   std::uint64_t& judgements) {
+  BruteForceOptions strict = options.brute_force;
+  strict.symmetric_mutex = true;
+  strict.epsilon_separated = true;
+  const BruteForceResult separated = brute_force_plan(task.domain, task.problem, strict);
+  judgements += separated.judgements;
+  return !separated.plan && !separated.cut_short;
+}
+
 TaskOutcome disagree(TaskOutcome outcome, Disagreement d, const std::string& kind) {
   d.kind = kind;
   outcome.cls = kind;
@@ -182,6 +196,10 @@ TaskOutcome check_task(const std::string& domain, const std::string& problem, co
     // as agreement.
     if (planner.status != "unsolvable" && only_val_order_gives_a_plan(task, options, outcome.judgements)) {
       outcome.cls = "missed_val_order_only";
+      return outcome;
+    }
+    if (planner.status != "unsolvable" && only_sub_epsilon_gives_a_plan(task, options, outcome.judgements)) {
+      outcome.cls = "missed_sub_epsilon_only";
       return outcome;
     }
     return disagree(outcome, d, planner.status == "unsolvable" ? "false_unsolvable" : "missed_plan");
@@ -305,9 +323,9 @@ DifferentialReport run_differential(const DifferentialOptions& options, std::ost
 namespace {
 
 // How a report's classes add up: agreement, undecided, misses VAL's order
-// alone explains, disagreements.
+// alone explains, misses only a sub-epsilon gap explains, disagreements.
 struct Totals {
-  std::uint64_t non_trivial = 0, undecided = 0, disagreements = 0, order_only = 0;
+  std::uint64_t non_trivial = 0, undecided = 0, disagreements = 0, order_only = 0, sub_epsilon_only = 0;
 };
 
 Totals totals_of(const DifferentialReport& r) {
@@ -318,6 +336,7 @@ Totals totals_of(const DifferentialReport& r) {
     t.non_trivial += c.non_trivial;
     if (cls == "undecided") t.undecided += c.tasks;
     else if (cls == "missed_val_order_only") t.order_only += c.tasks;
+    else if (cls == "missed_sub_epsilon_only") t.sub_epsilon_only += c.tasks;
     else if (!agreeing.count(cls)) t.disagreements += c.tasks;
   }
   return t;
@@ -335,6 +354,10 @@ void print_report(const DifferentialReport& r, std::ostream& out) {
   out << "undecided: " << t.undecided << " (" << share(t.undecided) << " %), never counted as agreement\n";
   if (t.order_only > 0) {
     out << "missed where only VAL's order of claims gives a plan: " << t.order_only
+        << ", neither agreement nor disagreement\n";
+  }
+  if (t.sub_epsilon_only > 0) {
+    out << "missed where every plan needs interfering happenings closer than epsilon: " << t.sub_epsilon_only
         << ", neither agreement nor disagreement\n";
   }
   out << "non-trivial: " << t.non_trivial << " (" << share(t.non_trivial) << " %)\n";
@@ -361,6 +384,7 @@ void write_report_json(const DifferentialReport& r, std::ostream& out) {
   j["undecided"] = t.undecided;
   j["non_trivial"] = t.non_trivial;
   j["missed_val_order_only"] = t.order_only;
+  j["missed_sub_epsilon_only"] = t.sub_epsilon_only;
   j["disagreements"] = t.disagreements;
   auto counts = [](const std::map<std::string, ClassCounts>& m) {
     nlohmann::json o = nlohmann::json::object();

@@ -24,6 +24,14 @@
 //                       symmetric mutex rule, oracle/ownership.h, refuses
 //                       them all): printed apart, never counted as agreement
 //                       nor as a disagreement;
+//  missed_sub_epsilon_only  the planner found no plan (no proof), and every
+//                       plan the brute force finds in its bound, under the
+//                       symmetric rule, puts two interfering happenings
+//                       closer than epsilon (a timed literal 0.0005 after an
+//                       end that reads what it deletes): a planner that
+//                       separates interfering happenings by epsilon cannot
+//                       produce one (oracle/judge.h, epsilon_separation);
+//                       printed apart like the class above;
 // or in a disagreement:
 //  invalid_plan         the reference semantics rejects the planner's plan;
 //  unjudged_plan        it cannot judge it (an undefined value is read);

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "benchmarks/harness/paired_statistics.h"
+#include "stats/paired_comparison.h"
 #include "benchmarks/harness/repair_study.h"
 
 namespace alplan::bench {
@@ -24,6 +24,6 @@ namespace alplan::bench {
 // `by_model`: each model's runs (runs.json of bench repair); `strategies`
 // in the order to report. Markdown.
 std::string observation_tables(const std::map<std::string, std::vector<StudyRun>>& by_model,
-                               const std::vector<std::string>& strategies, const BootstrapOptions& bootstrap);
+                               const std::vector<std::string>& strategies, const stats::BootstrapOptions& bootstrap);
 
 }  // namespace alplan::bench

@@ -202,23 +202,81 @@ int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions
 
 }  // namespace
 
+namespace {
+
+// What the ledger keeps of a run on a test set: how many problems ended how.
+nlohmann::json status_counts(const std::vector<Run>& runs) {
+  std::map<std::string, int> counts;
+  for (const Run& run : runs) ++counts[run.status];
+  return {{"problems", runs.size()}, {"statuses", counts}};
+}
+
+// Each chosen problem's instance number: the N of instance-N, else (a list
+// file's problems) its position among its domain's problems in the suite.
+std::vector<int> instance_numbers(const std::vector<SuiteProblem>& all, const std::vector<SuiteProblem>& chosen) {
+  std::vector<int> numbers;
+  for (const SuiteProblem& p : chosen) {
+    if (p.number > 0) {
+      numbers.push_back(p.number);
+      continue;
+    }
+    int position = 0;
+    for (const SuiteProblem& q : all) {
+      if (q.domain != p.domain) continue;
+      ++position;
+      if (q.problem_file == p.problem_file) break;
+    }
+    numbers.push_back(position);
+  }
+  return numbers;
+}
+
+// The ledger's entry for a run over these problems, where they hold a test
+// set (test_set_ledger.h); none otherwise. Throws TestSetRefused.
+std::optional<TestSetRun> open_test_set_run(const std::vector<SuiteProblem>& all, const std::vector<SuiteProblem>& suite,
+                                            const PlannerBenchOptions& options) {
+  const std::optional<std::string> test_set = instance_test_set(instance_numbers(all, suite));
+  if (!test_set) return std::nullopt;
+  return TestSetRun({*test_set, "bench planners", command_line(), options.out_dir}, options.test_set);
+}
+
+}  // namespace
+
 int run_planner_bench(const PlannerBenchOptions& options, std::ostream& out, std::ostream& progress) {
-  const std::vector<SuiteProblem> suite =
-      problems_in_range(first_problems(load_suite(options.suite), options.first), options.from, options.to);
-  std::filesystem::create_directories(plans_dir(options));
+  const std::vector<SuiteProblem> all = load_suite(options.suite);
+  const std::vector<SuiteProblem> suite = problems_in_range(first_problems(all, options.first), options.from, options.to);
   switch (options.array.role) {
-    case ArrayRole::submit:
+    case ArrayRole::submit: {
+      // The array's tasks and merge are one run: recorded when submitted,
+      // and its tasks and merge must run the submitted binary.
+      std::optional<TestSetRun> ledger = open_test_set_run(all, suite, options);
+      std::filesystem::create_directories(plans_dir(options));
       submit(suite, options, out);
+      if (ledger) ledger->finish({{"submitted", "a Slurm array: its result is what bench merge prints"}});
       return 0;
+    }
     case ArrayRole::task:
+      check_array_build(options.out_dir, options.test_set);
+      std::filesystem::create_directories(plans_dir(options));
       run_array_task(options.array.dir, options.array.task, [&] { run_task(suite, options, progress); });
       return 0;
     case ArrayRole::merge:
+      check_array_build(options.out_dir, options.test_set);
       return report_planner_bench(merged_runs(suite, options), options, out);
     case ArrayRole::local:
       break;
   }
-  return report_planner_bench(run_locally(suite, options, progress), options, out);
+  std::optional<TestSetRun> ledger = open_test_set_run(all, suite, options);
+  std::filesystem::create_directories(plans_dir(options));
+  const std::vector<Run> runs = run_locally(suite, options, progress);
+  const int invalid = report_planner_bench(runs, options, out);
+  if (ledger) {
+    nlohmann::json result = status_counts(runs);
+    result["invalid"] = invalid;
+    ledger->finish(result);
+    progress << "recorded in the test-set ledger: " << ledger->ledger() << " (" << ledger->id() << ")\n";
+  }
+  return invalid;
 }
 
 namespace {

@@ -15,6 +15,7 @@
 
 #include "benchmarks/harness/process_runner.h"
 #include "benchmarks/harness/slurm_array.h"
+#include "benchmarks/harness/test_set_ledger.h"
 
 namespace alplan::bench {
 
@@ -39,6 +40,9 @@ struct PlannerBenchOptions {
   // Local, or one role of a Slurm job array (slurm_array.h): the tasks
   // write their runs' plans to out_dir/plans as a local run does.
   ArrayRun array;
+  // Where the problems hold a test set (instances 6-10): the ledger's
+  // reason, repeat, tree and binary (test_set_ledger.h).
+  TestSetRunOptions test_set;
 };
 
 // Returns the number of invalid plans (the harness's own failure count);

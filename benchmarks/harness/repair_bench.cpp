@@ -23,6 +23,7 @@
 #include "repair/random_events.h"
 #include "repair/reformulation.h"
 #include "repair/world_simulator.h"
+#include "stats/quantile.h"
 
 namespace alplan::bench {
 namespace {
@@ -264,7 +265,7 @@ nlohmann::json paper_home_latencies(const RepairBenchOptions& o) {
       const domains::ScenarioRun run = domains::run_paper_scenario(scenario, so);
       for (const repair::RepairRecord& r : run.report.repairs) latencies.push_back(r.seconds * 1000.0);
     }
-    medians[name] = percentile(latencies, 0.5);
+    medians[name] = stats::nearest_rank(latencies, 0.5);
   }
   return medians;
 }
@@ -365,7 +366,7 @@ nlohmann::json summary_extra(const RepairBenchOptions& o, const std::vector<RunR
       if (r.strategy == "replan") inside.insert(inside.end(), r.latencies_ms.begin(), r.latencies_ms.end());
       if (r.strategy == "replan-external") outside.insert(outside.end(), r.latencies_ms.begin(), r.latencies_ms.end());
     }
-    extra["external_over_in_process_latency_ratio"] = percentile(outside, 0.5) / percentile(inside, 0.5);
+    extra["external_over_in_process_latency_ratio"] = stats::nearest_rank(outside, 0.5) / stats::nearest_rank(inside, 0.5);
   }
   return extra;
 }

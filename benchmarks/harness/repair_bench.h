@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "benchmarks/harness/paired_statistics.h"
+#include "stats/paired_comparison.h"
 #include "benchmarks/harness/repair_study.h"
 #include "benchmarks/harness/slurm_array.h"
 #include "domains/home_generator.h"
@@ -62,7 +62,7 @@ struct RepairBenchOptions {
   repair::StrategyOptions strategy_options;
   // What the monitor sees of the world (iot: the paper's sensors).
   repair::ObservationOptions observation;
-  BootstrapOptions bootstrap;
+  stats::BootstrapOptions bootstrap;
   bool paper_home = true;  // also time the strategies on the paper's three scenarios
   // The camera: wraps the simulator (which knows each thing's type) with a
   // real recognizer (perception/vision/drawing_camera.h); none: the simulator

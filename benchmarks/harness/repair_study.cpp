@@ -7,6 +7,8 @@
 
 #include "benchmarks/harness/svg_chart.h"
 #include "benchmarks/harness/table.h"
+#include "stats/multiple_testing.h"
+#include "stats/quantile.h"
 
 namespace alplan::bench {
 namespace {
@@ -80,8 +82,8 @@ Cell summarise(const std::vector<const StudyRun*>& runs, const std::string& stra
 
 // The metric's values of `strategy` and of the reference, paired by run;
 // a run's home is its cluster, since runs of one home are not independent.
-PairedComparison compare(const std::vector<const StudyRun*>& runs, const std::string& reference,
-                         const std::string& strategy, const Metric& metric, const BootstrapOptions& bootstrap) {
+stats::PairedComparison compare(const std::vector<const StudyRun*>& runs, const std::string& reference,
+                         const std::string& strategy, const Metric& metric, const stats::BootstrapOptions& bootstrap) {
   std::map<std::pair<std::string, int>, const StudyRun*> base;
   for (const StudyRun* r : runs) {
     if (r->strategy == reference) base[{r->home, r->run}] = r;
@@ -96,16 +98,16 @@ PairedComparison compare(const std::vector<const StudyRun*>& runs, const std::st
     b.push_back(metric.value(*r).value_or(std::nan("")));
     homes.push_back(r->home);
   }
-  return compare_paired(a, b, homes, bootstrap);
+  return stats::compare_paired(a, b, homes, bootstrap);
 }
 
-std::string verdict(const PairedComparison& c, const Metric& m) {
+std::string verdict(const stats::PairedComparison& c, const Metric& m) {
   if (c.pairs == 0) return "no pairs";
   if (!c.significant()) return "tie";
   return (c.mean_difference > 0) == m.higher_is_better ? "better" : "worse";
 }
 
-std::string interval(const PairedComparison& c, int decimals) {
+std::string interval(const stats::PairedComparison& c, int decimals) {
   return "[" + fixed(c.ci_low, decimals) + ", " + fixed(c.ci_high, decimals) + "]";
 }
 
@@ -125,9 +127,9 @@ struct Study {
   const std::vector<StudyRun>& runs;
   const std::vector<std::string>& strategies;
   const std::string& reference;
-  const BootstrapOptions& bootstrap;
+  const stats::BootstrapOptions& bootstrap;
   std::vector<std::string> kinds;  // as drawn, then "all"
-  std::map<std::string, std::map<std::string, std::map<std::string, PairedComparison>>> comparisons;
+  std::map<std::string, std::map<std::string, std::map<std::string, stats::PairedComparison>>> comparisons;
 };
 
 void summary_tables(const Study& s, StudyAnalysis& out, std::ostringstream& md) {
@@ -138,16 +140,16 @@ void summary_tables(const Study& s, StudyAnalysis& out, std::ostringstream& md) 
     for (const std::string& strategy : s.strategies) {
       const Cell c = summarise(runs, strategy);
       if (c.runs == 0) continue;
-      const double median = percentile(c.latencies, 0.5), p95 = percentile(c.latencies, 0.95);
+      const double median = stats::nearest_rank(c.latencies, 0.5), p95 = stats::nearest_rank(c.latencies, 0.95);
       table.add({kind, strategy, std::to_string(c.runs),
                  std::to_string(c.comforted) + " (" + fixed(100.0 * static_cast<double>(c.comforted) / static_cast<double>(c.runs), 0) + "%)",
-                 fixed(median, 3), fixed(p95, 3), fixed(percentile(c.perception, 0.5), 3), fixed(mean_of(c.stability), 2),
+                 fixed(median, 3), fixed(p95, 3), fixed(stats::nearest_rank(c.perception, 0.5), 3), fixed(mean_of(c.stability), 2),
                  fixed(mean_of(c.delay), 1), fixed(mean_of(c.makespan), 1), fixed(mean_of(c.cost), 1), fixed(mean_of(c.calls), 2)});
       out.json["kinds"][kind]["strategies"][strategy] = {
           {"runs", c.runs}, {"comforted", c.comforted},
           {"success_rate", static_cast<double>(c.comforted) / static_cast<double>(c.runs)},
           {"latency_median_ms", number_or_null(median)}, {"latency_p95_ms", number_or_null(p95)},
-          {"perception_median_ms", number_or_null(percentile(c.perception, 0.5))},
+          {"perception_median_ms", number_or_null(stats::nearest_rank(c.perception, 0.5))},
           {"stability_mean", number_or_null(mean_of(c.stability))}, {"delay_mean", number_or_null(mean_of(c.delay))},
           {"makespan_mean", number_or_null(mean_of(c.makespan))}, {"cost_mean", number_or_null(mean_of(c.cost))},
           {"planner_calls_mean", number_or_null(mean_of(c.calls))}};
@@ -163,18 +165,18 @@ void summary_tables(const Study& s, StudyAnalysis& out, std::ostringstream& md) 
 // together, so that a kind's table as a whole keeps the 5% error rate.
 void compare_kind(Study& s, const std::string& kind) {
   const std::vector<const StudyRun*> runs = of_kind(s.runs, kind);
-  std::vector<PairedComparison*> family;
+  std::vector<stats::PairedComparison*> family;
   for (const std::string& strategy : s.strategies) {
     if (strategy == s.reference) continue;
     for (const Metric& m : metrics()) {
-      const PairedComparison c = compare(runs, s.reference, strategy, m, s.bootstrap);
+      const stats::PairedComparison c = compare(runs, s.reference, strategy, m, s.bootstrap);
       if (c.pairs == 0) continue;
       family.push_back(&(s.comparisons[kind][strategy][m.name] = c));
     }
   }
   std::vector<double> p;
-  for (const PairedComparison* c : family) p.push_back(c->wilcoxon_p);
-  const std::vector<double> adjusted = holm_adjust(p);
+  for (const stats::PairedComparison* c : family) p.push_back(c->wilcoxon_p);
+  const std::vector<double> adjusted = stats::holm_adjust(p);
   for (std::size_t i = 0; i < family.size(); ++i) family[i]->wilcoxon_p_adjusted = adjusted[i];
 }
 
@@ -189,7 +191,7 @@ void comparison_tables(Study& s, StudyAnalysis& out, std::ostringstream& md) {
       for (const Metric& m : metrics()) {
         const auto k = s.comparisons[kind].find(strategy);
         if (k == s.comparisons[kind].end() || !k->second.count(m.name)) continue;
-        const PairedComparison& c = k->second.at(m.name);
+        const stats::PairedComparison& c = k->second.at(m.name);
         const int d = decimals_for(m);
         table.add({kind, strategy, m.name, std::to_string(c.pairs), std::to_string(c.clusters), std::to_string(c.nonzero),
                    fixed(c.mean_difference, d), interval(c, d), p_text(c.wilcoxon_p), p_text(c.wilcoxon_p_adjusted),
@@ -229,7 +231,7 @@ void wins_table(const Study& s, StudyAnalysis& out, std::ostringstream& md) {
       const auto k = s.comparisons.find(kind);
       for (const std::string& strategy : s.strategies) {
         if (k == s.comparisons.end() || !k->second.count(strategy) || !k->second.at(strategy).count(name)) continue;
-        const PairedComparison& c = k->second.at(strategy).at(name);
+        const stats::PairedComparison& c = k->second.at(strategy).at(name);
         const std::string v = verdict(c, m);
         const std::string entry = strategy + " (" + fixed(c.mean_difference, decimals_for(m)) + ")";
         if (v == "better") better += (better.empty() ? "" : ", ") + entry;
@@ -254,7 +256,7 @@ void stability_finding(const Study& s, StudyAnalysis& out, std::ostringstream& m
   const auto all = s.comparisons.find("all");
   for (const std::string& strategy : {std::string("adapt"), std::string("patch")}) {
     if (all == s.comparisons.end() || !all->second.count(strategy)) continue;
-    const PairedComparison& c = all->second.at(strategy).at("stability");
+    const stats::PairedComparison& c = all->second.at(strategy).at("stability");
     const bool holds = c.significant() && c.mean_difference < 0;
     md << "- " << strategy << " against " << s.reference << ": " << fixed(c.mean_difference, 2)
        << " actions removed + added per run, 95% CI " << interval(c, 2) << ", Wilcoxon p " << p_text(c.wilcoxon_p)
@@ -276,7 +278,7 @@ void forest_plots(const Study& s, StudyAnalysis& out) {
       if (k == s.comparisons.end()) continue;
       for (const std::string& strategy : s.strategies) {
         if (!k->second.count(strategy) || !k->second.at(strategy).count(m.name)) continue;
-        const PairedComparison& c = k->second.at(strategy).at(m.name);
+        const stats::PairedComparison& c = k->second.at(strategy).at(m.name);
         rows.push_back({kind + " / " + strategy, c.mean_difference, c.ci_low, c.ci_high, c.significant()});
       }
     }
@@ -295,7 +297,7 @@ void forest_plots(const Study& s, StudyAnalysis& out) {
 }  // namespace
 
 StudyAnalysis analyse_repair_study(const std::vector<StudyRun>& runs, const std::vector<std::string>& strategies,
-                                   const std::string& reference, const BootstrapOptions& bootstrap) {
+                                   const std::string& reference, const stats::BootstrapOptions& bootstrap) {
   Study s{runs, strategies, reference, bootstrap, {}, {}};
   for (const StudyRun& r : runs) {
     if (std::find(s.kinds.begin(), s.kinds.end(), r.kind) == s.kinds.end()) s.kinds.push_back(r.kind);

@@ -5,7 +5,7 @@
 // (Fox, Gerevini, Long & Serina, ICAPS 2006: actions removed plus added),
 // delay until the senior is comforted, makespan, cost and planner calls;
 // each difference with a 95% cluster bootstrap interval, paired tests on
-// the per-home means and effect sizes (paired_statistics.h: a home's runs
+// the per-home means and effect sizes (stats/paired_comparison.h: a home's runs
 // are not independent, so the home is the unit), the signed-rank p-values
 // Holm-adjusted (Holm 1979) over all strategies and metrics of one failure
 // kind; then where each strategy wins. A pure function of the runs, so a
@@ -19,7 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "benchmarks/harness/paired_statistics.h"
+#include "stats/paired_comparison.h"
 
 namespace alplan::bench {
 
@@ -50,6 +50,6 @@ struct StudyAnalysis {
 // cluster interval excludes zero and the Holm-adjusted p is below 0.05,
 // else "tie".
 StudyAnalysis analyse_repair_study(const std::vector<StudyRun>& runs, const std::vector<std::string>& strategies,
-                                   const std::string& reference, const BootstrapOptions& bootstrap);
+                                   const std::string& reference, const stats::BootstrapOptions& bootstrap);
 
 }  // namespace alplan::bench

@@ -12,9 +12,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "benchmarks/harness/paired_statistics.h"
 #include "benchmarks/harness/stability_bench.h"
 #include "benchmarks/harness/table.h"
+#include "stats/multiple_testing.h"
+#include "stats/paired_comparison.h"
+#include "stats/quantile.h"
 
 namespace alplan::bench {
 namespace {
@@ -81,8 +83,8 @@ void strategy_table(std::ostream& out, const std::map<std::string, Aggregate>& b
                paired > 0 ? fixed(mean(a.added), 2) : "-", paired > 0 ? fixed(mean(a.removed), 2) : "-",
                paired > 0 ? fixed(100.0 * static_cast<double>(a.same_first) / paired, 1) + "%" : "-",
                paired > 0 ? fixed(mean(a.makespan), 1) : "-",
-               paired > 0 ? fixed(percentile(a.seconds, 0.5), 3) : "-",
-               paired > 0 ? fixed(percentile(a.seconds, 0.95), 3) : "-"});
+               paired > 0 ? fixed(stats::nearest_rank(a.seconds, 0.5), 3) : "-",
+               paired > 0 ? fixed(stats::nearest_rank(a.seconds, 0.95), 3) : "-"});
   }
   table.print_markdown(out);
 }
@@ -97,7 +99,7 @@ void comparison_table(std::ostream& out, const std::vector<StabilityRun>& runs, 
   }
   struct Row {
     std::string strategy, measure;
-    PairedComparison c;
+    stats::PairedComparison c;
   };
   std::vector<Row> rows;
   const std::vector<std::pair<std::string, double (*)(const StabilityRun&)>> measures{
@@ -115,17 +117,17 @@ void comparison_table(std::ostream& out, const std::vector<StabilityRun>& runs, 
         other.push_back(value(*runs_of.at(s)));
         problems.push_back(runs_of.at(reference)->domain + "/" + std::to_string(runs_of.at(reference)->problem));
       }
-      if (!ref.empty()) rows.push_back({s, name, compare_paired(ref, other, problems)});
+      if (!ref.empty()) rows.push_back({s, name, stats::compare_paired(ref, other, problems)});
     }
   }
   // One family: every strategy on every measure (Holm 1979).
   std::vector<double> p;
   for (const Row& r : rows) p.push_back(r.c.wilcoxon_p);
-  const std::vector<double> adjusted = holm_adjust(p);
+  const std::vector<double> adjusted = stats::holm_adjust(p);
   Table table({"strategy", "measure", "pairs in problems", "mean difference", "95% CI (problems resampled)",
                "Wilcoxon p (problem means)", "Holm p", "r_rb", "runs lower / higher"});
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    const PairedComparison& c = rows[i].c;
+    const stats::PairedComparison& c = rows[i].c;
     table.add({rows[i].strategy, rows[i].measure, std::to_string(c.pairs) + " in " + std::to_string(c.clusters),
                fixed(c.mean_difference, 3), "[" + fixed(c.ci_low, 3) + ", " + fixed(c.ci_high, 3) + "]",
                fixed(c.wilcoxon_p, 4), fixed(adjusted[i], 4), fixed(c.rank_biserial, 2),

@@ -8,6 +8,8 @@
 #include <optional>
 #include <thread>
 
+#include "stats/quantile.h"
+
 namespace alplan::perception::service {
 namespace {
 
@@ -17,10 +19,9 @@ std::uint64_t unix_ms_now() {
                                         .count());
 }
 
+// Nearest rank (stats/quantile.h); 0 where no reading was answered.
 double percentile(const std::vector<double>& sorted, double q) {
-  if (sorted.empty()) return 0.0;
-  const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(sorted.size())));
-  return sorted[std::min(sorted.size(), std::max<std::size_t>(rank, 1)) - 1];
+  return sorted.empty() ? 0.0 : stats::nearest_rank_of_sorted(sorted, q);
 }
 
 void check_options(const FleetOptions& o, std::size_t registered) {

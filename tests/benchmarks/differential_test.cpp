@@ -218,6 +218,52 @@ TEST_CASE("a plan VAL accepts only by its order of claims is counted apart, and 
   CHECK(json.str().find("\"missed_val_order_only\": {") != std::string::npos);  // the class, with its counts
 }
 
+TEST_CASE("a plan only a gap smaller than epsilon gives is counted apart, and the planner claims no proof") {
+  // d's end reads f: at 0.5 a timed literal adds f (a mutex at one time),
+  // from 0.5005 to 0.5014 the end lies within epsilon of that literal, and
+  // at 0.501 within epsilon of the one deleting f at 0.5015. VAL accepts
+  // `0.0005: (d) [0.5]` (distinct times are judged apart however close);
+  // a planner separating interfering happenings by epsilon cannot produce
+  // it (seed-3 tasks 12884903807 and 12884910343, reduced by hand).
+  const std::string domain = R"(
+(define (domain sub) (:requirements :strips :durative-actions :timed-initial-literals)
+  (:predicates (f) (g))
+  (:durative-action d :parameters () :duration (= ?duration 0.5)
+    :condition (and (at start (f)) (at end (f))) :effect (at end (g)))))";
+  const std::string problem =
+      "(define (problem s) (:domain sub) (:init (f) (at 0.5 (f)) (at 0.5015 (not (f)))) (:goal (g)))";
+  DifferentialOptions options;
+  options.planner_time_limit = 2.0;
+  const TaskOutcome outcome = check_task(domain, problem, options);
+  INFO(outcome.cls << (outcome.disagreement ? ": " + outcome.disagreement->message : std::string()));
+  CHECK_FALSE(outcome.disagreement);
+  CHECK(outcome.cls == "missed_sub_epsilon_only");
+  CHECK(outcome.witness.find("(d)") != std::string::npos);
+  // The reference semantics itself: valid as VAL judges, a mutex under the
+  // epsilon-separated rule, naming the literal and the gap.
+  const oracle::LoadedTask task = oracle::load_task_text(domain, problem);
+  REQUIRE(task.ok());
+  oracle::TimedPlan plan;
+  plan.steps.push_back({0.0005, "d", {}, 0.5, 1});
+  oracle::JudgeOptions val;
+  val.exact = true;
+  CHECK(oracle::Judge(task.domain, task.problem, val).judge(plan).valid());
+  oracle::JudgeOptions separated = val;
+  separated.epsilon_separation = 0.001;
+  const oracle::Verdict strict = oracle::Judge(task.domain, task.problem, separated).judge(plan);
+  CHECK(strict.failure == oracle::Failure::Mutex);
+  CHECK(strict.reason.find("closer than epsilon") != std::string::npos);
+  DifferentialReport report;
+  report.tasks = 1;
+  report.by_class["missed_sub_epsilon_only"].tasks = 1;
+  const std::string text = printed(report);
+  CHECK(text.find("disagreements: 0") != std::string::npos);
+  CHECK(text.find("closer than epsilon: 1") != std::string::npos);
+  std::ostringstream json;
+  write_report_json(report, json);
+  CHECK(json.str().find("\"missed_sub_epsilon_only\": 1") != std::string::npos);
+}
+
 TEST_CASE("an invalid plan of the planner is a disagreement the reference semantics names") {
   DifferentialOptions options;
   const std::string domain = R"(

@@ -106,7 +106,7 @@ TEST_CASE("the study's analysis tells a strategy that brings a substitute from o
   // the homes' means, whose smallest exact two-sided p is 2 / 2^homes, and
   // Holm multiplies it by up to the family's 8 metrics: 6 homes give
   // 8 * 2/64 = 0.25, 10 homes 8 * 2/1024 = 0.016.
-  bench::BootstrapOptions bootstrap;
+  stats::BootstrapOptions bootstrap;
   bootstrap.resamples = 500;
   const std::vector<std::string> strategies{"replan", "substitute"};
   const bench::StudyAnalysis a =

@@ -337,4 +337,43 @@ TEST_CASE("windows as preferences: the planner serves first the senior whose win
   CHECK(first_served(settings) == "senior7");
 }
 
+TEST_CASE("breakdowns at random: a Poisson process per robot, one breakdown at a time, the same for a seed", "[home][fleet]") {
+  HomeSettings s = scripted({}, 36000.0);  // ten quiet hours: the robots idle
+  s.breakdown_rate_per_hour = 2.0;
+  s.robot_repair_s = 600.0;
+  // A scripted breakdown late in the run: random ones still come before it,
+  // and none while it lasts.
+  s.breakdowns = {{"robot2", 30000.0}};
+  const auto downs = [](const HomeSettings& settings) {
+    EventLog log;
+    const HomeSummary summary = run_home(settings, log);
+    std::map<std::string, std::vector<double>> times;
+    for (const LogEvent& e : log.events()) {
+      if (e.type == "robot_down") times[e.robot].push_back(e.time);
+    }
+    std::size_t all = 0;
+    for (const auto& [robot, t] : times) all += t.size();
+    CHECK(summary.robots_down == all);
+    return times;
+  };
+  const auto times = downs(s);
+  REQUIRE(times.size() == 2);  // both robots of the default home
+  CHECK(std::count_if(times.at("robot2").begin(), times.at("robot2").end(),
+                      [](double t) { return t >= 30000.0 && t <= 30000.0 + 5.0; }) == 1);  // heard at the next step
+  CHECK(std::count_if(times.at("robot2").begin(), times.at("robot2").end(), [](double t) { return t < 30000.0; }) >= 5);
+  for (const auto& [robot, t] : times) {
+    // A renewal process with dead time: 2 an hour, out 1/6 h each, gives
+    // 2 / (1 + 2/6) = 1.5 an hour, 15 in ten hours; a rate read per second
+    // or per day would give about 60 or under 1.
+    CHECK(t.size() >= 7);
+    CHECK(t.size() <= 25);
+    for (std::size_t i = 1; i < t.size(); ++i) CHECK(t[i] - t[i - 1] >= s.robot_repair_s - 5.0);  // the home's step
+  }
+  CHECK(downs(s) == times);
+  HomeSettings none = s;
+  none.breakdown_rate_per_hour = 0.0;
+  none.breakdowns.clear();
+  CHECK(downs(none).empty());
+}
+
 }  // namespace alplan::home

@@ -1,11 +1,12 @@
-#include "benchmarks/harness/paired_statistics.h"
+#include "stats/paired_comparison.h"
+#include "stats/rank_tests.h"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <string>
 
-using namespace alplan::bench;
+using namespace alplan::stats;
 
 TEST_CASE("the sign test is the exact binomial, two-sided") {
   CHECK(sign_test_p(0, 0) == 1.0);
@@ -78,22 +79,6 @@ TEST_CASE("ranks tie within a tolerance, grouped against each group's first valu
   CHECK(absolute_ranks({1.0 + 1.2e-9, 1.0, -(1.0 + 0.6e-9)}, 1e-9) == std::vector<double>{3.0, 1.5, 1.5});
   // A difference within the tolerance of zero is a zero, and dropped.
   CHECK(signed_rank_test({1e-12, 1.0, 2.0}).n == 2);
-}
-
-TEST_CASE("Holm's step-down adjustment") {
-  // {0.01, 0.04, 0.03, 0.005}, m = 4, sorted 0.005, 0.01, 0.03, 0.04:
-  // 4 * 0.005 = 0.02; 3 * 0.01 = 0.03; 2 * 0.03 = 0.06; 1 * 0.04 = 0.04,
-  // raised to 0.06 to stay monotone. In the given order: 0.03, 0.06, 0.06, 0.02.
-  const std::vector<double> adjusted = holm_adjust({0.01, 0.04, 0.03, 0.005});
-  REQUIRE(adjusted.size() == 4);
-  CHECK(adjusted[0] == Approx(0.03));
-  CHECK(adjusted[1] == Approx(0.06));
-  CHECK(adjusted[2] == Approx(0.06));
-  CHECK(adjusted[3] == Approx(0.02));
-  // Capped at 1: 2 * 0.5 = 1; 0.6 raised to 1.
-  CHECK(holm_adjust({0.5, 0.6}) == std::vector<double>{1.0, 1.0});
-  CHECK(holm_adjust({0.2}) == std::vector<double>{0.2});
-  CHECK(holm_adjust({}).empty());
 }
 
 TEST_CASE("effect sizes: matched-pairs rank-biserial (Kerby 2014) and d_z") {

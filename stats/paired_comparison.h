@@ -22,9 +22,10 @@
 //   their standard deviation (n - 1) (Cohen 1988; Lakens 2013, Front.
 //   Psychol. 4:863).
 // Without cluster ids every pair is its own cluster, which is the plain
-// run bootstrap and run-level tests (what this file did before issue 32).
+// run bootstrap and run-level tests. The tests themselves are in
+// rank_tests.h, the corrections for a family in multiple_testing.h.
 // A caller testing a family of hypotheses adjusts the p-values with
-// holm_adjust (Holm 1979) and stores the adjusted signed-rank p in
+// holm_adjust (multiple_testing.h) and stores the adjusted signed-rank p in
 // `wilcoxon_p_adjusted`. Deterministic for a seed.
 #pragma once
 
@@ -33,7 +34,7 @@
 #include <string>
 #include <vector>
 
-namespace alplan::bench {
+namespace alplan::stats {
 
 struct PairedComparison {
   std::size_t pairs = 0;     // runs with a value on both sides
@@ -79,41 +80,4 @@ struct BootstrapOptions {
 PairedComparison compare_paired(const std::vector<double>& reference, const std::vector<double>& other,
                                 const std::vector<std::string>& clusters = {}, const BootstrapOptions& options = {});
 
-// The signed-rank test on one sample of differences (a cluster's mean each).
-struct SignedRank {
-  std::size_t n = 0;      // non-zero differences
-  double w_plus = 0.0;    // sum of the ranks of the positive ones
-  double w_minus = 0.0;   // of the negative ones
-  double tie_term = 0.0;  // sum of t^3 - t over groups of t tied ranks
-  bool exact = true;      // p by enumeration, else the normal approximation
-  double p = 1.0;         // two-sided
-};
-// Differences within tie_tolerance of zero count as zero and are dropped.
-SignedRank signed_rank_test(const std::vector<double>& differences, double tie_tolerance = 1e-9);
-double wilcoxon_signed_rank_p(const std::vector<double>& differences, double tie_tolerance = 1e-9);
-
-// Ranks 1..n of |values|, ties (the tolerance as in BootstrapOptions)
-// averaged: sorted by magnitude, a group runs while a magnitude is within
-// tolerance of the group's first one, so the grouping is deterministic.
-std::vector<double> absolute_ranks(const std::vector<double>& values, double tie_tolerance);
-
-// Kerby's (2014) simple difference: (W+ - W-) / (W+ + W-); 0 without ranks.
-double rank_biserial(const SignedRank& test);
-// mean / sample standard deviation; 0 when every value is 0, NaN when the
-// deviation is 0 otherwise or fewer than 2 values.
-double standardized_mean_difference(const std::vector<double>& values);
-
-// Two-sided exact binomial p.
-double sign_test_p(std::size_t positive, std::size_t nonzero);
-
-// Holm's (1979) step-down adjustment of a family's p-values, returned in
-// the given order: with the p sorted ascending, p_(i) becomes
-// max over j <= i of min(1, (m - j + 1) p_(j)). Rejecting where the adjusted
-// p is below alpha controls the family-wise error rate at alpha.
-std::vector<double> holm_adjust(const std::vector<double>& p);
-
-// The p-quantile (0..1) of `values`, linear between order statistics; NaN
-// for none. The bootstrap's interval and the studies' medians and p95s.
-double percentile(std::vector<double> values, double p);
-
-}  // namespace alplan::bench
+}  // namespace alplan::stats
