@@ -49,7 +49,9 @@ LEDGER = os.path.join(HERE, "test_set_ledger.jsonl")
 MODELS = ["full", "iot", "camera"]
 FUZZ = "fuzz-planner-2000-issue42-2026-12-02"
 FUZZ_SEEDS = ["fuzz-planner-seed1-issue42-2026-12-06", "fuzz-planner-seed2-issue42-2026-12-06",
-              "fuzz-planner-seed1-issue42-2026-12-07", "fuzz-planner-seed2-issue42-2026-12-07"]
+              "fuzz-planner-seed1-issue42-2026-12-07", "fuzz-planner-seed2-issue42-2026-12-07",
+              "fuzz-planner-seed1-issue42-final-2026-12-07", "fuzz-planner-seed2-issue42-final-2026-12-07",
+              "fuzz-planner-seed3-issue42-final-2026-12-07", "fuzz-planner-seed3-issue42-subepsilon-2026-12-07"]
 ORACLE_VAL = "oracle-against-val-300-2026-12-02"
 
 
@@ -228,6 +230,39 @@ def stability_block(folder):
             f"strategy, {len(data['skipped'])} draws skipped.")
     return head + "\n\n" + table(["strategy", "valid", "distance (paired)", "same first step", "makespan (paired)",
                                   "median s (all runs)", "proven minimal"], rows)
+
+
+def prioritized(reference, other, key):
+    """+1 where `other` wins, -1 where the reference wins, 0 for a tie: a
+    valid repair beats none, then the lower value (stats/prioritized_comparison.h,
+    written here on its own)."""
+    if reference["valid"] != other["valid"]:
+        return 1 if other["valid"] else -1
+    if not reference["valid"]:
+        return 0
+    a, b = reference[key], other[key]
+    if abs(a - b) <= 1e-6 * max(1.0, abs(a), abs(b)):
+        return 0
+    return 1 if b < a else -1
+
+
+def stability_itt_block(folder):
+    """Every perturbation, each strategy against replan, success first, then
+    the distance and the makespan: wins / ties / losses and the net benefit
+    (Buyse 2010); the intervals and tests are in the folder's summary.md."""
+    runs = load(f"{folder}/runs.json")["runs"]
+    strategies = strategies_of(runs)
+    by_key = defaultdict(dict)
+    for r in runs:
+        by_key[(r["domain"], r["problem"], r["kind"], r["perturbation"])][r["strategy"]] = r
+    rows = []
+    for s in strategies[1:]:
+        for key in ("distance", "makespan"):
+            scores = [prioritized(v[strategies[0]], v[s], key) for v in by_key.values() if strategies[0] in v and s in v]
+            wins, losses = scores.count(1), scores.count(-1)
+            rows.append([s, key, str(len(scores)), f"{wins} / {scores.count(0)} / {losses}",
+                         f"{(wins - losses) / len(scores):+.3f}"])
+    return table(["strategy", "against replan on", "perturbations", "wins / ties / losses", "net benefit"], rows)
 
 
 def stability_by_domain(folder):
@@ -435,6 +470,10 @@ BLOCKS = {
     "differential-seed2": lambda: differential_block(FUZZ_SEEDS[1]),
     "differential-seed1-happenings": lambda: differential_block(FUZZ_SEEDS[2]),
     "differential-seed2-happenings": lambda: differential_block(FUZZ_SEEDS[3]),
+    "differential-seed1-final": lambda: differential_block(FUZZ_SEEDS[4]),
+    "differential-seed2-final": lambda: differential_block(FUZZ_SEEDS[5]),
+    "differential-seed3-final": lambda: differential_block(FUZZ_SEEDS[6]),
+    "differential-seed3-subepsilon": lambda: differential_block(FUZZ_SEEDS[7]),
     "oracle-against-val": oracle_against_val_block,
     "study-mix": study_mix,
     "study-switch": study_switch,
@@ -444,6 +483,9 @@ BLOCKS = {
     "stability-1-5": lambda: stability_block(STABILITY[0]),
     "stability-6-10": lambda: stability_block(STABILITY[1]),
     "stability-6-10-first-run": lambda: stability_block(STABILITY[2]),
+    "stability-itt-1-5": lambda: stability_itt_block(STABILITY[0]),
+    "stability-itt-6-10-first-run": lambda: stability_itt_block(STABILITY[2]),
+    "stability-itt-6-10": lambda: stability_itt_block(STABILITY[1]),
     "test-set-ledger": test_set_ledger_block,
     "stability-domains-1-5": lambda: stability_by_domain(STABILITY[0]),
     "stable-proof-search": proof_search_block,
