@@ -98,11 +98,20 @@ def strategies_of(runs):
     return seen
 
 
+# Strategies the study ran but its tables leave out, each with the block
+# that says why (issue 43: switch's outcomes are replan's; study-switch).
+OUT_OF_TABLES = {"switch"}
+
+
+def tabled(strategies):
+    return [s for s in strategies if s not in OUT_OF_TABLES]
+
+
 def study_mix(folder=STUDY):
     """The failure mix and what each strategy comforted, per model."""
     by_model = {m: load(f"{folder}/{m}/runs.json") for m in MODELS}
     iot = by_model["iot"]
-    strategies = strategies_of(iot)
+    strategies = tabled(strategies_of(iot))
     mix = Counter(r["kind"] for r in iot if r["strategy"] == strategies[0])
     out = [f"Runs per strategy: {sum(mix.values())} in {len({r['home'] for r in iot})} homes. Failure kinds drawn: "
            + ", ".join(f"{n} {k}" for k, n in sorted(mix.items(), key=lambda kv: (-kv[1], kv[0]))) + ".", ""]
@@ -156,7 +165,7 @@ def study_wins(folder=STUDY, model="iot"):
     """Where each strategy wins against replan: the verdicts of summary.json
     (cluster interval excluding zero and Holm-adjusted p below 0.05)."""
     summary = load(f"{folder}/{model}/summary.json")
-    strategies = [s for s in strategies_of(load(f"{folder}/{model}/runs.json")) if s != "replan"]
+    strategies = [s for s in tabled(strategies_of(load(f"{folder}/{model}/runs.json"))) if s != "replan"]
     rows = []
     for kind in KINDS:
         against = summary["kinds"].get(kind, {}).get("against_replan")
@@ -166,17 +175,38 @@ def study_wins(folder=STUDY, model="iot"):
     return table(["failure kind"] + [label for _, label in WIN_METRICS], rows)
 
 
-def study_switch():
-    """How often switch took one of its alternatives instead of replanning."""
-    runs = [r for r in load(f"{STUDY}/iot/runs.json") if r["strategy"] == "switch"]
+def same_outcome(a, b):
+    """Two runs of one failure end alike: comforted or not, and the same
+    delay and cost (within rounding)."""
+    if a["comforted"] != b["comforted"]:
+        return False
+    close = lambda x, y: (x is None and y is None) or (x is not None and y is not None and abs(x - y) <= 1e-6 * max(1, abs(x), abs(y)))
+    return close(a.get("delay"), b.get("delay")) and close(a.get("cost"), b.get("cost"))
+
+
+def study_switch(model="iot"):
+    """Why switch is out of the study's tables: per failure kind, how often
+    it took an alternative, how often its run ended as replan's did, and its
+    net benefit on the metric against replan (every run counted), from
+    summary.json."""
+    runs = load(f"{STUDY}/{model}/runs.json")
+    summary = load(f"{STUDY}/{model}/summary.json")
+    replan = {(r["home"], r["run"]): r for r in runs if r["strategy"] == "replan"}
+    mine = [r for r in runs if r["strategy"] == "switch"]
     rows = []
-    for kind in sorted({r["kind"] for r in runs}):
-        mine = [r for r in runs if r["kind"] == kind]
-        repairs = sum(r["repairs"] for r in mine)
-        fallbacks = sum(r.get("fallbacks", 0) for r in mine)
-        rows.append([kind, repairs, repairs - fallbacks, fallbacks,
-                     f"{statistics.mean(r['planner_calls'] for r in mine):.2f}"])
-    return table(["failure kind", "repairs", "switched to an alternative", "replanned", "planner calls a run"], rows)
+    for kind in [k for k in KINDS if k != "all"] + ["all"]:
+        of_kind = [r for r in mine if kind == "all" or r["kind"] == kind]
+        if not of_kind:
+            continue
+        repairs = sum(r["repairs"] for r in of_kind)
+        fallbacks = sum(r.get("fallbacks", 0) for r in of_kind)
+        same = sum(same_outcome(r, replan[(r["home"], r["run"])]) for r in of_kind)
+        m = summary["kinds"][kind]["against_replan"]["switch"]["metric"]
+        rows.append([kind, len(of_kind), repairs - fallbacks, f"{same} of {len(of_kind)}",
+                     f"{m['mean_difference']:+.3f} [{m['ci_low']:+.3f}, {m['ci_high']:+.3f}]",
+                     f"{m['wilcoxon_p_holm']:.2g}", m["verdict"]])
+    return table(["failure kind", "runs", "repairs that switched to an alternative", "ended as replan's run",
+                  "metric: net benefit against replan [95% CI]", "Holm p", "verdict"], rows)
 
 
 def tags_by_scatter():
@@ -186,7 +216,7 @@ def tags_by_scatter():
     for folder, scatter in SCATTERS:
         runs = {m: {(r["home"], r["run"], r["strategy"]): r for r in load(f"{TAGS}/{folder}/{m}/runs.json")
                     if r["kind"] == "iot"} for m in ("iot", "camera")}
-        for s in ("replan", "adapt", "switch"):
+        for s in tabled(("replan", "adapt", "switch")):
             both = [(runs["iot"][k], runs["camera"][k]) for k in runs["iot"]
                     if k[2] == s and k in runs["camera"] and runs["iot"][k]["comforted"] and runs["camera"][k]["comforted"]]
             d = [a["delay"] - b["delay"] for a, b in both]
@@ -286,7 +316,7 @@ def camera_search(folder=STUDY):
     steps_elsewhere = sum(r.get("search_steps", 0) for m in ("full", "iot") for r in by_model[m])
     runs_elsewhere = sum(len(by_model[m]) for m in ("full", "iot"))
     rows = []
-    for s in strategies_of(by_model["iot"]):
+    for s in tabled(strategies_of(by_model["iot"])):
         iot = [r for r in by_model["iot"] if r["strategy"] == s and r["kind"] == "moves"]
         camera = [r for r in by_model["camera"] if r["strategy"] == s and r["kind"] == "moves"]
         found = [r["search_steps"] for r in camera if r["comforted"]]

@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "benchmarks/harness/observation_study.h"
+#include "benchmarks/harness/repair_study_folder.h"
 #include "benchmarks/harness/process_runner.h"
 #include "benchmarks/harness/repair_bench.h"
 #include "cli/commands.h"
@@ -35,7 +36,7 @@ struct BenchRepairOptions {
   std::string events = "arrival,iot,sibling,moves,emotion,overrun,two";
   std::string observe = "iot";
   std::string recognizer = "cnn";
-  std::string summarize;  // a multi-model run's folder: its observation.md again, nothing run
+  std::string summarize;  // a run's folder: its summaries again from its runs, nothing run
   SlurmFlags slurm;
 };
 
@@ -89,11 +90,20 @@ int summarize_models(const BenchRepairOptions& o) {
       if (std::find(strategies.begin(), strategies.end(), r.strategy) == strategies.end()) strategies.push_back(r.strategy);
     }
   }
-  if (by_model.size() < 2) {
-    std::cerr << "error: --summarize " << o.summarize << ": needs the runs.json of two observation models or more "
-              << "(full/, iot/, camera/), found " << by_model.size() << "\n";
+  if (by_model.empty()) {
+    std::cerr << "error: --summarize " << o.summarize << ": no full/, iot/ or camera/ runs.json in it\n";
     return kExitInputError;
   }
+  for (const auto& [model, runs] : by_model) {
+    try {
+      bench::summarise_study_folder(o.summarize + "/" + model, o.bench.bootstrap);
+    } catch (const std::exception& e) {
+      std::cerr << "error: " << e.what() << "\n";
+      return kExitInputError;
+    }
+    std::cout << "wrote " << o.summarize << "/" << model << "/summary.md, summary.json and plots/\n";
+  }
+  if (by_model.size() < 2) return 0;  // observation.md compares two models or more
   const std::string tables = bench::observation_tables(by_model, strategies, o.bench.bootstrap);
   std::ofstream out(o.summarize + "/observation.md");
   out << tables;
@@ -225,8 +235,9 @@ void add_bench_repair_command(CLI::App* bench, int& exit_code) {
   r->add_flag("!--no-paper-home", o->bench.paper_home, "Skip timing the strategies on the paper's three scenarios");
   r->add_option("--out", o->bench.out_dir, "Folder for runs.csv, runs.json, summary.md, summary.json, plots/");
   r->add_option("--summarize", o->summarize,
-                "Write a multi-model run folder's observation.md again from its full/, iot/, camera/ runs.json; "
-                "runs nothing");
+                "Summarise a run folder again from its full/, iot/, camera/ runs.json: each model's summary.md "
+                "tables, summary.json and plots/, and observation.md where there are two models or more; runs "
+                "nothing");
   r->add_flag("!--no-grounding-reuse", o->bench.reuse_grounding,
               "Ground every repair's problem from scratch instead of reusing the grounding made when execution starts");
   r->add_option("--adapt-expansions", o->bench.strategy_options.adapt_expansions,

@@ -4,11 +4,16 @@
 // and over all, success rate, repair latency (median, p95), plan stability
 // (Fox, Gerevini, Long & Serina, ICAPS 2006: actions removed plus added),
 // delay until the senior is comforted, makespan, cost and planner calls;
-// each difference with a 95% cluster bootstrap interval, paired tests on
-// the per-home means and effect sizes (stats/paired_comparison.h: a home's runs
-// are not independent, so the home is the unit), the signed-rank p-values
-// Holm-adjusted (Holm 1979) over all strategies and metrics of one failure
-// kind; then where each strategy wins. A pure function of the runs, so a
+// every run counted (intention to treat): the metrics every run has as
+// paired differences, those only a comforted run has (delay, makespan,
+// cost, metric) as a net benefit with success first (Buyse 2010,
+// stats/prioritized_comparison.h); each with a 95% cluster bootstrap
+// interval, paired tests on the per-home means and effect sizes
+// (stats/paired_comparison.h: a home's runs are not independent, so the
+// home is the unit), the signed-rank p-values Holm-adjusted (Holm 1979)
+// over all strategies and metrics of one failure kind; then where each
+// strategy wins. The comforted-only metrics on the runs both comforted are
+// a labelled secondary table (json against_<reference>_common_set). A pure function of the runs, so a
 // test can feed it runs made by hand.
 #pragma once
 

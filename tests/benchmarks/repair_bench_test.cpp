@@ -114,18 +114,35 @@ TEST_CASE("the study's analysis tells a strategy that brings a substitute from o
   for (const std::string kind : {"sibling", "all"}) {
     CHECK(verdict(a, kind, "cost") == "better");
     CHECK(verdict(a, kind, "metric") == "better");  // makespan + cost: -480 - h in home h
-    CHECK(verdict(a, kind, "delay") == "worse");    // a substitute is fetched, a suggestion is not
+    // Every run counted: replan is sooner where it comforts (16 runs), but
+    // fails 4 runs that substitute comforts; in the four homes with a
+    // failure the two cancel, and 6 homes are too few for a verdict.
+    CHECK(verdict(a, kind, "delay") == "tie");
     CHECK(verdict(a, kind, "latency_ms") == "tie");
     CHECK(a.json.at("wins").at(kind).at("cost").at("substitute") == "better");
+    // On the runs both comforted, the secondary table, a substitute is
+    // fetched and a suggestion is not: later.
+    CHECK(a.json.at("kinds").at(kind).at("against_replan_common_set").at("substitute").at("delay").at("verdict") ==
+          "worse");
   }
+  const nlohmann::json& delay = a.json.at("kinds").at("sibling").at("against_replan").at("substitute").at("delay");
+  CHECK(delay.at("pairs") == 20);
+  CHECK(delay.at("wins") == 4);
+  CHECK(delay.at("losses") == 16);
+  CHECK(delay.at("mean_difference").get<double>() == Approx(-0.6));
   const nlohmann::json& cost = a.json.at("kinds").at("sibling").at("against_replan").at("substitute").at("cost");
   CHECK(cost.at("homes") == 10);
-  CHECK(cost.at("pairs") == 16);  // 20 runs; replan failed the second run of homes 0, 3, 6 and 9
-  CHECK(cost.at("mean_difference") == -500.0);
-  CHECK(cost.at("rank_biserial") == -1.0);
+  CHECK(cost.at("pairs") == 20);  // every run: replan's 4 failures count as losses for replan
+  CHECK(cost.at("wins") == 20);
+  CHECK(cost.at("mean_difference") == 1.0);  // the net benefit
+  CHECK(cost.at("rank_biserial") == 1.0);
   CHECK(cost.at("wilcoxon_p").get<double>() == Approx(2.0 / 1024.0));
   CHECK(cost.at("wilcoxon_p_holm").get<double>() > cost.at("wilcoxon_p").get<double>());
   CHECK(cost.at("wilcoxon_p_holm").get<double>() < 0.05);
+  const nlohmann::json& common =
+      a.json.at("kinds").at("sibling").at("against_replan_common_set").at("substitute").at("cost");
+  CHECK(common.at("pairs") == 16);  // 20 runs; replan failed the second run of homes 0, 3, 6 and 9
+  CHECK(common.at("mean_difference") == -500.0);
   CHECK(a.markdown.find("Holm p") != std::string::npos);
 
   SECTION("the same runs duplicated in fewer homes are not evidence: a tie") {
@@ -141,6 +158,7 @@ TEST_CASE("the study's analysis tells a strategy that brings a substitute from o
     }
     const bench::StudyAnalysis few = bench::analyse_repair_study(copies, strategies, "replan", bootstrap);
     CHECK(few.json.at("kinds").at("sibling").at("against_replan").at("substitute").at("cost").at("pairs") == 18);
+    CHECK(few.json.at("kinds").at("sibling").at("against_replan").at("substitute").at("cost").at("wins") == 18);
     CHECK(verdict(few, "sibling", "cost") == "tie");
   }
 
@@ -160,4 +178,45 @@ TEST_CASE("the study's analysis tells a strategy that brings a substitute from o
       CHECK(it.value().at("verdict") == "tie");
     }
   }
+}
+
+TEST_CASE("a strategy that fails on the hard runs wins on the common set and loses when every run counts") {
+  // In each of 10 homes, one easy run, where both comfort and the fragile
+  // strategy is 5 s sooner, and two hard runs, where replan comforts and the
+  // fragile one fails. Compared only where both comforted it is sooner in
+  // every home; counted on every run it loses two pairs of three.
+  std::vector<bench::StudyRun> runs;
+  for (int h = 0; h < 10; ++h) {
+    for (int k = 0; k < 3; ++k) {
+      bench::StudyRun replan = sibling_run(h, k, "replan");
+      replan.comforted = true;
+      replan.delay = k == 0 ? 10.0 : 100.0;
+      replan.makespan = 200.0;
+      replan.cost = 0.0;
+      bench::StudyRun fragile = sibling_run(h, k, "fragile");
+      fragile.comforted = k == 0;
+      if (fragile.comforted) {
+        fragile.delay = 5.0;
+        fragile.makespan = 195.0;
+        fragile.cost = 0.0;
+      }
+      runs.push_back(replan);
+      runs.push_back(fragile);
+    }
+  }
+  stats::BootstrapOptions bootstrap;
+  bootstrap.resamples = 500;
+  const bench::StudyAnalysis a = bench::analyse_repair_study(runs, {"replan", "fragile"}, "replan", bootstrap);
+  const nlohmann::json& kind = a.json.at("kinds").at("sibling");
+  CHECK(kind.at("against_replan_common_set").at("fragile").at("delay").at("pairs") == 10);
+  CHECK(kind.at("against_replan_common_set").at("fragile").at("delay").at("verdict") == "better");
+  const nlohmann::json& delay = kind.at("against_replan").at("fragile").at("delay");
+  CHECK(delay.at("pairs") == 30);
+  CHECK(delay.at("wins") == 10);
+  CHECK(delay.at("losses") == 20);
+  CHECK(delay.at("mean_difference").get<double>() == Approx(-1.0 / 3.0));
+  CHECK(delay.at("verdict") == "worse");
+  CHECK(a.json.at("wins").at("sibling").at("delay").at("fragile") == "worse");
+  CHECK(a.markdown.find("intention to treat") != std::string::npos);
+  CHECK(a.markdown.find("Secondary") != std::string::npos);
 }
