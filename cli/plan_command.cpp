@@ -88,6 +88,8 @@ std::string readable(double x) {
   return buffer;
 }
 
+void print_comment(std::ostream& out, const std::string& message) { out << plan_comment(message); }
+
 int exit_code(PlannerResult::Status s) {
   switch (s) {
     case PlannerResult::Status::Solved: return kExitOk;
@@ -128,7 +130,8 @@ int limit_reached(const PlanOptions& options, const std::string& message) {
                               {"plans", nlohmann::json::array()}};
     std::cout << j.dump(2) << "\n";
   } else {
-    std::cout << "; " << message << "\n; status: " << status_name(PlannerResult::Status::LimitReached) << "\n";
+    print_comment(std::cout, message);
+    std::cout << "; status: " << status_name(PlannerResult::Status::LimitReached) << "\n";
   }
   return kExitLimit;
 }
@@ -195,8 +198,8 @@ int plan_diverse(const std::shared_ptr<const GroundTask>& task, const PlannerOpt
       for (std::size_t d : distances[i]) std::cout << " " << d;
       std::cout << "\n";
     }
-    if (!shortfall.empty()) std::cout << "; " << shortfall << "\n";
-    if (n == 0) std::cout << "; " << found.message << "\n";
+    if (!shortfall.empty()) print_comment(std::cout, shortfall);
+    if (n == 0) print_comment(std::cout, found.message);
     std::cout << "; status: " << status_name(n > 0 ? PlannerResult::Status::Solved : found.first_status) << "; "
               << found.planner_calls << " searches, " << readable(found.seconds) << " s\n";
   }
@@ -278,7 +281,7 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
     if (planner_options.search.engine.kind == EngineSpec::Kind::Anytime && result.best()) print_best(result, std::cout);
     // A solved task has a message only when how it was solved needs saying
     // (happenings closer than epsilon).
-    if (result.status != PlannerResult::Status::Solved || !result.message.empty()) std::cout << "; " << result.message << "\n";
+    if (result.status != PlannerResult::Status::Solved || !result.message.empty()) print_comment(std::cout, result.message);
     std::cout << "; status: " << status_name(result.status) << "; expanded " << result.statistics.expanded
               << ", evaluated " << result.statistics.evaluated << ", grounding "
               << readable(grounding) << " s, search " << readable(result.times.search)

@@ -1,6 +1,7 @@
 #include "oracle/evaluate.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace alplan::oracle {
 namespace {
@@ -51,6 +52,12 @@ const std::string& Binding::operator[](const std::string& variable) const {
   throw std::logic_error("the variable " + variable + " is not bound");
 }
 
+std::string Binding::text() const {
+  std::string out;
+  for (const auto& [variable, object] : pairs_) out += (out.empty() ? "" : " ") + variable + "=" + object;
+  return out;
+}
+
 GroundName ground(const pddl::Atom& atom, const Binding& binding) {
   GroundName g;
   g.name = atom.name;
@@ -97,11 +104,19 @@ bool holds(const pddl::Condition& c, Scope& scope) {
       return object_of(c.atom.args[0], scope.binding) == object_of(c.atom.args[1], scope.binding);
     case CKind::Comparison:
       return compare(c.comparison, value(c.expressions[0], scope), value(c.expressions[1], scope), scope.comparisons);
-    case CKind::Preference:
-      if (scope.preference_counts && !holds(c.children.front(), scope)) {
-        (*scope.preference_counts)[c.preference_name.empty() ? kAnonymousPreference : c.preference_name] += 1.0;
+    case CKind::Preference: {
+      if (!scope.preference_counts && !scope.preference_instances) return true;
+      if (holds(c.children.front(), scope)) return true;
+      const std::string name = c.preference_name.empty() ? kAnonymousPreference : c.preference_name;
+      if (scope.preference_instances) {
+        char node[32];
+        std::snprintf(node, sizeof node, "%p", static_cast<const void*>(&c));
+        (*scope.preference_instances)[std::string(node) + " " + scope.binding.text()] = name;
+      } else {
+        (*scope.preference_counts)[name] += 1.0;
       }
       return true;
+    }
     default:
       throw std::logic_error("a timed condition or trajectory constraint where a state formula belongs");
   }

@@ -32,6 +32,8 @@ class Binding {
   // The object bound to a variable (the innermost binding); throws when unbound.
   const std::string& operator[](const std::string& variable) const;
   std::size_t size() const { return pairs_.size(); }
+  // "?x=o1 ?y=o2": tells apart the instances a forall gives of one formula.
+  std::string text() const;
 
  private:
   std::vector<std::pair<std::string, std::string>> pairs_;
@@ -56,6 +58,12 @@ struct Scope {
   // Set: each preference found false adds 1 to its name's count (VAL counts
   // per evaluation: per occurrence of an action, per instance of a forall).
   std::map<std::string, double>* preference_counts = nullptr;
+  // Set instead, in an over-all condition: each preference instance found
+  // false is recorded by its identity (the preference's node and the
+  // binding) with its name, so that a step counts it once however many
+  // happenings it spans (Gerevini & Long 2005: a violated over-all
+  // preference of an action's occurrence counts once).
+  std::map<std::string, std::string>* preference_instances = nullptr;
 };
 
 // The name VAL counts an unnamed preference under.

@@ -112,6 +112,8 @@ class Judge::Run {
   std::vector<Happening> happenings_;
   std::map<std::string, double> counts_;  // preference violations counted in formulas
   std::set<int> running_;                 // steps between their start and their end
+  // Per step, the over-all preference instances already counted violated.
+  std::map<int, std::set<std::string>> invariant_preferences_violated_;
   std::map<int, std::map<const pddl::Effect*, bool>> decided_;  // deferred conditional effects, by step
   // Under the epsilon-separated rule: the happenings of the last epsilon,
   // with what their members claimed and their texts.
@@ -309,12 +311,16 @@ bool Judge::Run::invariants_hold(const State& after, double time, double next) {
     ResolvedStep& step = steps_[static_cast<std::size_t>(k)];
     Scope scope(world_, after, step.binding, exact);
     scope.duration = step.duration;
-    scope.preference_counts = &counts_;
+    std::map<std::string, std::string> violated;  // preference instance -> name
+    scope.preference_instances = &violated;
     for (const pddl::Condition& c : step.parts->invariant) {
       if (!holds(c, scope)) {
         return fail(Failure::Invariant, step.text + ": the over-all condition " + pddl::write_condition(c) +
                                             " fails between " + number(time) + " and " + number(next), time);
       }
+    }
+    for (const auto& [instance, name] : violated) {
+      if (invariant_preferences_violated_[k].insert(instance).second) counts_[name] += 1.0;
     }
     auto decided = decided_.find(k);
     for (const DeferredWhen& w : step.parts->deferred) {

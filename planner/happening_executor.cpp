@@ -226,15 +226,18 @@ std::optional<Violation> HappeningExecutor::check_conditions(const Event& e) {
 void HappeningExecutor::count_preferences(const Event& e, pddl::TimeSpecifier time, const ExplicitState& state) {
   const GroundAction* action = action_of(e);
   if (!action || action->preferences.empty()) return;
+  // An over-all preference is checked at every happening its action spans
+  // but violated at most once per step: each of the step's over-all
+  // preference instances (a forall gives several of one name) counts once,
+  // each violated one counting (Gerevini & Long 2005, as at start and end).
   const bool invariant = time == pddl::TimeSpecifier::OverAll;
-  if (invariant && invariant_preferences_counted_.count(e.scheduled)) return;
-  for (const GroundPreference& p : action->preferences) {
-    if (p.time != time || holds(p.condition, state, context_of(e), numeric_slack_)) continue;
+  for (std::size_t i = 0; i < action->preferences.size(); ++i) {
+    const GroundPreference& p = action->preferences[i];
+    if (p.time != time) continue;
+    if (invariant && invariant_preferences_counted_.count({e.scheduled, i})) continue;
+    if (holds(p.condition, state, context_of(e), numeric_slack_)) continue;
     trajectory_->count(p.preference);
-    if (invariant) {
-      invariant_preferences_counted_.insert(e.scheduled);
-      return;
-    }
+    if (invariant) invariant_preferences_counted_.insert({e.scheduled, i});
   }
 }
 

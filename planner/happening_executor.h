@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -137,7 +138,8 @@ class HappeningExecutor {
   double last_action_time_ = 0.0;
   // PDDL 3 trajectory constraints and preference counts over this run.
   std::optional<TrajectoryMonitor> trajectory_;
-  std::set<std::size_t> invariant_preferences_counted_;  // scheduled steps
+  // (scheduled step, index among its action's preferences)
+  std::set<std::pair<std::size_t, std::size_t>> invariant_preferences_counted_;
 };
 
 }  // namespace alplan

@@ -183,4 +183,17 @@ std::string write_plan(const Plan& plan, int decimals) {
   return out;
 }
 
+std::string plan_comment(std::string_view text) {
+  std::string out;
+  std::size_t begin = 0;
+  while (true) {
+    const std::size_t end = text.find('\n', begin);
+    out += "; ";
+    out += text.substr(begin, end == std::string_view::npos ? std::string_view::npos : end - begin);
+    out += '\n';
+    if (end == std::string_view::npos || end + 1 == text.size()) return out;
+    begin = end + 1;
+  }
+}
+
 }  // namespace alplan

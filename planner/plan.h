@@ -44,4 +44,9 @@ double rounded_plan_time(double x);
 // IPC format, times and durations with the given number of decimals.
 std::string write_plan(const Plan& plan, int decimals = 3);
 
+// `text` as plan-file comments: every line behind "; ", so that a message
+// holding a plan (one the validator rejected) printed beside plans is never
+// read as steps. Ends with a newline; "" gives one empty comment line.
+std::string plan_comment(std::string_view text);
+
 }  // namespace alplan

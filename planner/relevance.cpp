@@ -115,6 +115,7 @@ void mark_metric(const GroundTask& task, RelevanceMarks& marks) {
 
 void mark_action(const GroundAction& a, RelevanceMarks& marks) {
   for (const ConditionSet* c : {&a.at_start, &a.over_all, &a.at_end}) marks.condition(*c);
+  for (const GroundPreference& p : a.preferences) marks.condition(p.condition);
   for (const GroundDurationConstraint& d : a.duration) marks.expression(d.value);
   for (const ContinuousEffect& c : a.continuous) marks.expression(c.rate);
   for (const HappeningEffects* e : {&a.start, &a.end}) {
@@ -128,11 +129,25 @@ void mark_action(const GroundAction& a, RelevanceMarks& marks) {
 
 }  // namespace
 
+// PDDL 3: a trajectory constraint, hard or soft, may need each fact it
+// names true at one time and false at another (an `always (or (not lit)
+// (not open))` is kept by an action that deletes `lit`), so its facts are
+// relevant both ways; a goal preference is a goal one may give up, relevant
+// as a goal is.
+void mark_trajectory(const GroundTask& task, RelevanceMarks& marks) {
+  for (const GroundConstraint& c : task.pddl3.constraints) {
+    marks.either_way(c.requirement);
+    marks.either_way(c.trigger);
+  }
+  for (const GroundPreference& p : task.pddl3.goal_preferences) marks.condition(p.condition);
+}
+
 std::vector<bool> relevant_actions(const GroundTask& task, const std::vector<ActionId>& keep) {
   const Changers changers(task);
   RelevanceMarks marks(task);
   marks.condition(task.goal);
   mark_metric(task, marks);
+  mark_trajectory(task, marks);
   for (ActionId a : keep) marks.action(a);
   std::size_t next_fact = 0, next_variable = 0, next_action = 0;
   while (next_fact < marks.facts_.size() || next_variable < marks.variables_.size() ||

@@ -21,7 +21,10 @@
 // unwanted, its condition then made false first), a derived fact makes its
 // bodies relevant both ways, a general formula's literals count both ways,
 // and the metric's variables count unless the metric only grows as a plan
-// grows (linear_metric.h: action costs).
+// grows (linear_metric.h: action costs). PDDL 3: every fact a trajectory
+// constraint names (hard or soft) counts both ways, and a preference's
+// condition as a condition, so an action needed only to keep an `always`
+// true stays (issue 44: pruning it made a one-step task time out).
 #pragma once
 
 #include <memory>

@@ -186,3 +186,33 @@ TEST_CASE("a metric that rewards an action keeps the action") {
   }
   CHECK(earn);
 }
+
+// Issue 44: opening the door needs nothing, but `always` forbids the light
+// and the open door together, so switching the light off is needed; pruned
+// as irrelevant, the task ran to its time limit.
+TEST_CASE("an action needed only to keep an always constraint true is relevant and the task plans") {
+  const char* const domain = R"(
+(define (domain door) (:requirements :strips :durative-actions :negative-preconditions :constraints)
+  (:predicates (lit) (open))
+  (:durative-action switch-off :parameters () :duration (= ?duration 1)
+    :condition (at start (lit)) :effect (at end (not (lit))))
+  (:durative-action open-door :parameters () :duration (= ?duration 3)
+    :condition (at start (not (open))) :effect (at end (open))))
+)";
+  const char* const problem_text = R"(
+(define (problem d) (:domain door) (:init (lit)) (:goal (open))
+  (:constraints (always (or (not (lit)) (not (open))))))
+)";
+  const auto loaded = test::load_task_text(domain, problem_text);
+  const auto task = ground(*loaded.domain, *loaded.problem);
+  const std::vector<bool> relevant = relevant_actions(*task);
+  for (ActionId a = 0; a < task->actions.size(); ++a) {
+    INFO(task->action_name(task->actions[a]));
+    CHECK(relevant[a]);
+  }
+  PlannerOptions options;
+  options.time_limit = 10.0;
+  const PlannerResult result = Planner(task, options).plan();
+  INFO(result.message);
+  CHECK(result.status == PlannerResult::Status::Solved);
+}
