@@ -1,5 +1,6 @@
 // alplan bench stability --ipc DIR [--domains a,b] [--problems 1-5] [--perturbations N]
-//                        [--kinds fact,object,goal] [--strategies replan,adapt,stable,patch] --out DIR
+//                        [--kinds fact,object,goal] [--strategies replan,adapt,stable,patch]
+//                        [--cross-check [--cross-check-seconds S]] --out DIR
 // Replanning against plan repair on IPC temporal domains, after Fox et al.
 // (ICAPS 2006): benchmarks/harness/stability_bench.h.
 #include <CLI/CLI.hpp>
@@ -194,6 +195,11 @@ void add_bench_stability_command(CLI::App* bench, int& exit_code) {
   s->add_option("--stable-search", o->bench.strategy.stable_proof_search,
                 "stable: the complete search on the distance that proves its repair minimal (default "
                 "complete(wastar(lmcut, w=1, order=metric, preferred=false)), A*; blind for uniform-cost search)");
+  s->add_flag("--cross-check", o->bench.cross_check,
+              "Per perturbation, compute stable's minimum distance again from a classical compilation solved with "
+              "A* on LM-cut (benchmarks/harness/stable_cross_check.h)");
+  s->add_option("--cross-check-seconds", o->bench.cross_check_seconds, "Seconds per cross-check's search")
+      ->check(CLI::PositiveNumber);
   s->add_option("--out", o->out, "Folder for runs.csv, runs.json, summary.md");
   add_test_set_flags(s, o->test_set);
   s->add_option("--summarize", o->summarize, "Write a run folder's summary.md again from its runs.json; runs nothing");

@@ -269,7 +269,7 @@ EngineSpec combination_of(const Call& c) {
   return e;
 }
 
-// anytime(E, weights=[...], expansions=N, order=..., deferred=...).
+// anytime(E, weights=[...], expansions=N, order=..., deferred=..., heuristic=H).
 EngineSpec anytime_of(const Call& c) {
   using K = EngineSpec::Kind;
   EngineSpec e;
@@ -294,6 +294,10 @@ EngineSpec anytime_of(const Call& c) {
       e.metric_order = a.call->name == "metric";
     } else if (a.key == "deferred") {
       e.deferred = boolean(a);
+    } else if (a.key == "heuristic") {
+      if (!a.call) fail_at(a.at, "heuristic is trpg, blind or lmcut");
+      e.heuristic = heuristic_of(*a.call);
+      e.own_heuristic = true;
     } else {
       fail_at(a.at, "anytime has no option '" + a.key + "'");
     }
@@ -406,6 +410,7 @@ std::string engine_text(const EngineSpec& e) {
       if (e.expansions) option("expansions=" + std::to_string(e.expansions));
       if (e.metric_order) option("order=metric");
       if (e.deferred) option("deferred=true");
+      if (e.own_heuristic) option("heuristic=" + heuristic_text(e.heuristic));
       return "anytime(" + engine_text(e.children.front()) + options + ")";
     }
     case K::Preferences:

@@ -85,6 +85,9 @@ struct EngineSpec {
   // preferences: in anytime mode, rounds that enforce one more preference each
   bool rounds = true;
   std::vector<double> weights;           // anytime
+  // anytime: its weights search with `heuristic` instead of the heuristic
+  // of the first search's first engine (heuristic=H).
+  bool own_heuristic = false;
   std::vector<EngineSpec> children;      // portfolio, then; anytime: the first search; preferences: its engine
   bool operator==(const EngineSpec&) const = default;
 };

@@ -41,7 +41,7 @@ void flatten(const EngineSpec& e, std::vector<Phase>& phases) {
       for (double w : e.weights) {
         EngineSpec weighted;
         weighted.kind = K::Wastar;
-        weighted.heuristic = first_leaf(e.children.front()).heuristic;
+        weighted.heuristic = e.own_heuristic ? e.heuristic : first_leaf(e.children.front()).heuristic;
         weighted.weight = w;
         weighted.metric_order = e.metric_order;
         weighted.deferred = e.deferred;

@@ -153,6 +153,24 @@ ValidationResult validate_from_now(const ExecutingPlan& plan, double now) {
   return executor.run(steps, steps.size(), start);
 }
 
+std::optional<ExecutingPlan> bind_validated(const std::shared_ptr<const GroundTask>& task, Plan plan, double now,
+                                            double epsilon, std::string& why) {
+  std::stable_sort(plan.steps.begin(), plan.steps.end(), [](const PlanStep& a, const PlanStep& b) {
+    return a.time.value_or(0.0) < b.time.value_or(0.0);
+  });
+  ExecutingPlan bound;
+  try {
+    bound = bind_plan(task, plan, epsilon);
+  } catch (const std::exception& error) {
+    why = error.what();
+    return std::nullopt;
+  }
+  const ValidationResult check = validate_from_now(bound, now);
+  if (check.valid) return bound;
+  why = check.violation ? check.violation->message() : "the validator rejects it";
+  return std::nullopt;
+}
+
 std::vector<RecognizedObject> integrate_recognized(RepairRequest& request, pddl::Problem& problem) {
   std::vector<RecognizedObject> integrated;
   if (!request.recognizer) return integrated;

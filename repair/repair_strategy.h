@@ -7,8 +7,10 @@
 //   (the paper's Scenario 3 outcome, as a policy);
 // - patch: keep the rest of the plan and swap the failed object for an
 //   available one of the same supertype; replan only when that is invalid;
-// - adapt: reuse as much of the old plan as possible (LPG-ADAPT's aim):
-//   search in a view of the task where new actions cost a penalty;
+// - adapt: LPG-ADAPT's objective: the metric plus a penalty per action
+//   added to or removed from the old plan's remaining steps (Fox et al.'s
+//   distance), searched by anytime search on stable's compilation within a
+//   budget (adapt_strategy.cpp);
 // - stable: the plan at minimum distance from the old plan's remaining
 //   steps (Saetti & Scala's compilation to cost-optimal planning,
 //   stable_compilation.h), proven minimal when the search ends in budget.
@@ -50,7 +52,12 @@ struct StrategyOptions {
   PlannerOptions planner = executing_planner_options();
   // Schemas that hand an object over; `suggest` plans without them.
   std::set<std::string> handling_actions{"carry", "fill", "give"};
-  // `adapt`: the cost of an action the old plan lacks, and the search budget.
+  // `adapt` minimises the problem's metric (the makespan without one) plus
+  // adapt_penalty times the plan distance from the old plan's remaining
+  // steps: each action added and each old step removed, per occurrence.
+  // The penalty is a change's price in units of the metric (a second of
+  // makespan, a unit of cost). adapt_budget: seconds of search (grounding
+  // the compiled task comes on top).
   double adapt_penalty = 100.0;
   double adapt_budget = 0.25;  // seconds
   // The lowest anytime weight adapt looks for closer plans with: on the
@@ -118,6 +125,10 @@ struct RepairResult {
   std::string fallback;
   // The part of `seconds` spent asking perception what the camera saw.
   double perception_seconds = 0.0;
+  // The plan's distance from the old plan is proven minimal (stable, when
+  // its proof search finished and names no limit): what a cross-check may
+  // compare a proven distance with.
+  bool proven_minimal = false;
 };
 
 class RepairStrategy {
@@ -139,6 +150,11 @@ RepairResult replan_from(const RepairRequest& request, const pddl::Domain& domai
 // that task's initial state -- the observed one, actions in progress
 // committed as timed literals -- at `now`, its steps at their times.
 ValidationResult validate_from_now(const ExecutingPlan& plan, double now);
+// A plan mapped back from a compiled task (stable_compilation.h), in time
+// order, bound to the reformulated `task` and validated there from `now`;
+// nullopt, with the reason in `why`, when it does not bind or is not valid.
+std::optional<ExecutingPlan> bind_validated(const std::shared_ptr<const GroundTask>& task, Plan plan, double now,
+                                            double epsilon, std::string& why);
 // Adds the objects perception recognises at the robot's location and among
 // the things the camera saw on the way (the request's sightings, each where
 // it was seen), of types the domain knows, to the problem, and what perception saw of them -- (be o

@@ -7,6 +7,7 @@ namespace alplan::repair {
 namespace {
 
 constexpr const char* kPrefix = "alplan-";
+constexpr const char* kDistance = "alplan-distance";  // adapt's counter (DistanceCounter::Apart)
 using Binding = std::map<std::string, std::string>;  // ?variable -> object
 
 void bind_term(pddl::Term& t, const Binding& binding) {
@@ -98,11 +99,11 @@ pddl::Effect all_of(std::vector<pddl::Effect> parts) {
   return e;
 }
 
-pddl::Effect cost_increase(double amount) {
+pddl::Effect cost_increase(double amount, const std::string& function = "total-cost") {
   pddl::Effect e;
   e.kind = pddl::Effect::Kind::Numeric;
   e.assign = pddl::AssignOperator::Increase;
-  e.atom = atom("total-cost");
+  e.atom = atom(function);
   pddl::NumericExpression value;
   value.value = amount;
   e.value = value;
@@ -153,7 +154,9 @@ Binding binding_of(const std::vector<pddl::TypedName>& parameters, const OldStep
   return binding;
 }
 
-void check_names(const pddl::Domain& domain) {
+// `functions`: whether the compilation declares a function of its own
+// (alplan-distance), so that the domain's functions may not clash either.
+void check_names(const pddl::Domain& domain, bool functions) {
   auto ours = [](const std::string& name) { return name.rfind(kPrefix, 0) == 0; };
   bool clash = std::any_of(domain.predicates.begin(), domain.predicates.end(),
                            [&](const pddl::PredicateDeclaration& p) { return ours(p.name); });
@@ -161,10 +164,12 @@ void check_names(const pddl::Domain& domain) {
                                [&](const pddl::Action& a) { return ours(a.name); });
   clash = clash || std::any_of(domain.durative_actions.begin(), domain.durative_actions.end(),
                                [&](const pddl::DurativeAction& a) { return ours(a.name); });
+  clash = clash || (functions && std::any_of(domain.functions.begin(), domain.functions.end(),
+                                             [&](const pddl::FunctionDeclaration& f) { return ours(f.name); }));
   if (clash) throw std::invalid_argument(std::string("the domain already names something ") + kPrefix + "...");
 }
 
-// keep-i for an instantaneous schema (the domain's, costs dropped).
+// keep-i for an instantaneous schema (add_keep says whose costs it keeps).
 pddl::Action keep_action(const pddl::Action& schema, const OldStep& step, std::size_t i) {
   pddl::Action keep = schema;
   keep.name = std::string(kPrefix) + "keep-" + std::to_string(i) + "-" + schema.name;
@@ -201,29 +206,63 @@ pddl::DurativeAction keep_action(const pddl::DurativeAction& schema, const OldSt
   return keep;
 }
 
-pddl::Action forgo_action(std::size_t i) {
+pddl::Action forgo_action(std::size_t i, const std::string& counter) {
   pddl::Action forgo;
   forgo.name = std::string(kPrefix) + "forgo-" + std::to_string(i);
   forgo.precondition = holds(pending(i));
-  forgo.effect = all_of({literal(pending(i), false), literal(done(i), true), cost_increase(1.0)});
+  forgo.effect = all_of({literal(pending(i), false), literal(done(i), true), cost_increase(1.0, counter)});
   return forgo;
 }
 
-// Adds keep-i for the occurrence to `into`, from the original `domain`'s
-// schema (costs already dropped in `uncosted`); returns its name.
-std::string add_keep(const pddl::Domain& uncosted, const OldStep& step, std::size_t i, pddl::Domain& into) {
-  for (const pddl::Action& a : uncosted.actions) {
+// Adds keep-i for the occurrence to `into`, from the schema of `source`
+// (the domain with its costs dropped for stable, as it is for adapt);
+// returns its name.
+std::string add_keep(const pddl::Domain& source, const OldStep& step, std::size_t i, pddl::Domain& into) {
+  for (const pddl::Action& a : source.actions) {
     if (a.name != step.schema) continue;
     into.actions.push_back(keep_action(a, step, i));
     return into.actions.back().name;
   }
-  for (const pddl::DurativeAction& a : uncosted.durative_actions) {
+  for (const pddl::DurativeAction& a : source.durative_actions) {
     if (a.name != step.schema) continue;
     into.durative_actions.push_back(keep_action(a, step, i));
     return into.durative_actions.back().name;
   }
   throw std::invalid_argument("the domain has no action " + step.schema + " for the old plan's step " +
                               ground_name(step));
+}
+
+// `domain` with every action increasing `function` by `amount` (at end
+// when durative), its other effects as they are.
+pddl::Domain each_action_increases(pddl::Domain domain, const std::string& function, double amount) {
+  for (pddl::Action& a : domain.actions) a.effect = with_effect(a.effect, cost_increase(amount, function));
+  for (pddl::DurativeAction& a : domain.durative_actions) {
+    a.effect = with_effect(a.effect, timed(pddl::TimeSpecifier::AtEnd, cost_increase(amount, function)));
+  }
+  return domain;
+}
+
+// (= (function) 0) in a copy of `problem`, replacing any value it had.
+pddl::Problem with_zero(const pddl::Problem& problem, const std::string& function) {
+  pddl::Problem zero = problem;
+  std::erase_if(zero.numeric_init, [&](const pddl::NumericFact& f) {
+    return f.function.name == function && f.function.args.empty();
+  });
+  pddl::NumericFact value;
+  value.function = atom(function);
+  value.value = 0.0;
+  zero.numeric_init.push_back(value);
+  return zero;
+}
+
+// The domain adapt's compilation starts from: the domain's own, costs and
+// all, with (alplan-distance) declared and every action adding 1 to it.
+pddl::Domain with_distance_counter(const pddl::Domain& domain) {
+  pddl::FunctionDeclaration f;
+  f.name = kDistance;
+  pddl::Domain counted = each_action_increases(domain, kDistance, 1.0);
+  counted.functions.push_back(f);
+  return counted;
 }
 
 }  // namespace
@@ -254,39 +293,29 @@ bool declares_total_cost(const pddl::Domain& domain) {
 }
 
 pddl::Domain with_action_cost(const pddl::Domain& domain, double cost) {
-  pddl::Domain costed = without_costs(domain);
+  pddl::Domain costed = each_action_increases(without_costs(domain), "total-cost", cost);
   if (!declares_total_cost(costed)) {
     pddl::FunctionDeclaration f;
     f.name = "total-cost";
     costed.functions.push_back(f);
   }
-  for (pddl::Action& a : costed.actions) a.effect = with_effect(a.effect, cost_increase(cost));
-  for (pddl::DurativeAction& a : costed.durative_actions) {
-    a.effect = with_effect(a.effect, timed(pddl::TimeSpecifier::AtEnd, cost_increase(cost)));
-  }
   return costed;
 }
 
-pddl::Problem with_zero_cost(const pddl::Problem& problem) {
-  pddl::Problem zero = problem;
-  std::erase_if(zero.numeric_init, [](const pddl::NumericFact& f) {
-    return f.function.name == "total-cost" && f.function.args.empty();
-  });
-  pddl::NumericFact cost;
-  cost.function = atom("total-cost");
-  cost.value = 0.0;
-  zero.numeric_init.push_back(cost);
-  return zero;
-}
+pddl::Problem with_zero_cost(const pddl::Problem& problem) { return with_zero(problem, "total-cost"); }
 
 StableCompilation compile_stability(const pddl::Domain& domain, const pddl::Problem& problem,
-                                    const std::vector<OldStep>& old) {
-  check_names(domain);
+                                    const std::vector<OldStep>& old, DistanceCounter counter) {
+  const bool apart = counter == DistanceCounter::Apart;
+  check_names(domain, apart);
   StableCompilation c;
   c.old = old;
-  c.domain = with_action_cost(domain, 1.0);
-  const pddl::Domain uncosted = without_costs(domain);
-  c.problem = with_zero_cost(problem);
+  c.distance = apart ? kDistance : "total-cost";
+  c.domain = apart ? with_distance_counter(domain) : with_action_cost(domain, 1.0);
+  // The schemas keep-i copies: stable's without their costs (its metric is
+  // the distance alone), adapt's with them (its metric counts them).
+  const pddl::Domain source = apart ? domain : without_costs(domain);
+  c.problem = with_zero(problem, c.distance);
   std::vector<pddl::Condition> goal;
   if (problem.goal) goal.push_back(*problem.goal);
   for (std::size_t i = 0; i < old.size(); ++i) {
@@ -295,13 +324,14 @@ StableCompilation compile_stability(const pddl::Domain& domain, const pddl::Prob
     c.domain.predicates.push_back(p);
     p.name = done(i);
     c.domain.predicates.push_back(p);
-    c.keeps[add_keep(uncosted, old[i], i, c.domain)] = i;
-    c.domain.actions.push_back(forgo_action(i));
+    c.keeps[add_keep(source, old[i], i, c.domain)] = i;
+    c.domain.actions.push_back(forgo_action(i, c.distance));
     c.forgoes[c.domain.actions.back().name] = i;
     c.problem.init.push_back(atom(pending(i)));
     goal.push_back(holds(done(i)));
   }
   c.problem.goal = conjunction(std::move(goal));
+  if (apart) return c;  // the problem's own metric; adapt weighs the distance into it
   pddl::Metric metric;
   metric.minimize = true;
   metric.expression.kind = pddl::NumericExpression::Kind::Function;

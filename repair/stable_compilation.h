@@ -23,6 +23,15 @@
 // - P' is P with every (alplan-pending-i) initially true, (total-cost) 0,
 //   every (alplan-done-i) in the goal, minimising (total-cost).
 //
+// With DistanceCounter::Apart (the `adapt` strategy's use, adapt_strategy.cpp)
+// the distance is counted in a function of its own, (alplan-distance),
+// instead: every original action increases it by 1 and keeps its own
+// effects on (total-cost); keep-i keeps the schema's cost effects (bound to
+// the occurrence's objects) and adds nothing to the distance; forgo-i adds
+// 1 to it; P' sets (alplan-distance) to 0, leaves (total-cost) as P has it
+// and keeps P's metric, which the caller weighs the distance into. The same
+// contract holds with (alplan-distance) in place of (total-cost).
+//
 // How this differs from Saetti & Scala's compilation: theirs is for
 // classical (STRIPS with costs) actions; ours copies durative actions too,
 // with the bookkeeping on the snaps (pending at start, done at end), so a
@@ -62,26 +71,34 @@ std::vector<OldStep> remaining_steps(const ExecutingPlan& plan, double now);
 
 // A copy of `domain` in which (total-cost) is declared, no action changes it
 // except that every action increases it by `cost` (at end when durative).
-// Adapt uses cost 0 on a domain without the function: the grounder keeps a
-// function as a numeric variable only when some action changes it.
+// compile_stability uses cost 1 (TotalCost: every action is a change).
 pddl::Domain with_action_cost(const pddl::Domain& domain, double cost);
 bool declares_total_cost(const pddl::Domain& domain);
 // (= (total-cost) 0) in a copy of `problem`, replacing any value it had.
 pddl::Problem with_zero_cost(const pddl::Problem& problem);
 
+// Where the compilation counts the distance. TotalCost (stable): in
+// (total-cost), the domain's own costs dropped, the metric the distance
+// alone. Apart (adapt): in (alplan-distance), beside the domain's costs and
+// the problem's metric, so that a metric such as the home domains'
+// (+ (total-time) (total-cost)) still means what it meant.
+enum class DistanceCounter { TotalCost, Apart };
+
 struct StableCompilation {
   pddl::Domain domain;
   pddl::Problem problem;
   std::vector<OldStep> old;  // O: occurrence i is old[i]
+  std::string distance = "total-cost";  // the function that counts D: total-cost or alplan-distance
   // Compiled action names: keep action -> occurrence, forgo action -> occurrence.
   std::map<std::string, std::size_t> keeps, forgoes;
 };
 
 // Throws std::invalid_argument when an occurrence names a schema the domain
 // lacks or has the wrong number of objects, or when the domain already
-// uses a name beginning with `alplan-`.
+// uses a name beginning with `alplan-` (with Apart, a function's name too).
 StableCompilation compile_stability(const pddl::Domain& domain, const pddl::Problem& problem,
-                                    const std::vector<OldStep>& old);
+                                    const std::vector<OldStep>& old,
+                                    DistanceCounter counter = DistanceCounter::TotalCost);
 
 struct MappedPlan {
   Plan plan;  // steps of the original domain, with the compiled plan's times

@@ -104,29 +104,6 @@ std::string number(double x) {
   return buffer;
 }
 
-
-// The mapped plan, in time order, bound to the uncompiled task and
-// validated there from the observed state (validate_from_now, as patch and
-// switch check theirs); nullopt, with the reason in `why`, when it is not
-// valid.
-std::optional<ExecutingPlan> validated(const std::shared_ptr<const GroundTask>& task, Plan plan, double now,
-                                       double epsilon, std::string& why) {
-  std::stable_sort(plan.steps.begin(), plan.steps.end(), [](const PlanStep& a, const PlanStep& b) {
-    return a.time.value_or(0.0) < b.time.value_or(0.0);
-  });
-  ExecutingPlan bound;
-  try {
-    bound = bind_plan(task, plan, epsilon);
-  } catch (const std::exception& error) {
-    why = error.what();
-    return std::nullopt;
-  }
-  const ValidationResult check = validate_from_now(bound, now);
-  if (check.valid) return bound;
-  why = check.violation ? check.violation->message() : "the validator rejects it";
-  return std::nullopt;
-}
-
 class StableStrategy : public RepairStrategy {
  public:
   explicit StableStrategy(StrategyOptions options) : options_(std::move(options)) {}
@@ -170,15 +147,23 @@ class StableStrategy : public RepairStrategy {
     const std::shared_ptr<const GroundTask> task =
         ground_problem(*request.domain, result.problem, request.grounding, &result.reused_grounding);
     const MappedPlan mapped = map_back(compiled, search.best->plan);
-    std::optional<ExecutingPlan> plan = validated(task, mapped.plan, request.now, options_.planner.epsilon, why);
+    std::optional<ExecutingPlan> plan =
+        bind_validated(task, mapped.plan, request.now, options_.planner.epsilon, why);
     if (!plan) {
       why = "the compiled plan maps to an invalid plan (" + why + ")";
       return;
     }
     const std::size_t distance = plan_distance(*request.plan, *plan, request.now);
     result.how = describe(distance, compiled.old.size(), mapped, search) + describe_remedy(*plan, request.now);
+    result.proven_minimal = proven(search);
     result.plan = std::move(plan);
     result.repaired = true;
+  }
+
+  // As describe() words it: "proven minimal by" only here.
+  bool proven(const CompiledSearch& search) const {
+    return proves_cost_optimal(parse_search_configuration(options_.stable_proof_search).engine) && search.optimal &&
+           search.limits.empty();
   }
 
   std::string describe(std::size_t distance, std::size_t old, const MappedPlan& mapped,

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "benchmarks/harness/stable_cross_check.h"
 #include "benchmarks/harness/table.h"
 #include "domains/pddl_files.h"
 #include "planner/grounder.h"
@@ -208,6 +209,7 @@ void measure(StabilityRun& run, const repair::RepairResult& result, const Instan
   run.planner_calls = result.planner_calls;
   run.fallback = result.fallback;
   run.how = result.how;
+  run.proven = result.proven_minimal;
   if (!run.repaired) return;
   const ExecutingPlan& plan = *result.plan;
   run.valid = validate_on(p.observed, remaining(plan, p.cut.now), epsilon).valid;
@@ -223,26 +225,55 @@ void measure(StabilityRun& run, const repair::RepairResult& result, const Instan
   run.makespan = makespan(plan, p.cut);
 }
 
-void run_strategies(const StabilityBenchOptions& options, const Instance& instance, const Perturbed& p,
-                    StabilityRun base, std::vector<StabilityRun>& out) {
+repair::RepairRequest request_for(const Instance& instance, const Perturbed& p) {
+  repair::RepairRequest request;
+  request.domain = instance.files.domain.get();
+  request.problem = &p.problem;
+  request.plan = &instance.plan;
+  request.failure = &p.failure;
+  request.observed = p.cut.state;
+  request.in_progress = p.cut.running;
+  request.now = p.cut.now;
+  return request;
+}
+
+// Every strategy on the perturbation; returns stable's plan, when it made
+// one, for the cross-check.
+std::optional<ExecutingPlan> run_strategies(const StabilityBenchOptions& options, const Instance& instance,
+                                            const Perturbed& p, StabilityRun base, std::vector<StabilityRun>& out) {
+  std::optional<ExecutingPlan> stable_plan;
   for (const std::string& name : options.strategies) {
     StabilityRun run = base;
     run.strategy = name;
-    repair::RepairRequest request;
-    request.domain = instance.files.domain.get();
-    request.problem = &p.problem;
-    request.plan = &instance.plan;
-    request.failure = &p.failure;
-    request.observed = p.cut.state;
-    request.in_progress = p.cut.running;
-    request.now = p.cut.now;
     try {
+      const repair::RepairRequest request = request_for(instance, p);
       const repair::RepairResult result = repair::make_strategy(name, options.strategy)->repair(request);
       measure(run, result, instance, p, options.strategy.planner.epsilon);
+      if (name == "stable" && result.repaired) stable_plan = result.plan;
     } catch (const std::exception& error) {
       run.how = std::string("the strategy threw: ") + error.what();
     }
     out.push_back(std::move(run));
+  }
+  return stable_plan;
+}
+
+// The cross-check of stable's distance (stable_cross_check.h), recorded on
+// each of the perturbation's runs (the `first` on).
+void cross_check(const StabilityBenchOptions& options, const Instance& instance, const Perturbed& p,
+                 const ExecutingPlan* stable_plan, std::vector<StabilityRun>& runs, std::size_t first) {
+  CrossCheckResult check;
+  try {
+    check = cross_check_stable(request_for(instance, p), stable_plan, options.cross_check_seconds);
+  } catch (const std::exception& error) {
+    check.status = CrossCheckStatus::NotProven;
+    check.note = std::string("the cross-check threw: ") + error.what();
+  }
+  for (std::size_t i = first; i < runs.size(); ++i) {
+    runs[i].cross_check_status = to_string(check.status);
+    runs[i].cross_check_distance = check.distance;
+    runs[i].cross_check_note = check.note;
+    runs[i].cross_check_seconds = check.seconds;
   }
 }
 
@@ -274,8 +305,20 @@ void run_instance(const StabilityBenchOptions& options, const Instance& instance
       base.cut = p->cut.now;
       base.old_remaining = remaining_count(instance.plan, p->cut.now);
       base.old_makespan = makespan(instance.plan, p->cut);
-      run_strategies(options, instance, *p, base, result.runs);
-      if (options.progress) *options.progress << "stability: " << where << ": " << base.description << "\n";
+      const std::size_t first = result.runs.size();
+      const std::optional<ExecutingPlan> stable_plan = run_strategies(options, instance, *p, base, result.runs);
+      if (options.cross_check) {
+        cross_check(options, instance, *p, stable_plan ? &*stable_plan : nullptr, result.runs, first);
+      }
+      if (!options.progress) continue;
+      *options.progress << "stability: " << where << ": " << base.description;
+      if (options.cross_check) {
+        const StabilityRun& checked = result.runs.back();
+        *options.progress << " [cross-check " << checked.cross_check_status
+                          << (checked.cross_check_distance ? " " + std::to_string(*checked.cross_check_distance) : "")
+                          << ", " << fixed(checked.cross_check_seconds, 1) << " s]";
+      }
+      *options.progress << "\n";
     }
   }
 }

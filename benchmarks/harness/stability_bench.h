@@ -17,6 +17,7 @@
 
 #include <cstdint>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,11 @@ struct StabilityBenchOptions {
   // Draws per run until the perturbation breaks the rest of the plan.
   int draws = 20;
   repair::StrategyOptions strategy;  // every strategy's planner and budgets
+  // Per perturbation, stable's minimum distance computed again by a
+  // classical compilation solved with A* on LM-cut (stable_cross_check.h),
+  // within so many seconds.
+  bool cross_check = false;
+  double cross_check_seconds = 30.0;
   std::ostream* progress = nullptr;
 };
 
@@ -61,6 +67,12 @@ struct StabilityRun {
   double seconds = 0.0;
   int planner_calls = 0;
   std::string fallback, how;
+  bool proven = false;  // the strategy says its distance is proven minimal (stable)
+  // The perturbation's cross-check (the same on each of its runs): proven,
+  // not proven, not comparable; "" when none was asked.
+  std::string cross_check_status, cross_check_note;
+  std::optional<std::size_t> cross_check_distance;
+  double cross_check_seconds = 0.0;
 };
 
 struct StabilityBenchResult {
@@ -78,5 +90,9 @@ void write_stability_results(const StabilityBenchResult& result, const Stability
 StabilityBenchResult read_stability_runs(const std::string& runs_json, std::vector<std::string>& strategies);
 // The tables of summary.md: per domain and strategy, then against replan.
 std::string stability_summary(const StabilityBenchResult& result, const StabilityBenchOptions& options);
+// summary.md's section "stable cross-checked" (stable_cross_check.h): per
+// perturbation, stable's proven distance against the classical one; empty
+// when no run carries a cross-check.
+std::string stable_cross_check_section(const StabilityBenchResult& result);
 
 }  // namespace alplan::bench

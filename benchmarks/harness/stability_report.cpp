@@ -202,7 +202,10 @@ nlohmann::json run_json(const StabilityRun& r) {
           {"repaired", r.repaired},   {"valid", r.valid},         {"distance", r.distance},
           {"added", r.added},         {"removed", r.removed},     {"same_first", r.same_first},
           {"new_steps", r.new_steps}, {"makespan", r.makespan},   {"seconds", r.seconds},
-          {"planner_calls", r.planner_calls}, {"fallback", r.fallback}, {"how", r.how}};
+          {"planner_calls", r.planner_calls}, {"fallback", r.fallback}, {"how", r.how},
+          {"proven", r.proven},       {"cross_check_status", r.cross_check_status},
+          {"cross_check_distance", r.cross_check_distance ? nlohmann::json(*r.cross_check_distance) : nlohmann::json()},
+          {"cross_check_note", r.cross_check_note}, {"cross_check_seconds", r.cross_check_seconds}};
 }
 
 StabilityRun run_from_json(const nlohmann::json& j) {
@@ -228,6 +231,14 @@ StabilityRun run_from_json(const nlohmann::json& j) {
   r.planner_calls = j.at("planner_calls");
   r.fallback = j.at("fallback");
   r.how = j.at("how");
+  // Runs written before the cross-check existed have none of its fields.
+  r.proven = j.value("proven", false);
+  r.cross_check_status = j.value("cross_check_status", std::string());
+  if (j.contains("cross_check_distance") && !j.at("cross_check_distance").is_null()) {
+    r.cross_check_distance = j.at("cross_check_distance").get<std::size_t>();
+  }
+  r.cross_check_note = j.value("cross_check_note", std::string());
+  r.cross_check_seconds = j.value("cross_check_seconds", 0.0);
   return r;
 }
 
@@ -267,6 +278,7 @@ std::string stability_summary(const StabilityBenchResult& result, const Stabilit
     out << "\n## " << domain << "\n\n";
     strategy_table(out, aggregate(result.runs, paired, domain), options.strategies);
   }
+  out << stable_cross_check_section(result);
   if (!result.skipped.empty()) {
     out << "\n## Skipped\n\n";
     for (const std::string& s : result.skipped) out << "- " << s << "\n";
@@ -279,14 +291,17 @@ void write_stability_results(const StabilityBenchResult& result, const Stability
   std::filesystem::create_directories(out_dir);
   Table csv({"domain", "problem", "perturbation", "kind", "strategy", "repaired", "valid", "distance", "added",
              "removed", "same_first", "old_remaining", "new_steps", "cut", "old_makespan", "makespan", "seconds",
-             "planner_calls", "fallback", "description"});
+             "planner_calls", "fallback", "proven", "cross_check_status", "cross_check_distance",
+             "cross_check_seconds", "description"});
   nlohmann::json runs = nlohmann::json::array();
   for (const StabilityRun& r : result.runs) {
     csv.add({r.domain, std::to_string(r.problem), std::to_string(r.perturbation), r.kind, r.strategy,
              r.repaired ? "yes" : "no", r.valid ? "yes" : "no", std::to_string(r.distance), std::to_string(r.added),
              std::to_string(r.removed), r.same_first ? "yes" : "no", std::to_string(r.old_remaining),
              std::to_string(r.new_steps), fixed(r.cut, 3), fixed(r.old_makespan, 3), fixed(r.makespan, 3),
-             fixed(r.seconds, 4), std::to_string(r.planner_calls), r.fallback, r.description});
+             fixed(r.seconds, 4), std::to_string(r.planner_calls), r.fallback, r.proven ? "yes" : "no",
+             r.cross_check_status, r.cross_check_distance ? std::to_string(*r.cross_check_distance) : "",
+             r.cross_check_status.empty() ? "" : fixed(r.cross_check_seconds, 3), r.description});
     runs.push_back(run_json(r));
   }
   std::ofstream(out_dir + "/runs.csv") << [&] {

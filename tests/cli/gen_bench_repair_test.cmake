@@ -96,13 +96,22 @@ expect_run(0 "iot minus camera (what the tags are worth)" ${ALPLAN} bench repair
   --strategies replan,patch --recognizer simulated --observe iot,camera --scatter 0.5 --no-paper-home
   --out ${WORK}/repair-models)
 file(READ ${WORK}/repair-models/observation.md first_tables)
+file(READ ${WORK}/repair-models/iot/summary.md first_summary)
 file(REMOVE ${WORK}/repair-models/observation.md)
+file(WRITE ${WORK}/repair-models/iot/summary.md "stale\n## Per failure kind and strategy\nstale tables\n")
 expect_run(0 "wrote" ${ALPLAN} bench repair --summarize ${WORK}/repair-models)
 file(READ ${WORK}/repair-models/observation.md again)
 if(NOT first_tables STREQUAL again)
   message(FATAL_ERROR "bench repair --summarize wrote other tables than the run did")
 endif()
-expect_run(2 "needs the runs.json of two observation models" ${ALPLAN} bench repair --summarize ${WORK}/repair)
+# A model's summary.md: its head kept, its tables written again from runs.json.
+file(READ ${WORK}/repair-models/iot/summary.md summary_again)
+string(FIND "${first_summary}" "## Per failure kind and strategy" tables_at)
+string(SUBSTRING "${first_summary}" ${tables_at} -1 first_summary_tables)
+if(NOT summary_again STREQUAL "stale\n${first_summary_tables}")
+  message(FATAL_ERROR "bench repair --summarize wrote other summary tables than the run did")
+endif()
+expect_run(2 "no full/, iot/ or camera/ runs.json" ${ALPLAN} bench repair --summarize ${WORK}/repair)
 file(WRITE ${WORK}/repair-models/camera/runs.json "[{\"home\": 1}]")
 expect_run(2 "repair-models/camera/runs.json: " ${ALPLAN} bench repair --summarize ${WORK}/repair-models)
 # The stability testbed on an IPC domain (benchmarks/harness/stability_bench.h):

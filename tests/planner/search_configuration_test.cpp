@@ -73,6 +73,14 @@ TEST_CASE("the anytime alias runs weighted A* with falling weights after the def
   const EngineSpec capped = with_anytime(alias("default"), 3.0, 500).engine;
   CHECK(capped.weights == std::vector<double>{5, 3});
   CHECK(capped.expansions == 500);
+  // The weights may search with a heuristic of their own (adapt's landmark
+  // cuts after the default's first plan).
+  const EngineSpec own = parse_search_configuration("anytime(ehc(trpg), weights=[5, 3], heuristic=lmcut)").engine;
+  CHECK(own.own_heuristic);
+  CHECK(own.heuristic.kind == HeuristicSpec::Kind::LmCut);
+  CHECK(own.children.front().heuristic.kind == HeuristicSpec::Kind::Trpg);
+  CHECK(parse_search_configuration(SearchConfiguration{own}.to_string()).engine == own);
+  CHECK_FALSE(e.own_heuristic);
 }
 
 TEST_CASE("components take their options by name") {

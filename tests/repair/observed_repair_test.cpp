@@ -102,7 +102,7 @@ TEST_CASE("substitute uses an object the camera saw earlier on the route") {
         std::string::npos);
 }
 
-TEST_CASE("adapt on a problem without action costs counts changes on a total-cost it sets to 0") {
+TEST_CASE("adapt on a problem without action costs or metric weighs changes against the makespan") {
   LoadedHome home = load_home(kDir, "paper-scenario-2.pddl");
   pddl::Problem problem = *home.files.problem;
   std::erase_if(problem.numeric_init, [](const pddl::NumericFact& f) { return f.function.name == "total-cost"; });
@@ -121,7 +121,7 @@ TEST_CASE("adapt on a problem without action costs counts changes on a total-cos
   // another name on every IPC temporal domain.
   CHECK(r.fallback.empty());
   CHECK(r.explanation.how.find("adapted the old plan") == 0);
-  CHECK(r.explanation.how.find("(changes counted on a total-cost the task lacked)") != std::string::npos);
+  CHECK(r.explanation.how.find("against the makespan, the task having no metric)") != std::string::npos);
 }
 
 TEST_CASE("suggest cheers a sad senior too but still cannot soothe a terrified one") {

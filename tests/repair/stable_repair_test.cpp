@@ -1,7 +1,7 @@
 // Repairs for plan stability on a temporal domain without action costs, as
-// the IPC temporal domains are: adapt counts changes on a total-cost it adds,
-// stable finds the plan at minimum distance from the old one
-// (repair/stable_compilation.h).
+// the IPC temporal domains are: stable finds the plan at minimum distance
+// from the old one (repair/stable_compilation.h); adapt's cases are in
+// adapt_strategy_test.cpp.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -116,25 +116,6 @@ bool uses(const ExecutingPlan& plan, const std::string& step) {
 
 }  // namespace
 
-TEST_CASE("adapt on a domain without total-cost adds one and keeps the old plan's truck") {
-  // k is found at b, not a: the drives still serve, the load must change.
-  Fixture f;
-  f.observed.set({"pat", "k", "a"}, false);
-  f.observed.set({"pat", "k", "b"}, true);
-  StrategyOptions options;
-  options.adapt_budget = 2.0;
-  const RepairResult r = make_strategy("adapt", options)->repair(f.request());
-  REQUIRE(r.repaired);
-  CHECK(r.fallback.empty());
-  CHECK(r.how.find("3 of its 4 remaining steps are kept") != std::string::npos);
-  CHECK(r.how.find("total-cost the task lacked") != std::string::npos);
-  // t2 would do as well for the makespan; only the old plan prefers t1.
-  CHECK(uses(*r.plan, "(drive t1 a b)"));
-  CHECK(uses(*r.plan, "(load k t1 b)"));
-  CHECK(plan_distance(f.old_names(), names(*r.plan)) == 2);
-  CHECK(valid_from_observed(f, *r.plan));
-}
-
 TEST_CASE("stable repairs a closed road at the minimum distance and proves it") {
   // The road b-c is closed: the drive over b must go. Hand-computed
   // minimum: keep load and unload, forgo both drives, add a-d and d-c
@@ -146,6 +127,7 @@ TEST_CASE("stable repairs a closed road at the minimum distance and proves it") 
   REQUIRE(stable.repaired);
   CHECK(stable.fallback.empty());
   CHECK(stable.how.find("stable repair at distance 4 from the old plan (proven minimal") == 0);
+  CHECK(stable.proven_minimal);
   CHECK(plan_distance(f.old_names(), names(*stable.plan)) == 4);
   CHECK(uses(*stable.plan, "(load k t1 a)"));
   CHECK(uses(*stable.plan, "(unload k t1 c)"));
@@ -186,6 +168,8 @@ TEST_CASE("stable proves the same minimum with A* on landmark cuts as with unifo
   const RepairResult guessed = make_strategy("stable", guessing)->repair(g.request());
   REQUIRE(guessed.repaired);
   CHECK(guessed.how.find("not proven minimal: complete(wastar(trpg") != std::string::npos);
+  CHECK_FALSE(guessed.proven_minimal);
+  CHECK(landmarks.proven_minimal);
 }
 
 TEST_CASE("stable keeps the whole old plan when nothing failed") {
