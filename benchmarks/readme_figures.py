@@ -53,6 +53,9 @@ FUZZ_SEEDS = ["fuzz-planner-seed1-issue42-2026-12-06", "fuzz-planner-seed2-issue
               "fuzz-planner-seed1-issue42-final-2026-12-07", "fuzz-planner-seed2-issue42-final-2026-12-07",
               "fuzz-planner-seed3-issue42-final-2026-12-07", "fuzz-planner-seed3-issue42-subepsilon-2026-12-07"]
 ORACLE_VAL = "oracle-against-val-300-2026-12-02"
+# Instances 1-5 at 976ad7b: adapt counting removals, stable cross-checked.
+STABILITY_ADAPT_REMOVALS = "stability-ipc2002-1-5-adapt-removals-2026-12-07"
+CROSS_CHECK_FIRST = "stability-ipc2002-1-5-cross-check-2026-12-07"
 
 
 def load(path):
@@ -295,6 +298,60 @@ def stability_itt_block(folder):
     return table(["strategy", "against replan on", "perturbations", "wins / ties / losses", "net benefit"], rows)
 
 
+PDDL3_FIRST = "pddl3-60s-first-2026-12-07"
+
+
+def pddl3_classical_block(folder=PDDL3_FIRST):
+    """IPC 2006's simple- and qualitative-preferences tracks in a `bench
+    planners` run: coverage and the summed metric per domain (there is no
+    reference planner's result for them in ../shared), and VAL's verdicts
+    from the folder's val-check.txt (benchmarks/val_check.py)."""
+    runs = load(f"{folder}/runs.json")
+    runs = runs["runs"] if isinstance(runs, dict) else runs
+    with open(os.path.join(RESULTS, folder, "val-check.txt")) as f:
+        val = f.read()
+    rows = []
+    for domain in sorted({r["domain"] for r in runs if r["domain"].startswith("ipc-2006-classical/")}):
+        mine = [r for r in runs if r["domain"] == domain]
+        solved = [r for r in mine if r["status"] == "solved"]
+        accepted = sum(f"{r['problem']}: VAL valid" in val for r in solved)
+        instance = os.path.join(HERE, "..", "..", "shared", "benchmarks", mine[0]["problem"])
+        with open(instance) as f:
+            direction = "maximised" if re.search(r"\(:metric\s+maximize", f.read(), re.I) else "minimised"
+        rows.append([domain.split("/", 1)[1], f"{len(solved)}/{len(mine)}", f"{accepted}/{len(solved)}", direction,
+                     f"{sum(r['value'] for r in solved):.1f}"])
+    return table(["domain", "coverage", "VAL accepts", "metric", "summed metric"], rows)
+
+
+def cross_check_block(folder):
+    """stable against the classical compilation's proven minimum
+    (`bench stability --cross-check`), per perturbation: counted from
+    runs.json, never from summary.md."""
+    runs = [r for r in load(f"{folder}/runs.json")["runs"] if r["strategy"] == "stable"]
+    counts = Counter()
+    different = []
+    for r in runs:
+        status = r.get("cross_check_status", "")
+        stable = r["proven"] and r["valid"]
+        if status == "not comparable":
+            counts["not comparable"] += 1
+        elif status == "proven" and stable:
+            same = r["cross_check_distance"] == r["distance"]
+            counts["both proven, equal" if same else "both proven, different"] += 1
+            if not same:
+                different.append(f"{r['domain']} {r['problem']} {r['kind']} {r['perturbation']}")
+        elif status == "proven":
+            counts["only the classical task proven"] += 1
+        elif stable:
+            counts["only stable proven"] += 1
+        else:
+            counts["neither proven"] += 1
+    heads = ["both proven, equal", "both proven, different", "only stable proven", "only the classical task proven",
+             "neither proven", "not comparable"]
+    out = table(["perturbations"] + heads, [[str(len(runs))] + [str(counts[h]) for h in heads]])
+    return out + ("\n\nBoth proven, different: " + "; ".join(different) if different else "")
+
+
 def stability_by_domain(folder):
     runs = load(f"{folder}/runs.json")["runs"]
     strategies = strategies_of(runs)
@@ -516,6 +573,10 @@ BLOCKS = {
     "stability-itt-1-5": lambda: stability_itt_block(STABILITY[0]),
     "stability-itt-6-10-first-run": lambda: stability_itt_block(STABILITY[2]),
     "stability-itt-6-10": lambda: stability_itt_block(STABILITY[1]),
+    "stability-itt-adapt-removals": lambda: stability_itt_block(STABILITY_ADAPT_REMOVALS),
+    "stable-cross-check-first": lambda: cross_check_block(CROSS_CHECK_FIRST),
+    "stable-cross-check": lambda: cross_check_block(STABILITY_ADAPT_REMOVALS),
+    "pddl3-classical": pddl3_classical_block,
     "test-set-ledger": test_set_ledger_block,
     "stability-domains-1-5": lambda: stability_by_domain(STABILITY[0]),
     "stable-proof-search": proof_search_block,
