@@ -10,7 +10,11 @@ Each block of figures in the README stands between
 and is exactly what this script prints for NAME, computed from the runs.json
 files under benchmarks/results/ alone (the differential blocks: a run's
 report.txt and counts.json) (not from summary.md, which the same
-program wrote with the numbers). Usage:
+program wrote with the numbers). Two blocks are not re-derived: study-wins
+and study-switch read the verdicts, intervals and Holm p-values of the
+study's summary.json, which alplan wrote (the bootstrap and the tests are
+stats/'s, tested there); they check that the README shows what the
+committed summary says, not the statistics themselves. Usage:
 
     benchmarks/readme_figures.py             print every block
     benchmarks/readme_figures.py NAME        print one
@@ -103,7 +107,7 @@ def strategies_of(runs):
 
 # Strategies the study ran but its tables leave out, each with the block
 # that says why (issue 43: switch's outcomes are replan's; study-switch).
-OUT_OF_TABLES = {"switch"}
+OUT_OF_TABLES = frozenset({"switch"})
 
 
 def tabled(strategies):

@@ -127,8 +127,6 @@ void mark_action(const GroundAction& a, RelevanceMarks& marks) {
   }
 }
 
-}  // namespace
-
 // PDDL 3: a trajectory constraint, hard or soft, may need each fact it
 // names true at one time and false at another (an `always (or (not lit)
 // (not open))` is kept by an action that deletes `lit`), so its facts are
@@ -141,6 +139,8 @@ void mark_trajectory(const GroundTask& task, RelevanceMarks& marks) {
   }
   for (const GroundPreference& p : task.pddl3.goal_preferences) marks.condition(p.condition);
 }
+
+}  // namespace
 
 std::vector<bool> relevant_actions(const GroundTask& task, const std::vector<ActionId>& keep) {
   const Changers changers(task);

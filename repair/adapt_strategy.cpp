@@ -129,7 +129,7 @@ class AdaptStrategy : public RepairStrategy {
     } catch (const std::exception& error) {
       why = error.what();
     }
-    if (!why.empty()) result = fall_back(seen, known, why, result);
+    if (!why.empty()) result = fall_back(seen, known, why, result, since(began));
     result.problem.init = known.init;
     result.problem.numeric_init = known.numeric_init;
     result.problem.timed_literals = known.timed_literals;
@@ -140,10 +140,12 @@ class AdaptStrategy : public RepairStrategy {
  private:
   // The repairs' planner with its search within the budget: `search` in
   // anytime mode (the fallback's), or the compiled task's search.
-  PlannerOptions budgeted(SearchConfiguration search) const {
+  // What is left of adapt_budget after `spent` seconds: a fallback shares
+  // the budget with the attempt before it.
+  PlannerOptions budgeted(SearchConfiguration search, double spent = 0.0) const {
     PlannerOptions planner = options_.planner;
     planner.search = std::move(search);
-    planner.time_limit = std::min(planner.time_limit, options_.adapt_budget);
+    planner.time_limit = std::min(planner.time_limit, std::max(0.0, options_.adapt_budget - spent));
     return planner;
   }
 
@@ -224,14 +226,14 @@ class AdaptStrategy : public RepairStrategy {
   }
 
   RepairResult fall_back(const RepairRequest& request, const pddl::Problem& known, const std::string& why,
-                         const RepairResult& tried) const {
-    RepairResult result = replan_from(request, *request.domain, known, budgeted(replan_search()));
+                         const RepairResult& tried, double spent) const {
+    RepairResult result = replan_from(request, *request.domain, known, budgeted(replan_search(), spent));
     result.planner_calls += tried.planner_calls;
     result.integrated = tried.integrated;
     result.fallback = "replan";
     const std::string what = result.repaired ? describe_remedy(*result.plan, request.now) : result.how;
     result.how = "adapt could not plan on the stability compilation (" + why +
-                 "), so it fell back to replan (anytime search in its budget): " + what;
+                 "), so it fell back to replan (anytime search in what was left of its budget): " + what;
     return result;
   }
 

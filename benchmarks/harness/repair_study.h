@@ -5,8 +5,8 @@
 // (Fox, Gerevini, Long & Serina, ICAPS 2006: actions removed plus added),
 // delay until the senior is comforted, makespan, cost and planner calls;
 // every run counted (intention to treat): the metrics every run has as
-// paired differences, those only a comforted run has (delay, makespan,
-// cost, metric) as a net benefit with success first (Buyse 2010,
+// paired differences, those that mean something only for a comforted run
+// (stability, delay, makespan, cost, metric) as a net benefit with success first (Buyse 2010,
 // stats/prioritized_comparison.h); each with a 95% cluster bootstrap
 // interval, paired tests on the per-home means and effect sizes
 // (stats/paired_comparison.h: a home's runs are not independent, so the

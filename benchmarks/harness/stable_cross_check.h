@@ -107,6 +107,9 @@ struct CrossCheckResult {
   CrossCheckStatus status = CrossCheckStatus::NotComparable;
   std::optional<std::size_t> distance;  // the classical plan's, proven minimal when Proven
   std::string note;                      // why not comparable or not proven; the plan's counts when proven
+  // A limit of the planner's proofs that Proven does not hold against (one
+  // about what a happening may hold; every happening here has one action).
+  std::string waived;
   double seconds = 0.0;
 };
 

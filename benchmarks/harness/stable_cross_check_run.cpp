@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -115,6 +116,16 @@ std::string run_in_order(const GroundTask& task, const std::vector<const repair:
   return goal.empty() ? "" : "the goal: " + goal;
 }
 
+// The classical task has no PDDL 3 constraint or approximation, no
+// continuous change and no durative action: what proof_limits can then
+// name is about which snaps may share a happening, and the lock keeps every
+// happening to one action.
+bool only_happening_limits_can_arise(const GroundTask& task) {
+  if (!task.pddl3.constraints.empty() || !task.pddl3.approximations.empty()) return false;
+  return std::none_of(task.actions.begin(), task.actions.end(),
+                      [](const GroundAction& a) { return a.durative || !a.continuous.empty(); });
+}
+
 // With ALPLAN_CROSS_CHECK_DUMP set to a folder, each cross-check's
 // classical task and stable's plan are written there, to be checked with
 // VAL or planned again where the two disagree.
@@ -123,10 +134,12 @@ void dump(const ClassicalRepairTask& task, const pddl::Problem& reformulated, co
   const char* dir = std::getenv("ALPLAN_CROSS_CHECK_DUMP");
   if (!dir || !*dir) return;
   std::filesystem::create_directories(dir);
-  // Numbered: IPC instances share names (every satellite problem is strips-sat-x-1).
-  static int dumped = 0;
-  const std::string stem =
-      std::string(dir) + "/" + std::to_string(++dumped) + "-" + task.problem.name + "-at-" + std::to_string(now);
+  // Named by a hash of the task: IPC instances share names (every satellite
+  // problem is strips-sat-x-1), and a counter would be state kept between calls.
+  const std::string text = pddl::write_problem(task.problem);
+  char hash[24];
+  std::snprintf(hash, sizeof hash, "%016zx", std::hash<std::string>{}(text));
+  const std::string stem = std::string(dir) + "/" + hash + "-" + task.problem.name + "-at-" + std::to_string(now);
   // The keep actions name the problem's objects: in files they must be the
   // domain's constants.
   pddl::Domain domain = task.domain;
@@ -178,13 +191,14 @@ CrossCheckResult solve_classical_repair(const ClassicalRepairTask& task, double 
   // every action reads and deletes the one that holds (a start, a copy of an
   // instantaneous action and a forgo take free; an end takes its mid), so no
   // two are applicable in one state, let alone non-mutex. The limits about
-  // what a happening may hold (each says "happening") then lose no plan;
-  // the others (PDDL 3, continuous change, durations) cannot arise in a
-  // task without durative actions that task_limit let through, and would
-  // still count.
+  // what a happening may hold then lose no plan. The others (PDDL 3,
+  // continuous change, durations read by effects) are waived only where the
+  // task shows none of them: checked on the task, not read from the text of
+  // the first limit proof_limits names.
   const std::string limits = proof_limits(TaskIndex(ground_task));
-  const bool moot = limits.find("happening") != std::string::npos;
+  const bool moot = !limits.empty() && only_happening_limits_can_arise(*ground_task);
   const bool proves = proves_cost_optimal(options.search.engine) && (limits.empty() || moot);
+  if (proves && moot) result.waived = limits;
   result.status = CrossCheckStatus::NotProven;
   if (const FoundPlan* best = planned.best()) {
     const Counted c = count(best->plan);
@@ -198,6 +212,7 @@ CrossCheckResult solve_classical_repair(const ClassicalRepairTask& task, double 
       result.status = CrossCheckStatus::Proven;
     }
     if (!proves) result.note += "; not a proof: " + (limits.empty() ? std::string(kOptimalSearch) : limits);
+    if (!result.waived.empty()) result.note += "; waived (one action a happening): " + result.waived;
     if (proves && moot) result.note += "; the planner's limit on shared happenings does not bind (one action each)";
   } else if (planned.status == PlannerResult::Status::Unsolvable) {
     // A proof too: no repair exists at any distance.
