@@ -1,0 +1,1 @@
+"""The blocks of figures that benchmarks/readme_figures.py derives, one module per study."""
