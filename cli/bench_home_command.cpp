@@ -12,11 +12,13 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "cli/commands.h"
 #include "cli/home_run_options.h"
 #include "cli/perceive_common.h"
 #include "cli/perception_module.h"
+#include "cli/test_set_flags.h"
 #include "home/home_bench.h"
 #include "planner/progress_meter.h"
 
@@ -27,9 +29,29 @@ struct BenchHomeOptions {
   home::HomeSettings settings;
   double hours = 8.0;
   std::string out;
+  bench::TestSetRunOptions test_set;  // where the home is held out (test_set_ledger.h)
 };
 
+// What the ledger keeps of a run on a held-out home: the figures its
+// table leads with (the rest is in bench-home.json).
+nlohmann::json ledger_result(const nlohmann::json& result) {
+  nlohmann::json kept = nlohmann::json::object();
+  for (const char* key : {"comforted_within_window_share", "never_served", "meetable_goals", "weighted_lateness_s"}) {
+    if (result.contains(key)) kept[key] = result[key];
+  }
+  return kept;
+}
+
 int run_bench_home(BenchHomeOptions& o) {
+  std::optional<bench::TestSetRun> ledger;
+  if (const std::optional<std::string> test_set = bench::home_test_set(o.settings.seed, 1)) {
+    try {
+      ledger.emplace(bench::TestSetRunHead{*test_set, "bench home", bench::command_line(), o.out}, o.test_set);
+    } catch (const bench::TestSetRefused& e) {
+      std::cerr << "error: refused: " << e.what() << "\n";
+      return kExitInputError;
+    }
+  }
   o.settings.until = o.hours * 3600.0;
   ProgressMeter meter(std::cerr, o.settings.until, "simulated s", isatty(STDERR_FILENO) != 0);
   const home::HomeBenchResult result = home::run_home_bench(o.settings, simulated_time_meter(meter));
@@ -40,6 +62,10 @@ int run_bench_home(BenchHomeOptions& o) {
     const std::string path = o.out + "/bench-home.json";
     std::ofstream(path) << result.json(o.settings).dump(2) << "\n";
     std::cout << "wrote " << path << "\n";
+  }
+  if (ledger) {
+    ledger->finish(ledger_result(result.json(o.settings)));
+    std::cerr << "recorded in the test-set ledger: " << ledger->ledger() << " (" << ledger->id() << ")\n";
   }
   return kExitOk;
 }
@@ -65,6 +91,7 @@ void add_bench_home_command(CLI::App* bench, int& exit_code) {
   add_home_run_options(*cmd, s);
   cmd->add_option("--strategy", s.strategy, "Repair strategy");
   cmd->add_option("--out", o->out, "Write bench-home.json here");
+  add_test_set_flags(cmd, o->test_set);
   cmd->add_option("--unplanned-dir", s.unplanned_dir, "Write each problem the planner found no plan for here (PDDL)");
   cmd->add_flag("!--no-score-meetable", s.score_meetable,
                 "Skip asking, for each goal, whether one idle robot could have met its window alone");

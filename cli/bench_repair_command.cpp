@@ -22,6 +22,7 @@
 #include "cli/commands.h"
 #include "cli/perception_module.h"
 #include "cli/slurm_options.h"
+#include "cli/test_set_flags.h"
 #include "domains/pddl_files.h"
 #include "repair/observation.h"
 #include "repair/random_events.h"
@@ -38,6 +39,7 @@ struct BenchRepairOptions {
   std::string recognizer = "cnn";
   std::string summarize;  // a run's folder: its summaries again from its runs, nothing run
   SlurmFlags slurm;
+  bench::TestSetRunOptions test_set;  // where the homes are held out (test_set_ledger.h)
 };
 
 // "all", or a comma-separated list of random event kinds.
@@ -115,6 +117,45 @@ int summarize_models(const BenchRepairOptions& o) {
   return 0;
 }
 
+// What the ledger keeps of a run on held-out homes: per observation model
+// and strategy, runs and runs that comforted the senior (the tables come
+// from the runs.json files).
+nlohmann::json ledger_result(const bench::RepairBenchOptions& o, const std::vector<repair::ObservationModel>& models) {
+  nlohmann::json result = nlohmann::json::object();
+  for (repair::ObservationModel model : models) {
+    const std::string folder = models.size() > 1 ? o.out_dir + "/" + repair::to_string(model) : o.out_dir;
+    nlohmann::json& strategies = result[repair::to_string(model)];
+    for (const bench::StudyRun& r : bench::load_study_runs(folder + "/runs.json")) {
+      nlohmann::json& s = strategies[r.strategy];
+      s["runs"] = s.value("runs", 0) + 1;
+      s["comforted"] = s.value("comforted", 0) + (r.comforted ? 1 : 0);
+    }
+  }
+  return result;
+}
+
+// The study, recorded in the test-set ledger where its homes are held out:
+// a local run when it ends, an array when it is submitted (its tasks and
+// merge must then run the submitted binary).
+int run_recorded(const BenchRepairOptions& options, const std::vector<repair::ObservationModel>& models) {
+  const bench::RepairBenchOptions& o = options.bench;
+  const std::optional<std::string> test_set = bench::home_test_set(o.seed, static_cast<std::uint64_t>(o.homes));
+  std::optional<bench::TestSetRun> ledger;
+  if (test_set && (o.array.role == bench::ArrayRole::local || o.array.role == bench::ArrayRole::submit)) {
+    ledger.emplace(bench::TestSetRunHead{*test_set, "bench repair", bench::command_line(), o.out_dir}, options.test_set);
+  } else if (test_set) {
+    bench::check_array_build(o.out_dir, options.test_set);
+  }
+  const int code = models.size() > 1 ? run_under_models(o, models) : bench::run_repair_bench(o, std::cout, std::cerr);
+  if (ledger && code == 0) {
+    ledger->finish(o.array.role == bench::ArrayRole::submit
+                       ? nlohmann::json{{"submitted", "a Slurm array: its result is what its merge prints"}}
+                       : ledger_result(o, models));
+    std::cerr << "recorded in the test-set ledger: " << ledger->ledger() << " (" << ledger->id() << ")\n";
+  }
+  return code;
+}
+
 int run_repair(BenchRepairOptions options) {
   if (!options.summarize.empty()) {
     try {
@@ -183,8 +224,10 @@ int run_repair(BenchRepairOptions options) {
   }
   options.bench.alplan = bench::self_executable();
   try {
-    if (models.size() > 1) return run_under_models(options.bench, models);
-    return bench::run_repair_bench(options.bench, std::cout, std::cerr);
+    return run_recorded(options, models);
+  } catch (const bench::TestSetRefused& e) {
+    std::cerr << "error: refused: " << e.what() << "\n";
+    return kExitInputError;
   } catch (const domains::InputError& e) {
     std::cerr << e.what();
     return kExitInputError;
@@ -263,6 +306,7 @@ void add_bench_repair_command(CLI::App* bench, int& exit_code) {
   r->add_option("--initial-expansions", o->bench.initial_expansions,
                 "Cap each weight of that search at so many expansions (0: by time alone; set, the first plans do "
                 "not depend on the machine's speed)");
+  add_test_set_flags(r, o->test_set);
   add_slurm_options(r, o->slurm);
   r->callback([o, &exit_code] { exit_code = run_repair(*o); });
 }

@@ -1,5 +1,5 @@
 // The flags of a run that may touch a test set (`bench planners`, `bench
-// stability`): why it is run and why again (benchmarks/harness/
+// stability`, `bench repair`, `bench home`): why it is run and why again (benchmarks/harness/
 // test_set_ledger.h). The ledger is always the source tree's: a flag for
 // another file would let a run skip it.
 #pragma once

@@ -7,9 +7,9 @@ import statistics
 from collections import Counter, defaultdict
 
 from figures.common import HERE, RESULTS, load, nearest_rank, table, strategies_of  # noqa: F401
-STUDY = "repair-study-40-homes-2026-11-28"
-SCATTERED = "repair-study-scatter-2026-11-28"
-TAGS = "tags-by-scatter-2026-11-28"
+STUDY = "repair-study-40-homes-2026-12-07"
+SCATTERED = "repair-study-scatter-2026-12-07"
+TAGS = "tags-by-scatter-2026-12-07"
 # Folder under TAGS, and the row's label: the scatter, and the repairs'
 # search when it is not the study's (anytime down to weight 3).
 SCATTERS = [("scatter-0", "0"), ("scatter-0.5", "0.5"), ("scatter-1", "1"),

@@ -112,6 +112,17 @@ std::optional<std::string> instance_test_set(const std::vector<int>& instance_nu
   return std::nullopt;
 }
 
+std::optional<std::string> home_test_set(std::uint64_t first_seed, std::uint64_t homes) {
+  if (homes == 0) return std::nullopt;
+  const std::uint64_t last_seed = first_seed + (homes - 1);  // may wrap past the largest seed to 0
+  const bool touches = last_seed >= first_seed
+                           ? last_seed >= kHeldOutHomeSeedFirst && first_seed <= kHeldOutHomeSeedLast
+                           : last_seed >= kHeldOutHomeSeedFirst || first_seed <= kHeldOutHomeSeedLast;
+  if (!touches) return std::nullopt;
+  return "held-out homes (seeds " + std::to_string(kHeldOutHomeSeedFirst) + "-" + std::to_string(kHeldOutHomeSeedLast) +
+         ")";
+}
+
 TestSetRun::TestSetRun(TestSetRunHead head, TestSetRunOptions options) {
   ledger_ = options.ledger.empty() ? (std::filesystem::path(options.source_dir) / kLedgerInTree).string() : options.ledger;
   if (options.reason.empty()) {

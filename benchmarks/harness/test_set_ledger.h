@@ -3,7 +3,9 @@
 // can go unreported and no choice can silently follow one.
 //
 // Declared test sets: instances 6-10 of every domain of a benchmark suite
-// (`bench planners`, `bench stability`; 1-5 are for tuning). The protocol,
+// (`bench planners`, `bench stability`; 1-5 are for tuning), and the
+// held-out homes, generated homes of seeds 1001-2000 (`bench repair`,
+// `bench home`; every study before them chose on seeds 1-40). The protocol,
 // in the spirit of a preregistered held-out evaluation:
 // - a run on a test set states the change it measures (`--reason`); without
 //   one it is refused;
@@ -23,6 +25,7 @@
 // the last.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -38,6 +41,14 @@ namespace alplan::bench {
 // none: "instances 6-10" where any number is within 6..10. A problem's
 // number is the N of its instance-N file, else its position in its domain.
 std::optional<std::string> instance_test_set(const std::vector<int>& instance_numbers);
+
+// The held-out homes: generated homes of these seeds are a test set.
+inline constexpr std::uint64_t kHeldOutHomeSeedFirst = 1001;
+inline constexpr std::uint64_t kHeldOutHomeSeedLast = 2000;
+
+// The name of the test set `homes` generated homes from `first_seed` on
+// (seeds first_seed .. first_seed + homes - 1) touch, or none.
+std::optional<std::string> home_test_set(std::uint64_t first_seed, std::uint64_t homes);
 
 // A run the ledger refuses, with what to do instead.
 class TestSetRefused : public std::runtime_error {
@@ -55,7 +66,7 @@ struct TestSetRunOptions {
 
 struct TestSetRunHead {
   std::string test_set;  // instance_test_set's name
-  std::string harness;   // "bench planners", "bench stability"
+  std::string harness;   // "bench planners", "bench stability", "bench repair", "bench home"
   std::string command;   // as typed (command_line())
   std::string out;       // the results folder
 };

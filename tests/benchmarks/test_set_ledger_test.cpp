@@ -2,6 +2,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -58,6 +59,18 @@ TEST_CASE("a run touches the test set where any instance is 6 to 10") {
   CHECK_FALSE(instance_test_set({0, 11, 12}));  // list files number 0; 11 is no declared test set
   CHECK(instance_test_set({5, 6}) == std::optional<std::string>("instances 6-10"));
   CHECK(instance_test_set({10}) == std::optional<std::string>("instances 6-10"));
+}
+
+TEST_CASE("a run touches the held-out homes where any home's seed is 1001 to 2000") {
+  const std::optional<std::string> held_out("held-out homes (seeds 1001-2000)");
+  CHECK_FALSE(home_test_set(1, 40));      // the studies' homes, seeds 1-40
+  CHECK_FALSE(home_test_set(1, 1000));    // seeds 1-1000: the last is 1000
+  CHECK(home_test_set(1, 1001) == held_out);
+  CHECK(home_test_set(2000, 5) == held_out);
+  CHECK_FALSE(home_test_set(2001, 40));
+  CHECK_FALSE(home_test_set(1500, 0));    // no home, no run
+  CHECK_FALSE(home_test_set(UINT64_MAX - 1, 1003));  // wraps: seeds MAX-1, MAX, 0-1000
+  CHECK(home_test_set(UINT64_MAX - 1, 1004) == held_out);  // wraps: seeds MAX-1, MAX, 0-1001
 }
 
 TEST_CASE("the ledger records a run's start and its result, and reads back") {

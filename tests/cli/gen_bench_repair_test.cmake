@@ -114,6 +114,13 @@ endif()
 expect_run(2 "no full/, iot/ or camera/ runs.json" ${ALPLAN} bench repair --summarize ${WORK}/repair)
 file(WRITE ${WORK}/repair-models/camera/runs.json "[{\"home\": 1}]")
 expect_run(2 "repair-models/camera/runs.json: " ${ALPLAN} bench repair --summarize ${WORK}/repair-models)
+# Homes of seeds 1001-2000 are held out (test_set_ledger.h): a run touching
+# one without --reason is refused before it runs.
+expect_run(2 "held-out homes (seeds 1001-2000)" ${ALPLAN} bench repair --homes 2 --seed 1000 --strategies replan
+  --recognizer simulated --no-paper-home --out ${WORK}/held-out)
+if(EXISTS ${WORK}/held-out)
+  message(FATAL_ERROR "bench repair ran on held-out homes it refused")
+endif()
 # The stability testbed on an IPC domain (benchmarks/harness/stability_bench.h):
 # a small run writes its files; bad flags are refused with the reason.
 expect_run(0 "Plan stability" ${ALPLAN} bench stability --ipc ${SHARED}/benchmarks/ipc --domains rovers --problems 1

@@ -50,4 +50,8 @@ expect 2 "cannot open" "$alplan" replay missing.jsonl
 # An unknown senior in a home file: named, exit 2.
 sed 's/(be senior8 dinning_room1)/(be senior9 dinning_room1)/' "$here/../../domains/assisted_living/home.pddl" >home9.pddl
 expect 2 "senior9" "$alplan" home --home home9.pddl --until 60
+# A held-out home (seeds 1001-2000) is a test set: without --reason, refused
+# before anything runs or is written to the ledger.
+expect 2 "held-out homes (seeds 1001-2000)" "$alplan" bench home --seed 1500 --hours 0.01 --out held-out
+test ! -e held-out
 echo "home, replay and report: ok"
