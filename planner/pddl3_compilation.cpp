@@ -5,6 +5,7 @@
 
 #include "pddl_parser/writer.h"
 #include "planner/instantiate.h"
+#include "planner/pddl3_order_constraints.h"
 #include "planner/trajectory_monitor.h"
 
 namespace alplan {
@@ -61,9 +62,15 @@ std::vector<ConditionSet> disjuncts(const ConditionSet& c) {
   return out;
 }
 
+// The operators pddl3_order_constraints.h compiles, each with its monitor facts.
+bool order_operator(ModalOperator op) {
+  return op == ModalOperator::AtMostOnce || op == ModalOperator::SometimeBefore ||
+         op == ModalOperator::SometimeAfter || op == ModalOperator::HoldDuring || op == ModalOperator::HoldAfter;
+}
+
 bool compilable(ModalOperator op) {
   return op == ModalOperator::AtEnd || op == ModalOperator::Always || op == ModalOperator::Sometime ||
-         op == ModalOperator::Within;
+         op == ModalOperator::Within || op == ModalOperator::AlwaysWithin || order_operator(op);
 }
 
 bool holds_in(const std::vector<FactId>& facts, const ConditionSet& c) {
@@ -112,8 +119,22 @@ class Compiler {
           return result;
         }
       }
-      if (g.op == ModalOperator::AlwaysWithin && !g.preference) {
+      if (order_operator(g.op)) {
+        if (std::optional<std::string> why = order_constraint(k, g)) {
+          if (g.preference) continue;  // not enforced: its violations count
+          result.refused = g.text + ": the planner cannot plan with this hard `" + to_string(g.op) +
+                           "` constraint: " + *why;
+          return result;
+        }
+        continue;
+      }
+      if (g.op == ModalOperator::AlwaysWithin) {
+        // A preference a round enforces takes the hard form's watches where
+        // it can; otherwise (or from an observed state, where a deadline may
+        // be open) its violations count.
+        if (g.preference && so_far_.seen) continue;
         if (std::optional<std::string> why = watch(k, g)) {
+          if (g.preference) continue;
           result.refused = g.text + ": the planner cannot plan with this hard `always-within` constraint: " + *why;
           return result;
         }
@@ -252,6 +273,24 @@ class Compiler {
     return std::nullopt;
   }
 
+  // An order constraint compiled (pddl3_order_constraints.h), or why not.
+  // From an observed state its monitor would need what the states before
+  // it did, which the compiled task cannot start from.
+  std::optional<std::string> order_constraint(std::size_t k, const GroundConstraint& g) {
+    if (so_far_.seen) return std::string("not from an observed state (its history is not compiled)");
+    OrderCompilation c{*out_, source_.actions.size(), start_facts_,
+                       [this](const std::string& name) { return new_fact(name); },
+                       [this](std::size_t key, const ConditionSet& condition, FactId fact, bool deletes) {
+                         add_witnesses(key, condition, fact, deletes, std::nullopt);
+                       }};
+    switch (g.op) {
+      case ModalOperator::AtMostOnce: return compile_at_most_once(c, k, g);
+      case ModalOperator::SometimeBefore: return compile_sometime_before(c, k, g);
+      case ModalOperator::SometimeAfter: return compile_sometime_after(c, k, g);
+      default: return compile_hold(c, k, g);
+    }
+  }
+
   std::uint32_t new_schema(const std::string& name) {
     ActionSchema named;
     named.name = name;
@@ -293,14 +332,21 @@ class Compiler {
                                    [](const GroundTimedLiteral& a, const GroundTimedLiteral& b) { return a.time < b.time; }),
                   close);
     }
-    const std::uint32_t schema = new_schema("pddl3-witness-" + id);
+    add_witnesses(k, requirement, done, false, open);
+  }
+
+  // Instantaneous actions, one per disjunct of `requirement` (and `open`
+  // where set), that add `fact` (delete it, where `deletes`).
+  void add_witnesses(std::size_t k, const ConditionSet& requirement, FactId fact, bool deletes,
+                     std::optional<FactId> open) {
+    const std::uint32_t schema = new_schema("pddl3-witness-" + std::to_string(k));
     for (ConditionSet condition : disjuncts(requirement)) {
       GroundAction w;
       w.schema = schema;
       if (open) condition.positive.push_back(*open);
       sort_unique(condition.positive);
       w.at_start = std::move(condition);
-      w.start.add.push_back(done);
+      (deletes ? w.start.del : w.start.add).push_back(fact);
       out_->actions.push_back(std::move(w));
     }
   }

@@ -33,9 +33,13 @@
 //   last epsilon of the t, or that needs two watches of one constraint at
 //   once, is lost, so the compiled task's exhaustion proves nothing
 //   (GroundTrajectory::approximations, read by proof_limits).
-// The other operators (at-most-once, sometime-before, sometime-after,
-// always-within in other forms, hold-during, hold-after) are refused when hard,
-// named with their position, and never enforced when soft.
+// - at-most-once, sometime-before, sometime-after, hold-during and
+//   hold-after: monitor facts the task's snaps keep, with the forms they
+//   take and why each is exact or stricter (pddl3_order_constraints.h);
+//   not from an observed state, whose history they would need.
+// Always-within in other forms, and the forms pddl3_order_constraints.h
+// cannot take, are refused when hard, named with their position, and never
+// enforced when soft.
 //
 // Exactness: a plan of the compiled task without its witness steps is a plan
 // of the original task that meets every hard and every enforced constraint
@@ -94,9 +98,10 @@ struct TrajectorySoFar {
 // anywhere, or constraints other than hard `always`.
 bool needs_compilation(const GroundTask& task);
 
-// Whether every instance of a preference has a form the compilation can
-// enforce (goal and precondition preferences, at end, always, sometime,
-// within).
+// Whether every instance of a preference has an operator the compilation
+// can enforce (goal and precondition preferences, at end, always, sometime,
+// within, and the order operators; one whose form the compilation cannot
+// take is left unenforced when a round selects it).
 bool enforceable(const GroundTask& task, std::uint32_t preference);
 
 // `epsilon`: the planner's separation of dependent happenings (PlannerOptions),

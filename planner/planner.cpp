@@ -329,7 +329,11 @@ class PlanChecker {
     const DeorderingInput input{index_, search_start_.state, search_start_.release, options_.epsilon};
     if (const std::optional<Solution> lifted = deorder(input, solution)) {
       FoundPlan candidate = validated(*lifted, engine + ", deordered");
-      if (candidate.validation.valid && candidate.validation.value < found.validation.value - 1e-9) return candidate;
+      // Better under the metric's own direction (a maximised one is larger).
+      const bool maximize = task_->metric && !task_->metric->minimize;
+      const double gain = maximize ? candidate.validation.value - found.validation.value
+                                   : found.validation.value - candidate.validation.value;
+      if (candidate.validation.valid && gain > 1e-9) return candidate;
     }
     return found;
   }
@@ -522,7 +526,11 @@ PlannerResult Planner::search_once(const PlanningStart& start, const std::functi
   result.times.setup = since(began);
 
   const Clock::time_point search_began = Clock::now();
-  auto on_solution = [&](const Solution& solution, const std::string& engine) -> std::optional<double> {
+  const PlannerOptions::Objective& objective = options_.objective;
+  // Smaller is better: a maximised metric is negated.
+  const bool maximize = task_->metric && !task_->metric->minimize;
+  double best_objective = std::numeric_limits<double>::infinity();
+  auto on_solution = [&](const Solution& solution, const std::string& engine) -> std::optional<SolutionValue> {
     const Clock::time_point validation_began = Clock::now();
     FoundPlan found = checker.check(solution, engine);
     found.seconds = std::chrono::duration<double>(validation_began - search_began).count();
@@ -533,11 +541,22 @@ PlannerResult Planner::search_once(const PlanningStart& start, const std::functi
                        "\n" + found.text;
       return std::nullopt;
     }
-    if (result.plans.empty() || found.validation.value < result.plans.back().validation.value - 1e-9) {
+    const double printed = found.validation.value;
+    double value = maximize ? -printed : printed;
+    if (objective.value) {
+      const std::optional<double> measured = objective.value(found);
+      if (!measured) return std::nullopt;
+      value = *measured;
+    }
+    if (result.plans.empty() || value < best_objective - 1e-9) {
+      best_objective = value;
       if (on_plan) on_plan(found);
       result.plans.push_back(std::move(found));
     }
-    return result.plans.back().validation.value;
+    if (!objective.value) return SolutionValue{result.plans.back().validation.value, false};
+    // Without a lower bound, a bound would prune plans that are better.
+    return SolutionValue{objective.metric_is_lower_bound ? best_objective : std::numeric_limits<double>::infinity(),
+                         true};
   };
   const PipelineContext context{index, search_start, metric, orders,
                                 [&](const HeuristicSpec& spec, bool metric_order) -> Heuristic& {

@@ -29,6 +29,8 @@
 
 namespace alplan {
 
+struct FoundPlan;
+
 struct PlannerOptions {
   // What searches, with which heuristics and pruning, in which order
   // (search_configuration.h): the `default` alias unless set.
@@ -65,6 +67,18 @@ struct PlannerOptions {
   // its lifted task again: for a task a pass derived (pddl3_compilation.h),
   // whose lifted task only names the actions the pass added.
   bool validate_ground = false;
+  // What the caller optimises, where it is not the task's metric alone (a
+  // PDDL 3 task compiled without its violation terms, preference_search.h).
+  struct Objective {
+    // Each plan found, smaller better (a maximised metric negated); plans
+    // are handed on only when it improves; nullopt stops the search.
+    std::function<std::optional<double>(const FoundPlan&)> value;
+    // The task's metric (minimised) never exceeds `value` on any plan: the
+    // anytime phases then prune the nodes whose metric so far and still to
+    // come cannot beat the best value, which keeps every better plan.
+    bool metric_is_lower_bound = false;
+  };
+  Objective objective;
 };
 
 struct FoundPlan {

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -58,6 +59,83 @@ double saving(const GroundTask& task, std::vector<double> violations, std::uint3
   }
 }
 
+bool reads_violations(const GroundExpression& e) {
+  if (e.kind == GroundExpression::Kind::IsViolated) return true;
+  return std::any_of(e.operands.begin(), e.operands.end(), reads_violations);
+}
+
+// The expression's coefficient on each (is-violated p), where it is linear
+// in them with constant coefficients (the rest may be anything that reads
+// no violation); nullopt otherwise.
+std::optional<std::vector<double>> violation_coefficients(const GroundExpression& e, std::size_t preferences) {
+  using K = GroundExpression::Kind;
+  std::vector<double> zero(preferences, 0.0);
+  if (!reads_violations(e)) return zero;
+  auto scaled = [](std::vector<double> v, double by) {
+    for (double& x : v) x *= by;
+    return v;
+  };
+  switch (e.kind) {
+    case K::IsViolated:
+      if (e.variable < preferences) zero[e.variable] = 1.0;
+      return zero;
+    case K::Add:
+    case K::Subtract: {
+      for (std::size_t i = 0; i < e.operands.size(); ++i) {
+        const std::optional<std::vector<double>> part = violation_coefficients(e.operands[i], preferences);
+        if (!part) return std::nullopt;
+        const double sign = e.kind == K::Subtract && i > 0 ? -1.0 : 1.0;
+        for (std::size_t p = 0; p < preferences; ++p) zero[p] += sign * (*part)[p];
+      }
+      return zero;
+    }
+    case K::Negate: {
+      if (e.operands.size() != 1) return std::nullopt;
+      const std::optional<std::vector<double>> part = violation_coefficients(e.operands[0], preferences);
+      if (!part) return std::nullopt;
+      return scaled(*part, -1.0);
+    }
+    case K::Multiply:
+    case K::Divide: {
+      // One operand reads violations; the others are constants.
+      double factor = 1.0;
+      std::optional<std::vector<double>> part;
+      for (std::size_t i = 0; i < e.operands.size(); ++i) {
+        const GroundExpression& o = e.operands[i];
+        if (reads_violations(o)) {
+          if (part || (e.kind == K::Divide && i > 0)) return std::nullopt;
+          part = violation_coefficients(o, preferences);
+          if (!part) return std::nullopt;
+        } else if (o.kind == K::Constant) {
+          if (e.kind == K::Divide && i > 0) {
+            if (o.value == 0.0) return std::nullopt;
+            factor /= o.value;
+          } else {
+            factor *= o.value;
+          }
+        } else {
+          return std::nullopt;
+        }
+      }
+      return scaled(*part, factor);
+    }
+    default: return std::nullopt;
+  }
+}
+
+// Whether the task's metric without its violation terms (the compiled
+// task's, pddl3_compilation.cpp) never exceeds the metric with them, read
+// in the minimising direction: each violation weighs against the plan.
+// Then the compiled metric bounds the true one from below, and the anytime
+// phases may prune by the true value of the best plan (up to the witness
+// steps' epsilons in a metric that reads total-time).
+bool compiled_metric_is_lower_bound(const GroundTask& task) {
+  if (!task.metric || !task.metric->minimize) return false;
+  const std::optional<std::vector<double>> weights =
+      violation_coefficients(task.metric->expression, task.lifted->pddl3.preferences.size());
+  return weights && std::all_of(weights->begin(), weights->end(), [](double w) { return w >= 0.0; });
+}
+
 class Rounds {
  public:
   // `seen`: the monitor of the states before an observed start; null from
@@ -94,8 +172,12 @@ class Rounds {
     bool improved = false;
     const Clock::time_point round_began = Clock::now();
     const PlanningStart from = seen_ ? compiled_start(*compiled.task) : initial_start(*compiled.task);
-    inner = Planner(compiled.task, options).plan_from(from, [&](const FoundPlan& found) {
-      if (result_.status == PlannerResult::Status::InternalError) return;
+    // Each plan the compiled task gives is judged on the task, violations
+    // counted: the search hands on, and its anytime phases bound by, the
+    // best value under the task's own metric, not the compiled one's.
+    options.objective.metric_is_lower_bound = compiled_metric_is_lower_bound(*task_);
+    options.objective.value = [&](const FoundPlan& found) -> std::optional<double> {
+      if (result_.status == PlannerResult::Status::InternalError) return std::nullopt;
       FoundPlan plan = without_witnesses(found, witnesses);
       const Clock::time_point validation_began = Clock::now();
       plan.validation = seen_ ? validate_observed(plan.text)
@@ -106,21 +188,24 @@ class Rounds {
         result_.status = PlannerResult::Status::InternalError;
         result_.message = "the planner produced a plan the validator rejects: " +
                           plan.validation.violation->message() + "\n" + plan.text;
-        return;
+        return std::nullopt;
       }
-      if (best() && !better(plan.validation.value, best()->validation.value)) return;
-      improved = true;
-      if (on_plan_) on_plan_(plan);
-      result_.plans.push_back(std::move(plan));
-    });
+      const double value = oriented(plan.validation.value);
+      if (!best() || better(plan.validation.value, best()->validation.value)) {
+        improved = true;
+        if (on_plan_) on_plan_(plan);
+        result_.plans.push_back(std::move(plan));
+      }
+      return std::min(value, oriented(best()->validation.value));
+    };
+    inner = Planner(compiled.task, options).plan_from(from);
     add_statistics(inner);
     return {improved, inner};
   }
 
-  bool better(double a, double b) const {
-    const bool minimize = !task_->metric || task_->metric->minimize;
-    return minimize ? a < b - 1e-9 : a > b + 1e-9;
-  }
+  bool better(double a, double b) const { return oriented(a) < oriented(b) - 1e-9; }
+  // Smaller is better: a maximised metric negated.
+  double oriented(double value) const { return task_->metric && !task_->metric->minimize ? -value : value; }
 
  private:
   // The observed start on the compiled task: its ids extend the task's, and
@@ -196,6 +281,17 @@ std::vector<std::uint32_t> candidates(const GroundTask& task, const ValidationRe
   return out;
 }
 
+// `selection` and every enforceable preference the plan violates nowhere.
+PreferenceSelection with_met(const GroundTask& task, const ValidationResult& plan, PreferenceSelection selection) {
+  const std::vector<std::string>& names = task.lifted->pddl3.preferences;
+  for (std::uint32_t p = 0; p < names.size(); ++p) {
+    const auto it = plan.preference_violations.find(names[p]);
+    const bool violated = it != plan.preference_violations.end() && it->second > 0.0;
+    if (!violated && enforceable(task, p)) selection.enforced[p] = true;
+  }
+  return selection;
+}
+
 }  // namespace
 
 PreferenceSearch::PreferenceSearch(std::shared_ptr<const GroundTask> task, PlannerOptions options)
@@ -252,7 +348,16 @@ PlannerResult PreferenceSearch::plan_from(const PlanningStart& start,
       // A share of the time left, the anytime phases on the best selection
       // counted as one more share.
       const double share = rounds.remaining() / static_cast<double>(queue.size() + 1);
-      if (rounds.run(next, spec.first, share).first) selection = next;
+      // First with every preference the best plan meets held too, so that
+      // meeting p cannot cost what the best plan has; then p alone.
+      const PreferenceSelection keeping = with_met(*task_, result.best()->validation, next);
+      const bool more = keeping.enforced != next.enforced;
+      if (more && rounds.run(keeping, spec.first, share / 2).first) {
+        selection = keeping;
+      } else if (result.status != PlannerResult::Status::InternalError &&
+                 rounds.run(next, spec.first, more ? share / 2 : share).first) {
+        selection = next;
+      }
       if (result.status == PlannerResult::Status::InternalError) return std::move(result);
       queue.clear();
       for (std::uint32_t c : candidates(*task_, result.best()->validation, selection)) {

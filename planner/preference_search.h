@@ -18,6 +18,16 @@
 // anytime phases on the best selection. Every plan handed on is better than
 // the one before under the task's metric (minimised or maximised).
 //
+// Each compiled task is searched for what the task's metric makes of its
+// plans, violations counted (PlannerOptions::Objective): a plan no better
+// under the compiled metric, which reads every violation as 0, is handed on
+// when it violates less. Where each violation weighs against the plan (a
+// minimised metric linear in the `is-violated` terms with non-negative
+// weights) the compiled metric is a lower bound on the task's, and the
+// anytime phases prune by the best plan's true value; where the metric is
+// made only of preferences (trucks, storage), the compiled one is a
+// constant and pruning by it would end every phase after the first plan.
+//
 // From an observed state (a monitor's repair), the states seen before it
 // (PlanningStart::history) are run through the validator's trajectory
 // monitor first: what they settle is compiled away (TrajectorySoFar), a hard

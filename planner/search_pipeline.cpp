@@ -556,9 +556,10 @@ PipelineOutcome run_pipeline(const SearchConfiguration& configuration, const Pip
       }
       continue;
     }
-    const std::optional<double> value = on_solution(*outcome.solution, outcome.engine);
+    const std::optional<SolutionValue> value = on_solution(*outcome.solution, outcome.engine);
     if (!value) return result;
-    const double measured = std::min(*value, search_value(context, *outcome.solution));
+    const double measured =
+        value->objective ? value->value : std::min(value->value, search_value(context, *outcome.solution));
     if (!found || measured < best_value) best_value = measured;
     found = true;
   }

@@ -60,9 +60,19 @@ struct PipelineOutcome {
   std::shared_ptr<void> memory;
 };
 
-// Called with each solution and the engine that found it; returns the plan's
-// value (each later plan must beat it), or nullopt to stop the run.
-using SolutionHandler = std::function<std::optional<double>(const Solution&, const std::string& engine)>;
+// What a solution bounds the later anytime phases by: the plan's metric as
+// printed, which the pipeline lowers to the metric at the search's own
+// times; or, with `objective` set, a value the caller measures the plan by
+// (PlannerOptions::Objective, of which the metric is a lower bound), taken
+// as it is.
+struct SolutionValue {
+  double value = 0.0;
+  bool objective = false;
+};
+
+// Called with each solution and the engine that found it; returns what each
+// later plan must beat, or nullopt to stop the run.
+using SolutionHandler = std::function<std::optional<SolutionValue>(const Solution&, const std::string& engine)>;
 
 // Why an exhausted complete search is not a proof for this task ("" when it
 // is): only the shortest and longest durations of an action whose effects

@@ -108,9 +108,10 @@ TEST_CASE("an always false where the plan starts is proven unsolvable") {
 }
 
 TEST_CASE("a hard constraint the compilation cannot express is refused by name and place") {
-  const PlannerResult result = plan(problem("(open)", "(at-most-once (lit))"));
+  const PlannerResult result = plan(problem("(open)", "(at-most-once (and (lit) (open)))"));
   CHECK(result.status == PlannerResult::Status::Unsupported);
   CHECK(result.message.find("at-most-once") != std::string::npos);
+  CHECK(result.message.find("not a fact or a disjunction of facts") != std::string::npos);
   CHECK(result.message.find(":1:") != std::string::npos);
 }
 

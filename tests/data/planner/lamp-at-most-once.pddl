@@ -3,4 +3,4 @@
   (:init)
   (:goal (open))
   (:constraints
-    (at-most-once (lit))))
+    (at-most-once (and (lit) (open)))))
