@@ -15,6 +15,7 @@
 #include <optional>
 #include <sstream>
 
+#include "benchmarks/harness/ledger_results.h"
 #include "benchmarks/harness/observation_study.h"
 #include "benchmarks/harness/repair_study_folder.h"
 #include "benchmarks/harness/process_runner.h"
@@ -117,21 +118,15 @@ int summarize_models(const BenchRepairOptions& o) {
   return 0;
 }
 
-// What the ledger keeps of a run on held-out homes: per observation model
-// and strategy, runs and runs that comforted the senior (the tables come
-// from the runs.json files).
+// What the ledger keeps of a run on held-out homes (ledger_results.h), read
+// from the runs.json files the study wrote.
 nlohmann::json ledger_result(const bench::RepairBenchOptions& o, const std::vector<repair::ObservationModel>& models) {
-  nlohmann::json result = nlohmann::json::object();
+  std::map<std::string, std::vector<bench::StudyRun>> by_model;
   for (repair::ObservationModel model : models) {
     const std::string folder = models.size() > 1 ? o.out_dir + "/" + repair::to_string(model) : o.out_dir;
-    nlohmann::json& strategies = result[repair::to_string(model)];
-    for (const bench::StudyRun& r : bench::load_study_runs(folder + "/runs.json")) {
-      nlohmann::json& s = strategies[r.strategy];
-      s["runs"] = s.value("runs", 0) + 1;
-      s["comforted"] = s.value("comforted", 0) + (r.comforted ? 1 : 0);
-    }
+    by_model[repair::to_string(model)] = bench::load_study_runs(folder + "/runs.json");
   }
-  return result;
+  return bench::repair_ledger_result(by_model);
 }
 
 // The study, recorded in the test-set ledger where its homes are held out:

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "benchmarks/harness/stability_bench.h"
+#include "benchmarks/harness/ledger_results.h"
 #include "cli/commands.h"
 #include "cli/test_set_flags.h"
 #include "planner/search_configuration.h"
@@ -120,24 +121,6 @@ int summarize(const BenchStabilityOptions& o) {
   }
 }
 
-// What the ledger keeps of a run: per strategy, runs, valid repairs and the
-// mean distance over its valid ones (the README's tables come from runs.json).
-nlohmann::json ledger_result(const bench::StabilityBenchResult& result) {
-  nlohmann::json strategies = nlohmann::json::object();
-  std::map<std::string, std::pair<double, int>> distances;
-  for (const bench::StabilityRun& r : result.runs) {
-    nlohmann::json& s = strategies[r.strategy];
-    s["runs"] = s.value("runs", 0) + 1;
-    s["valid"] = s.value("valid", 0) + (r.valid ? 1 : 0);
-    if (r.valid) {
-      distances[r.strategy].first += static_cast<double>(r.distance);
-      ++distances[r.strategy].second;
-    }
-  }
-  for (const auto& [name, sum] : distances) strategies[name]["mean_distance_valid"] = sum.first / sum.second;
-  return {{"strategies", strategies}, {"skipped", result.skipped.size()}};
-}
-
 int run_stability(BenchStabilityOptions o) {
   if (!o.summarize.empty()) return summarize(o);
   const std::string error = resolve(o);
@@ -157,7 +140,7 @@ int run_stability(BenchStabilityOptions o) {
     bench::write_stability_results(result, o.bench, o.out);
     std::cout << bench::stability_summary(result, o.bench) << "wrote " << o.out << "/runs.csv, runs.json, summary.md\n";
     if (ledger) {
-      ledger->finish(ledger_result(result));
+      ledger->finish(bench::stability_ledger_result(result));
       std::cerr << "recorded in the test-set ledger: " << ledger->ledger() << " (" << ledger->id() << ")\n";
     }
     return 0;

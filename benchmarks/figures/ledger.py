@@ -19,8 +19,14 @@ def ledger_result(result):
         return (f"{result['problems']} problems: "
                 + ", ".join(f"{n} {s}" for s, n in result["statuses"].items()) + f"; {result['invalid']} invalid")
     if "strategies" in result:
-        return "; ".join(f"{name} {s['valid']}/{s['runs']} valid (mean distance of those {s['mean_distance_valid']:.2f})"
+        return "; ".join(f"{name} {s['valid']}/{s['runs']} valid"
+                         + (f" (mean distance of those {s['mean_distance_valid']:.2f})" if "mean_distance_valid" in s else "")
                          for name, s in result["strategies"].items())
+    if result and all(isinstance(v, dict) and all(isinstance(c, dict) and "comforted" in c for c in v.values())
+                      for v in result.values()):
+        # bench repair: per observation model and strategy, runs and comforted runs
+        return "; ".join(f"{model}: " + ", ".join(f"{name} {c['comforted']}/{c['runs']}" for name, c in strategies.items())
+                         + " comforted" for model, strategies in result.items())
     return ", ".join(f"{k}: {v}" for k, v in result.items())
 
 
@@ -37,7 +43,8 @@ def test_set_ledger_block():
         rows.append([n, run["harness"], run["test_set"], run["commit"][:7], run["reason"],
                      run.get("repeat", "-"), ledger_result(end["result"] if end else None),
                      f"`{os.path.relpath(run['out'], 'benchmarks')}`" if run["out"].startswith("benchmarks/") else f"`{run['out']}`",
-                     "yes" if "backfilled" in run else "-"])
+                     "yes" if "backfilled" in run else
+                     f"its result: {end['after_the_fact']}" if end and "after_the_fact" in end else "-"])
     return (f"{len(started)} runs on test sets, {len(finished)} finished.\n\n"
             + table(["#", "harness", "test set", "commit", "the change it measures", "a repeat: why", "result",
                      "results", "written after the fact"], rows))
