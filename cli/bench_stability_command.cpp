@@ -143,6 +143,13 @@ int run_stability(BenchStabilityOptions o) {
       ledger->finish(bench::stability_ledger_result(result));
       std::cerr << "recorded in the test-set ledger: " << ledger->ledger() << " (" << ledger->id() << ")\n";
     }
+    if (result.runs.empty()) {
+      // Every problem skipped (a wrong --ipc path reads as a missing file
+      // per problem): a run that compared nothing is no result.
+      std::cerr << "error: no perturbation was run: every problem or perturbation was skipped (" << o.out
+                << "/summary.md, \"Skipped\", says why)\n";
+      return kExitInputError;
+    }
     return 0;
   } catch (const bench::TestSetRefused& e) {
     std::cerr << "error: refused: " << e.what() << "\n";

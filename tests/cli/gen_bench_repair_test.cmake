@@ -130,6 +130,9 @@ foreach(f runs.csv runs.json summary.md)
     message(FATAL_ERROR "bench stability did not write ${f}")
   endif()
 endforeach()
+# A wrong --ipc folder skips every problem: exit 2, not a study of nothing.
+expect_run(2 "no perturbation was run" ${ALPLAN} bench stability --ipc ${WORK}/no-such-suite --domains rovers --problems 1
+  --perturbations 1 --kinds fact --strategies replan --out ${WORK}/stability-nothing)
 expect_run(2 "--problems takes N or N-M" ${ALPLAN} bench stability --ipc ${SHARED}/benchmarks/ipc --problems x
   --out ${WORK}/x)
 expect_run(2 "--kinds takes fact, object, goal; got 'meteor'" ${ALPLAN} bench stability --ipc ${SHARED}/benchmarks/ipc
