@@ -49,6 +49,7 @@ struct BenchPlannersOptions {
   int jobs = 1;
   int first = 0;
   std::string instances;  // "A-B": positions A to B of each domain
+  std::vector<std::string> domains;  // name prefixes
   bool anytime = false;
   std::string search = "ehc";
   std::string order;  // "": the planner's default
@@ -78,6 +79,7 @@ int run_planners(const BenchPlannersOptions& options) {
     o.from = from;
     o.to = to;
   }
+  o.domains = options.domains;
   o.anytime = options.anytime;
   o.search = options.search;
   o.order = options.order;
@@ -128,6 +130,9 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   p->add_option("--first", planners->first, "Only the first N problems of each domain");
   p->add_option("--instances", planners->instances,
                  "Only problems A to B of each domain, e.g. 6-10 (a test set beside the first five)");
+  p->add_option("--domains", planners->domains,
+                 "Only the domains whose name begins with one of these (e.g. ipc-2006/ for the temporal PDDL 3 tracks)")
+      ->delimiter(',');
   p->add_flag("--anytime", planners->anytime, "Let each run improve its plan until the time limit");
   p->add_option("--search", planners->search,
                  "The search configuration of every run: ehc (the default), gbfs, wastar, an alias or an expression "

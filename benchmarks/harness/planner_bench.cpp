@@ -244,7 +244,14 @@ std::optional<TestSetRun> open_test_set_run(const std::vector<SuiteProblem>& all
 
 int run_planner_bench(const PlannerBenchOptions& options, std::ostream& out, std::ostream& progress) {
   const std::vector<SuiteProblem> all = load_suite(options.suite);
-  const std::vector<SuiteProblem> suite = problems_in_range(first_problems(all, options.first), options.from, options.to);
+  std::vector<SuiteProblem> suite = problems_in_range(first_problems(all, options.first), options.from, options.to);
+  if (!options.domains.empty()) {
+    std::erase_if(suite, [&](const SuiteProblem& p) {
+      return std::none_of(options.domains.begin(), options.domains.end(),
+                          [&](const std::string& prefix) { return p.domain.rfind(prefix, 0) == 0; });
+    });
+    if (suite.empty()) throw std::runtime_error("--domains: no domain of the suite begins with any of them");
+  }
   switch (options.array.role) {
     case ArrayRole::submit: {
       // The array's tasks and merge are one run: recorded when submitted,

@@ -31,6 +31,9 @@ struct PlannerBenchOptions {
   // Only the problems at these positions of each domain (1-based, inclusive;
   // 0: no bound), after `first`.
   int from = 0, to = 0;
+  // Only the domains whose name (the folder under the suite, e.g.
+  // ipc-2006/trucks-preferences-complex) begins with one of these; none: all.
+  std::vector<std::string> domains;
   bool anytime = false;
   std::string search = "ehc";
   std::string order;       // wastar's ordering, metric or steps ("": the planner's default)

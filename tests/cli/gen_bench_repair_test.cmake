@@ -143,3 +143,14 @@ expect_run(2 "--stable-search: search configuration" ${ALPLAN} bench stability -
   --stable-search "wastar(" --out ${WORK}/x)
 expect_run(2 "--stable-search must be a complete search" ${ALPLAN} bench stability --ipc ${SHARED}/benchmarks/ipc
   --stable-search "wastar(lmcut, w=1, order=metric)" --out ${WORK}/x)
+# bench planners on a domain of a suite (--domains), one problem: its row,
+# and a prefix no domain has is refused.
+expect_run(0 "trucks-preferences-complex" ${ALPLAN} bench planners --suite ${SHARED}/benchmarks/pddl3
+  --domains ipc-2006/trucks-preferences-complex --first 1 --time-limit 10 --out ${WORK}/planners)
+file(STRINGS ${WORK}/planners/runs.csv planner_rows)
+list(LENGTH planner_rows planner_row_count)
+if(NOT planner_row_count EQUAL 2)
+  message(FATAL_ERROR "bench planners --domains --first 1 wrote ${planner_row_count} lines, not a head and one run")
+endif()
+expect_run(2 "--domains: no domain of the suite begins with any of them" ${ALPLAN} bench planners
+  --suite ${SHARED}/benchmarks/pddl3 --domains no-such/ --out ${WORK}/planners-none)
