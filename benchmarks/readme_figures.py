@@ -35,7 +35,7 @@ from figures.differential import FUZZ_SEEDS, differential_block, oracle_against_
 from figures.home_fleet import home_fleet_block
 from figures.ledger import test_set_ledger_block
 from figures.pddl3 import pddl3_classical_block
-from figures.repair_study import SCATTERED, camera_search, study_mix, study_switch, study_wins, tags_by_scatter
+from figures.repair_study import HELD_OUT, SCATTERED, camera_search, study_mix, study_switch, study_wins, tags_by_scatter
 from figures.stability import (CROSS_CHECK_FIRST, STABILITY, STABILITY_ADAPT_REMOVALS, cross_check_block,
                                proof_search_block, stability_block, stability_by_domain, stability_itt_block)
 
@@ -58,6 +58,8 @@ BLOCKS = {
     "study-switch": study_switch,
     "study-wins": study_wins,
     "scatter-mix": lambda: study_mix(SCATTERED),
+    "held-out-mix": lambda: study_mix(HELD_OUT),
+    "held-out-wins": lambda: study_wins(HELD_OUT),
     "tags-by-scatter": tags_by_scatter,
     "stability-1-5": lambda: stability_block(STABILITY[0]),
     "stability-6-10": lambda: stability_block(STABILITY[1]),

@@ -9,6 +9,8 @@ from collections import Counter, defaultdict
 from figures.common import HERE, RESULTS, load, nearest_rank, table, strategies_of  # noqa: F401
 STUDY = "repair-study-40-homes-2026-12-07"
 SCATTERED = "repair-study-scatter-2026-12-07"
+# The study once on the held-out homes, seeds 1001-1040 (the test-set ledger's entry 6).
+HELD_OUT = "repair-study-held-out-homes-1001-1040-2026-12-07"
 TAGS = "tags-by-scatter-2026-12-07"
 # Folder under TAGS, and the row's label: the scatter, and the repairs'
 # search when it is not the study's (anytime down to weight 3).
