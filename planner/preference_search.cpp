@@ -14,6 +14,7 @@
 #include "planner/explicit_state.h"
 #include "planner/pddl3_compilation.h"
 #include "planner/trajectory_monitor.h"
+#include "planner/violation_weights.h"
 
 namespace alplan {
 namespace {
@@ -57,83 +58,6 @@ double saving(const GroundTask& task, std::vector<double> violations, std::uint3
   } catch (const EvaluationError&) {
     return 0.0;
   }
-}
-
-bool reads_violations(const GroundExpression& e) {
-  if (e.kind == GroundExpression::Kind::IsViolated) return true;
-  return std::any_of(e.operands.begin(), e.operands.end(), reads_violations);
-}
-
-// The expression's coefficient on each (is-violated p), where it is linear
-// in them with constant coefficients (the rest may be anything that reads
-// no violation); nullopt otherwise.
-std::optional<std::vector<double>> violation_coefficients(const GroundExpression& e, std::size_t preferences) {
-  using K = GroundExpression::Kind;
-  std::vector<double> zero(preferences, 0.0);
-  if (!reads_violations(e)) return zero;
-  auto scaled = [](std::vector<double> v, double by) {
-    for (double& x : v) x *= by;
-    return v;
-  };
-  switch (e.kind) {
-    case K::IsViolated:
-      if (e.variable < preferences) zero[e.variable] = 1.0;
-      return zero;
-    case K::Add:
-    case K::Subtract: {
-      for (std::size_t i = 0; i < e.operands.size(); ++i) {
-        const std::optional<std::vector<double>> part = violation_coefficients(e.operands[i], preferences);
-        if (!part) return std::nullopt;
-        const double sign = e.kind == K::Subtract && i > 0 ? -1.0 : 1.0;
-        for (std::size_t p = 0; p < preferences; ++p) zero[p] += sign * (*part)[p];
-      }
-      return zero;
-    }
-    case K::Negate: {
-      if (e.operands.size() != 1) return std::nullopt;
-      const std::optional<std::vector<double>> part = violation_coefficients(e.operands[0], preferences);
-      if (!part) return std::nullopt;
-      return scaled(*part, -1.0);
-    }
-    case K::Multiply:
-    case K::Divide: {
-      // One operand reads violations; the others are constants.
-      double factor = 1.0;
-      std::optional<std::vector<double>> part;
-      for (std::size_t i = 0; i < e.operands.size(); ++i) {
-        const GroundExpression& o = e.operands[i];
-        if (reads_violations(o)) {
-          if (part || (e.kind == K::Divide && i > 0)) return std::nullopt;
-          part = violation_coefficients(o, preferences);
-          if (!part) return std::nullopt;
-        } else if (o.kind == K::Constant) {
-          if (e.kind == K::Divide && i > 0) {
-            if (o.value == 0.0) return std::nullopt;
-            factor /= o.value;
-          } else {
-            factor *= o.value;
-          }
-        } else {
-          return std::nullopt;
-        }
-      }
-      return scaled(*part, factor);
-    }
-    default: return std::nullopt;
-  }
-}
-
-// Whether the task's metric without its violation terms (the compiled
-// task's, pddl3_compilation.cpp) never exceeds the metric with them, read
-// in the minimising direction: each violation weighs against the plan.
-// Then the compiled metric bounds the true one from below, and the anytime
-// phases may prune by the true value of the best plan (up to the witness
-// steps' epsilons in a metric that reads total-time).
-bool compiled_metric_is_lower_bound(const GroundTask& task) {
-  if (!task.metric || !task.metric->minimize) return false;
-  const std::optional<std::vector<double>> weights =
-      violation_coefficients(task.metric->expression, task.lifted->pddl3.preferences.size());
-  return weights && std::all_of(weights->begin(), weights->end(), [](double w) { return w >= 0.0; });
 }
 
 class Rounds {
