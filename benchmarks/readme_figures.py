@@ -36,7 +36,8 @@ from figures.home_fleet import home_fleet_block
 from figures.ledger import test_set_ledger_block
 from figures.pddl3 import pddl3_classical_block
 from figures.repair_study import HELD_OUT, SCATTERED, camera_search, study_mix, study_switch, study_wins, tags_by_scatter
-from figures.stability import (CROSS_CHECK_FIRST, STABILITY, STABILITY_ADAPT_REMOVALS, cross_check_block,
+from figures.stability import (CROSS_CHECK_FIRST, STABILITY, STABILITY_6_10_ADAPT_REMOVALS, STABILITY_ADAPT_REMOVALS,
+                               cross_check_block,
                                proof_search_block, stability_block, stability_by_domain, stability_itt_block)
 
 README = os.path.join(HERE, "README.md")
@@ -68,6 +69,8 @@ BLOCKS = {
     "stability-itt-6-10-first-run": lambda: stability_itt_block(STABILITY[2]),
     "stability-itt-6-10": lambda: stability_itt_block(STABILITY[1]),
     "stability-itt-adapt-removals": lambda: stability_itt_block(STABILITY_ADAPT_REMOVALS),
+    "stability-6-10-adapt-removals": lambda: stability_block(STABILITY_6_10_ADAPT_REMOVALS),
+    "stability-itt-6-10-adapt-removals": lambda: stability_itt_block(STABILITY_6_10_ADAPT_REMOVALS),
     "stable-cross-check-first": lambda: cross_check_block(CROSS_CHECK_FIRST),
     "stable-cross-check": lambda: cross_check_block(STABILITY_ADAPT_REMOVALS),
     "pddl3-classical": pddl3_classical_block,

@@ -12,6 +12,8 @@ STABILITY = ["stability-ipc2002-1-5-2026-11-28", "stability-ipc2002-6-10-2026-11
 # Instances 1-5 at 976ad7b: adapt counting removals, stable cross-checked.
 STABILITY_ADAPT_REMOVALS = "stability-ipc2002-1-5-adapt-removals-2026-12-07"
 CROSS_CHECK_FIRST = "stability-ipc2002-1-5-cross-check-2026-12-07"
+# Instances 6-10 once with adapt counting removals (the test-set ledger's entry 8).
+STABILITY_6_10_ADAPT_REMOVALS = "stability-ipc2002-6-10-2026-12-07"
 
 
 PROOF = "stable-proof-search-1-5-2026-11-28"
