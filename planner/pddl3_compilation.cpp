@@ -153,6 +153,7 @@ class Compiler {
       if (selection_.contains(p.preference)) merge(out_->goal, p.condition);
     }
     action_preferences();
+    goal_axioms();
     sort_unique(out_->goal.positive);
     result.task = out_;
     return result;
@@ -289,6 +290,41 @@ class Compiler {
       case ModalOperator::SometimeAfter: return compile_sometime_after(c, k, g);
       default: return compile_hold(c, k, g);
     }
+  }
+
+  // Each disjunction left in the goal (an `at end` of an `exists`, as
+  // storage's crates in some depot) becomes a derived fact, one axiom per
+  // disjunct, and the goal asks the fact: the same states meet it, and the
+  // temporal relaxed planning graph, which reads the goal's facts and the
+  // axioms' bodies, sees what the goal needs (it reads no formula: without
+  // this, a goal made only of disjunctions left the heuristic no goal).
+  void goal_axioms() {
+    if (out_->goal.complex.empty()) return;
+    std::vector<GroundFormula> kept;
+    const std::uint32_t stratum = out_->strata;
+    for (std::size_t k = 0; k < out_->goal.complex.size(); ++k) {
+      const GroundFormula& f = out_->goal.complex[k];
+      if (f.kind != GroundFormula::Kind::Or) {
+        kept.push_back(f);
+        continue;
+      }
+      const auto predicate = static_cast<PredicateId>(lifted_->predicates.size());
+      std::string name = "pddl3-goal-" + std::to_string(k);
+      while (std::any_of(lifted_->predicates.begin(), lifted_->predicates.end(),
+                         [&](const PredicateInfo& p) { return p.name == name; })) {
+        name += "'";
+      }
+      lifted_->predicates.push_back(PredicateInfo{name, {}, true, false});
+      const FactId head = out_->facts.intern(GroundKey{predicate, {}});
+      for (const GroundFormula& disjunct : f.children) {
+        ConditionSet body = flatten(disjunct);
+        if (body.never) continue;
+        out_->axioms.push_back(GroundAxiom{head, std::move(body), stratum});
+      }
+      out_->goal.positive.push_back(head);
+    }
+    out_->goal.complex = std::move(kept);
+    out_->strata = stratum + 1;
   }
 
   std::uint32_t new_schema(const std::string& name) {

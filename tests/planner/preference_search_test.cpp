@@ -219,6 +219,26 @@ TEST_CASE("compilation: witnesses per disjunct, deadlines as timed literals, no 
   CHECK(compile_trajectory(*task, q).task->actions.size() == task->actions.size() + 3);
 }
 
+TEST_CASE("compilation: a disjunction left in the goal becomes a derived goal fact the heuristic reads") {
+  // (at end (or (warm) (open))) joins the goal as a formula; the compiled goal
+  // asks a derived fact instead, one axiom per disjunct, and nothing else.
+  const std::string p = problem("(lit)", "(at end (or (warm) (open)))");
+  const test::LoadedTask loaded = test::load_task_text(kLamp, p);
+  const auto task = ground(loaded.normalized);
+  PreferenceSelection none;
+  none.enforced.assign(task->lifted->pddl3.preferences.size(), false);
+  const CompiledTrajectory c = compile_trajectory(*task, none);
+  REQUIRE(c.task);
+  CHECK(c.task->goal.complex.empty());
+  REQUIRE(c.task->axioms.size() == task->axioms.size() + 2);
+  const FactId head = c.task->axioms.back().head;
+  CHECK(c.task->is_derived(head));
+  CHECK(std::find(c.task->goal.positive.begin(), c.task->goal.positive.end(), head) != c.task->goal.positive.end());
+  const PlannerResult result = plan(p);
+  check_valid(p, result);
+  CHECK((has_step(result, "heat") || has_step(result, "open-door")));
+}
+
 TEST_CASE("the preferences engine reads, prints and goes outermost only") {
   CHECK(parse_search_configuration("preferences(gbfs, rounds=false)").to_string() ==
         "preferences(gbfs(trpg), rounds=false)");
