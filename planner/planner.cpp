@@ -556,7 +556,7 @@ PlannerResult Planner::search_once(const PlanningStart& start, const std::functi
     if (!objective.value) return SolutionValue{result.plans.back().validation.value, false};
     // Without a lower bound, a bound would prune plans that are better.
     return SolutionValue{objective.metric_is_lower_bound ? best_objective : std::numeric_limits<double>::infinity(),
-                         true};
+                         true, printed};
   };
   const PipelineContext context{index, search_start, metric, orders,
                                 [&](const HeuristicSpec& spec, bool metric_order) -> Heuristic& {

@@ -558,8 +558,11 @@ PipelineOutcome run_pipeline(const SearchConfiguration& configuration, const Pip
     }
     const std::optional<SolutionValue> value = on_solution(*outcome.solution, outcome.engine);
     if (!value) return result;
+    const double at_search = search_value(context, *outcome.solution);
     const double measured =
-        value->objective ? value->value : std::min(value->value, search_value(context, *outcome.solution));
+        value->objective
+            ? value->value - (std::isfinite(at_search) ? std::max(0.0, value->printed - at_search) : 0.0)
+            : std::min(value->value, at_search);
     if (!found || measured < best_value) best_value = measured;
     found = true;
   }

@@ -62,12 +62,15 @@ struct PipelineOutcome {
 
 // What a solution bounds the later anytime phases by: the plan's metric as
 // printed, which the pipeline lowers to the metric at the search's own
-// times; or, with `objective` set, a value the caller measures the plan by
-// (PlannerOptions::Objective, of which the metric is a lower bound), taken
-// as it is.
+// times; or, with `objective` set, the best value the caller measures its
+// plans by (PlannerOptions::Objective, of which the metric is a lower
+// bound), lowered by as much as this plan's printed metric (`printed`)
+// exceeds its metric at the search's times. Without that lowering a later
+// phase meets the same plan again, under the bound, and ends on it.
 struct SolutionValue {
   double value = 0.0;
   bool objective = false;
+  double printed = 0.0;  // with `objective`: the plan's metric as printed
 };
 
 // Called with each solution and the engine that found it; returns what each
