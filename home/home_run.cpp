@@ -14,7 +14,7 @@
 #include "home/object_returns.h"
 #include "home/robot_dispatch.h"
 #include "home/robot_faults.h"
-#include "planner/evaluation.h"
+#include "planner/formula_evaluation.h"
 #include "repair/monitor.h"
 #include "repair/observation.h"
 #include "repair/random_events.h"

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "pddl_parser/ast.h"
+#include "pddl_parser/parser_options.h"
 #include "pddl_parser/source_location.h"
 
 namespace alplan::pddl {
@@ -24,11 +25,6 @@ struct ParseResult {
 
 using DomainParseResult = ParseResult<Domain>;
 using ProblemParseResult = ParseResult<Problem>;
-
-struct ParserOptions {
-  // Deeper nesting than this is reported instead of exhausting the stack.
-  int max_nesting = 500;
-};
 
 DomainParseResult parse_domain(std::string_view text, const std::string& file_name,
                                const ParserOptions& options = {});

@@ -10,7 +10,7 @@
 
 #include "pddl_parser/ast.h"
 #include "pddl_parser/lexer.h"
-#include "pddl_parser/parser.h"
+#include "pddl_parser/parser_options.h"
 
 namespace alplan::pddl::detail {
 

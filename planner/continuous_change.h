@@ -25,7 +25,7 @@
 #include <utility>
 #include <vector>
 
-#include "planner/evaluation.h"
+#include "planner/formula_evaluation.h"
 #include "planner/ground_task.h"
 #include "planner/search_state.h"
 #include "planner/snap_action.h"

@@ -6,20 +6,6 @@
 namespace alplan {
 namespace {
 
-void bind_from(const NormalizedTask& task, const std::vector<QuantifiedVariable>& variables, std::size_t index,
-               std::vector<ObjectId>& binding, const std::function<void()>& visit) {
-  if (index == variables.size()) {
-    visit();
-    return;
-  }
-  const QuantifiedVariable& v = variables[index];
-  if (binding.size() <= v.slot) binding.resize(v.slot + 1, kNoId);
-  for (ObjectId o : task.types[v.type].objects) {
-    binding[v.slot] = o;
-    bind_from(task, variables, index + 1, binding, visit);
-  }
-}
-
 std::string with_binding(const NormalizedTask& task, const std::vector<QuantifiedVariable>& variables,
                          const std::vector<ObjectId>& binding) {
   std::string s;
@@ -30,23 +16,6 @@ std::string with_binding(const NormalizedTask& task, const std::vector<Quantifie
 }
 
 }  // namespace
-
-void for_each_binding(const NormalizedTask& task, const std::vector<QuantifiedVariable>& variables,
-                      std::vector<ObjectId>& binding, const std::function<void()>& visit) {
-  bind_from(task, variables, 0, binding, visit);
-}
-
-std::vector<GroundPreference> ground_preferences(const std::vector<PreferenceCondition>& preferences,
-                                                 std::vector<ObjectId> binding, Instantiator& instantiate) {
-  std::vector<GroundPreference> result;
-  for (const PreferenceCondition& p : preferences) {
-    for_each_binding(instantiate.task(), p.forall, binding, [&] {
-      std::vector<ObjectId> scratch = binding;
-      result.push_back({p.preference, instantiate.preference_condition(p.condition, scratch), p.time});
-    });
-  }
-  return result;
-}
 
 GroundTrajectory ground_trajectory(const NormalizedTask& task, Instantiator& instantiate) {
   GroundTrajectory result;

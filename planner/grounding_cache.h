@@ -34,7 +34,7 @@
 #include "pddl_parser/ast.h"
 #include "planner/grounder.h"
 #include "planner/instantiate.h"
-#include "planner/planner.h"
+#include "planner/temporal_planner.h"
 #include "planner/reachability.h"
 
 namespace alplan {

@@ -4,7 +4,7 @@
 // happening at once; the monitor's world simulator one snap at a time.
 #pragma once
 
-#include "planner/evaluation.h"
+#include "planner/formula_evaluation.h"
 #include "planner/explicit_state.h"
 #include "planner/ground_task.h"
 

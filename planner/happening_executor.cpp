@@ -5,7 +5,7 @@
 
 #include "pddl_parser/writer.h"
 #include "planner/continuous_change.h"
-#include "planner/evaluation.h"
+#include "planner/formula_evaluation.h"
 #include "planner/ground_printer.h"
 #include "planner/happening_effects.h"
 

@@ -13,11 +13,11 @@
 #include <vector>
 
 #include "planner/derived_support.h"
-#include "planner/evaluation.h"
+#include "planner/formula_evaluation.h"
 #include "planner/explicit_state.h"
 #include "planner/ground_task.h"
 #include "planner/trajectory_monitor.h"
-#include "planner/validator.h"
+#include "planner/validation_result.h"
 #include "planner/violation.h"
 
 namespace alplan {

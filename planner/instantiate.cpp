@@ -1,5 +1,4 @@
 #include "planner/instantiate.h"
-#include "planner/ground_trajectory.h"
 
 #include <algorithm>
 #include <iterator>
@@ -438,6 +437,41 @@ GroundAction Instantiator::action(std::uint32_t schema_index, const std::vector<
   effects(schema, binding, action);
   action.preferences = ground_preferences(schema.preferences, binding, *this);
   return action;
+}
+
+namespace {
+
+void bind_from(const NormalizedTask& task, const std::vector<QuantifiedVariable>& variables, std::size_t index,
+               std::vector<ObjectId>& binding, const std::function<void()>& visit) {
+  if (index == variables.size()) {
+    visit();
+    return;
+  }
+  const QuantifiedVariable& v = variables[index];
+  if (binding.size() <= v.slot) binding.resize(v.slot + 1, kNoId);
+  for (ObjectId o : task.types[v.type].objects) {
+    binding[v.slot] = o;
+    bind_from(task, variables, index + 1, binding, visit);
+  }
+}
+
+}  // namespace
+
+void for_each_binding(const NormalizedTask& task, const std::vector<QuantifiedVariable>& variables,
+                      std::vector<ObjectId>& binding, const std::function<void()>& visit) {
+  bind_from(task, variables, 0, binding, visit);
+}
+
+std::vector<GroundPreference> ground_preferences(const std::vector<PreferenceCondition>& preferences,
+                                                 std::vector<ObjectId> binding, Instantiator& instantiate) {
+  std::vector<GroundPreference> result;
+  for (const PreferenceCondition& p : preferences) {
+    for_each_binding(instantiate.task(), p.forall, binding, [&] {
+      std::vector<ObjectId> scratch = binding;
+      result.push_back({p.preference, instantiate.preference_condition(p.condition, scratch), p.time});
+    });
+  }
+  return result;
 }
 
 }  // namespace alplan

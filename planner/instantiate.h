@@ -5,6 +5,7 @@
 // remains is flattened into ConditionSets.
 #pragma once
 
+#include <functional>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -88,5 +89,15 @@ class Instantiator {
 // Flattens a formula: top-level conjunctions of literals and comparisons go
 // to the lists, anything else stays a complex formula.
 ConditionSet flatten(GroundFormula formula);
+
+// Calls `visit` once per binding of `variables` (their slots set in
+// `binding`), in order of the types' objects, the first variable slowest.
+void for_each_binding(const NormalizedTask& task, const std::vector<QuantifiedVariable>& variables,
+                      std::vector<ObjectId>& binding, const std::function<void()>& visit);
+
+// The ground instances of a goal's or action's preferences under `binding`
+// (an action's arguments, or the goal's empty binding).
+std::vector<GroundPreference> ground_preferences(const std::vector<PreferenceCondition>& preferences,
+                                                 std::vector<ObjectId> binding, Instantiator& instantiate);
 
 }  // namespace alplan

@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "planner/evaluation.h"
+#include "planner/formula_evaluation.h"
 #include "planner/explicit_state.h"
 #include "planner/pddl3_compilation.h"
 #include "planner/trajectory_monitor.h"
@@ -122,7 +122,7 @@ class Rounds {
       }
       return std::min(value, oriented(best()->validation.value));
     };
-    inner = Planner(compiled.task, options).plan_from(from);
+    inner = TemporalPlanner(compiled.task, options).plan_from(from);
     add_statistics(inner);
     return {improved, inner};
   }

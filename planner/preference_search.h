@@ -41,7 +41,7 @@
 #include <functional>
 #include <memory>
 
-#include "planner/planner.h"
+#include "planner/temporal_planner.h"
 
 namespace alplan {
 

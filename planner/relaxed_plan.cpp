@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "planner/evaluation.h"
-#include "planner/numeric_relaxation.h"
+#include "planner/formula_evaluation.h"
+#include "planner/numeric_effect_analysis.h"
 #include "planner/temporal_rpg_exploration.h"
 
 namespace alplan {
@@ -64,7 +64,7 @@ std::vector<ActionId> RelaxedPlan::shortfall_producers(const SearchState& state,
 
 // An unmet comparison's gap over the best constant step of a supporter of
 // its variables: how many applications of that supporter it asks
-// (numeric_relaxation.h). Each producer keeps the most any comparison asks.
+// (numeric_effect_analysis.h). Each producer keeps the most any comparison asks.
 void RelaxedPlan::note_repetitions(std::uint32_t comparison, const SearchState& state) {
   const std::optional<NumericDemand> demand = numeric_demand(*x_.rpg_.comparisons_[comparison], state);
   if (!demand) return;

@@ -10,8 +10,8 @@
 #include <optional>
 #include <string>
 
+#include "planner/linear_metric.h"
 #include "planner/search_space.h"
-#include "planner/temporal_rpg.h"
 
 namespace alplan {
 

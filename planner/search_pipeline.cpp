@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "planner/address_space.h"
-#include "planner/evaluation.h"
+#include "planner/formula_evaluation.h"
 
 namespace alplan {
 namespace {

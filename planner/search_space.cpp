@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "planner/evaluation.h"
+#include "planner/formula_evaluation.h"
 
 namespace alplan {
 

@@ -12,11 +12,11 @@
 #include <vector>
 
 #include "planner/goal_orders.h"
+#include "planner/heuristic.h"
 #include "planner/partial_plan.h"
 #include "planner/search_state.h"
 #include "planner/successor_generator.h"
 #include "planner/task_index.h"
-#include "planner/temporal_rpg.h"
 
 namespace alplan {
 

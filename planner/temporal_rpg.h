@@ -30,7 +30,7 @@ struct TemporalRpgOptions {
   // consumption needs (planner/resource_shortfall.h).
   bool resource_balance = true;
   // Without continuous change: an unmet comparison counts the repetitions
-  // of a constant producer it needs (planner/numeric_relaxation.h).
+  // of a constant producer it needs (planner/numeric_effect_analysis.h).
   bool count_repetitions = true;
   // Set: each evaluation also estimates the metric still to come
   // (HeuristicValue::cost), for a search ordered by the metric.

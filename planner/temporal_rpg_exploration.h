@@ -2,7 +2,7 @@
 // in two parts with one concern each: the exploration forward in time from a
 // state (which facts and actions are reached, and when), and the relaxed
 // plan extracted backwards from the goals. The numeric part of the
-// relaxation is relaxed_numeric.h, the windows of facts fact_windows.h.
+// relaxation is numeric_intervals.h, the windows of facts fact_windows.h.
 // Internal to the heuristic: temporal_rpg.cpp and relaxed_plan.cpp only.
 #pragma once
 
@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "planner/fact_windows.h"
-#include "planner/relaxed_numeric.h"
+#include "planner/numeric_intervals.h"
 #include "planner/resource_shortfall.h"
 #include "planner/temporal_rpg.h"
 
@@ -126,7 +126,7 @@ class TemporalRpg::Exploration {
   // The state's running actions, as a lookup: SearchState::is_running scans
   // its list, and try_end asks for every end the exploration reaches.
   Stamped<char> running_;
-  RelaxedNumeric numeric_;
+  NumericIntervals numeric_;
   std::optional<ResourceBalance> balance_;
   std::priority_queue<Event, std::vector<Event>, std::greater<Event>> queue_;
   std::size_t goals_left_ = 0;

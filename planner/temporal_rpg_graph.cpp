@@ -8,7 +8,7 @@
 #include <cmath>
 #include <optional>
 
-#include "planner/numeric_relaxation.h"
+#include "planner/numeric_effect_analysis.h"
 #include "planner/successor_generator.h"
 
 namespace alplan {

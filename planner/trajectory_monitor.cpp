@@ -1,7 +1,7 @@
 #include "planner/trajectory_monitor.h"
 
 #include "pddl_parser/writer.h"
-#include "planner/evaluation.h"
+#include "planner/formula_evaluation.h"
 
 namespace alplan {
 

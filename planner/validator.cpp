@@ -5,7 +5,7 @@
 #include <set>
 
 #include "pddl_parser/writer.h"
-#include "planner/evaluation.h"
+#include "planner/formula_evaluation.h"
 #include "planner/explicit_state.h"
 #include "planner/ground_printer.h"
 #include "planner/ground_trajectory.h"

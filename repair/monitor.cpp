@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "pddl_parser/writer.h"
-#include "planner/evaluation.h"
+#include "planner/formula_evaluation.h"
 #include "repair/timeline.h"
 
 namespace alplan::repair {

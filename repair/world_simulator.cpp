@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "planner/evaluation.h"
+#include "planner/formula_evaluation.h"
 #include "planner/happening_effects.h"
 
 namespace alplan::repair {

@@ -3,7 +3,7 @@
 #include <cctype>
 
 #include "planner/continuous_change.h"
-#include "planner/evaluation.h"
+#include "planner/formula_evaluation.h"
 #include "planner/happening_effects.h"
 
 namespace alplan::repair {

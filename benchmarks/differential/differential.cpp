@@ -14,7 +14,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "benchmarks/differential/shrink.h"
 #include "oracle/judge.h"
 #include "oracle/load.h"
 #include "planner/grounder.h"

@@ -1,4 +1,4 @@
-#include "benchmarks/differential/shrink.h"
+#include "benchmarks/differential/differential.h"
 
 #include <functional>
 

@@ -26,7 +26,7 @@
 #include <boost/beast/ssl/ssl_stream.hpp>
 
 #include "perception/service/connection_limiter.h"
-#include "perception/service/http_server.h"
+#include "perception/service/server_options.h"
 
 namespace alplan::perception::service::detail {
 

@@ -12,7 +12,6 @@
 #include <set>
 #include <sstream>
 
-#include "benchmarks/differential/shrink.h"
 #include "oracle/judge.h"
 #include "oracle/load.h"
 

@@ -14,7 +14,7 @@
 #include "domains/pddl_files.h"
 #include "home/event_log.h"
 #include "home/home_run.h"
-#include "planner/evaluation.h"
+#include "planner/formula_evaluation.h"
 #include "repair/reformulation.h"
 #include "tests/support/test_paths.h"
 

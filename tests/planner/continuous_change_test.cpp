@@ -266,7 +266,7 @@ TEST_CASE("continuous domains: the planner solves the smaller problems, validly"
 // (3,539 expansions; plain GBFS needs 907): its random expansions put
 // children in the greedy queue that lead it astray. EHC's fallback keeps a
 // plain GBFS beside the typed ones, which found the plan; since numeric
-// supporters are chosen by direction (relaxed_numeric.h) the novelty-ordered
+// supporters are chosen by direction (numeric_intervals.h) the novelty-ordered
 // GBFS finds one first. Limited by nodes, not time, so the run is the same
 // on any machine.
 TEST_CASE("continuous domains: EHC's fallback solves robot-battery p04") {

@@ -5,7 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "planner/grounder.h"
-#include "planner/numeric_relaxation.h"
+#include "planner/numeric_effect_analysis.h"
 #include "planner/partial_plan.h"
 #include "planner/planner.h"
 #include "planner/task_index.h"

@@ -6,7 +6,7 @@
 #include <algorithm>
 
 #include "domains/pddl_files.h"
-#include "planner/evaluation.h"
+#include "planner/formula_evaluation.h"
 #include "planner/grounder.h"
 #include "planner/plan.h"
 #include "repair/monitor.h"
