@@ -2,7 +2,9 @@
 #include <CLI/CLI.hpp>
 
 #include <iostream>
+#include <string>
 
+#include "benchmarks/harness/build_info.h"
 #include "cli/commands.h"
 #include "cli/parse_command_line.h"
 #include "cli/perception_module.h"
@@ -12,6 +14,11 @@ int main(int argc, char** argv) {
   CLI::App app{"alplan: PDDL 2.2 temporal planning toolkit for assisted-living deliberation"};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Print help for every subcommand");
+  // Papers cite versions: the project's and the commit the binary was built from.
+  const alplan::bench::BuildInfo build = alplan::bench::build_info();
+  app.set_version_flag("--version", std::string("alplan ") + ALPLAN_VERSION + " (commit " + build.commit +
+                                        (build.dirty ? ", with uncommitted changes" : "") + ")",
+                       "Print the version and the commit this binary was built from");
   int exit_code = alplan::cli::kExitOk;
   alplan::cli::add_parse_command(app, exit_code);
   alplan::cli::add_ground_command(app, exit_code);

@@ -13,6 +13,8 @@ int parse_command_line(CLI::App& app, int argc, char** argv, const int& command_
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
   } catch (const CLI::ParseError& e) {
     app.exit(e);
     return kExitInputError;

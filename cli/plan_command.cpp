@@ -340,12 +340,17 @@ void add_plan_command(CLI::App& app, int& exit_code) {
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--reserve-planning-time", options->reserve_planning_time,
                 "Start no step before the time limit has passed (deadlines shrink by the planning budget)");
-  cmd->add_option("--search", options->search.search,
+  CLI::Option* search_option = cmd->add_option("--search", options->search.search,
                   "A search configuration: ehc (the default: EHC falling back to a portfolio, then a complete "
                   "search), gbfs, wastar, an alias, or an expression such as "
                   "'then(ehc(trpg), complete(wastar(trpg, w=1)))' (planner/README.md)");
   cmd->add_option("--alias", options->alias,
-                  "A named configuration: default, anytime, ehc, gbfs, wastar, complete (planner/README.md)");
+                  "A named configuration: default, anytime, ehc, gbfs, wastar, complete, pddl3 (planner/README.md)")
+      ->excludes(search_option);  // two configurations: one would be dropped without a word
+  cmd->footer(
+      "Exit codes: 0 a plan; 2 bad input or an unsupported construct; 10 no plan exists (proven); 11 a time, node "
+      "or memory limit reached before a plan; 12 the search space exhausted without a proof; 70 an internal error "
+      "(a plan the validator rejected). Note: Fast Downward's 11 means proven unsolvable; ours is 10.");
   // The flags before the configuration language: shorthands shaping ehc, gbfs and wastar.
   auto shorthand_options = std::make_shared<std::vector<CLI::Option*>>();
   auto shorthand = [&](CLI::Option* o) {

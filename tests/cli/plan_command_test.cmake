@@ -88,3 +88,11 @@ foreach(expected "; best plan: " "; best plan makespan: " "; best plan metric: "
     message(FATAL_ERROR "plan --anytime (exit ${code}) lacks '${expected}':\n${out}${err}")
   endif()
 endforeach()
+
+# Issue 46: two configurations are refused, not one silently dropped; the
+# exit codes are in --help; --version names the commit.
+expect_run(2 "excludes" ${ALPLAN} plan --search gbfs --alias wastar
+  ${SHARED}/benchmarks/ipc/ipc-2002/driverlog-time-automatic/domain.pddl
+  ${SHARED}/benchmarks/ipc/ipc-2002/driverlog-time-automatic/instances/instance-1.pddl)
+expect_run(0 "11 a time, node or memory limit" ${ALPLAN} plan --help)
+expect_run(0 "(commit " ${ALPLAN} --version)
