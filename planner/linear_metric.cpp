@@ -80,6 +80,10 @@ double LinearMetric::value(const SearchState& state, double makespan) const {
   return sum;
 }
 
+double minimised(const GroundTask& task, double value) {
+  return task.metric && !task.metric->minimize ? -value : value;
+}
+
 std::optional<LinearMetric> linear_metric(const GroundTask& task) {
   if (!task.metric || !task.metric->minimize) return std::nullopt;
   LinearMetric metric;

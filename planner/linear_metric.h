@@ -35,6 +35,10 @@ struct LinearMetric {
   }
 };
 
+// A metric's value read so that smaller is better: a maximised metric's
+// negated (no metric: the value as it is, a length or makespan).
+double minimised(const GroundTask& task, double value);
+
 // The task's metric in this form, when it is minimised and monotone; nullopt
 // when there is no metric, it is maximised, or it can shrink as a plan grows.
 std::optional<LinearMetric> linear_metric(const GroundTask& task);

@@ -362,11 +362,7 @@ class Compiler {
       open = new_fact("pddl3-open-" + id);
       out_->initial_facts.push_back(*open);
       sort_unique(out_->initial_facts);
-      const GroundTimedLiteral close{*deadline, *open, false};
-      auto& tils = out_->timed_literals;
-      tils.insert(std::upper_bound(tils.begin(), tils.end(), close,
-                                   [](const GroundTimedLiteral& a, const GroundTimedLiteral& b) { return a.time < b.time; }),
-                  close);
+      insert_timed_literal(*out_, {*deadline, *open, false});
     }
     add_witnesses(k, requirement, done, false, open);
   }

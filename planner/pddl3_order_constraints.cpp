@@ -71,11 +71,15 @@ std::optional<std::string> timed_literal_writes(const GroundTask& task, const st
   return std::nullopt;
 }
 
-std::optional<std::string> trigger_facts(const ConditionSet& phi, std::vector<FactId>& facts) {
+// φ's facts (fact_disjunction), or why the compilation cannot take φ: its
+// form, or a timed literal that adds one of its facts (or, where
+// `timed_deletes_too`, deletes one). No fact: φ never holds.
+std::optional<std::string> phi_facts(const GroundTask& task, const ConditionSet& phi, bool timed_deletes_too,
+                                     std::vector<FactId>& facts) {
   std::optional<std::vector<FactId>> d = fact_disjunction(phi);
   if (!d) return std::string("its condition is not a fact or a disjunction of facts");
   facts = std::move(*d);
-  return std::nullopt;
+  return timed_literal_writes(task, facts, !timed_deletes_too);
 }
 
 void approximate(OrderCompilation& c, const GroundConstraint& g) {
@@ -112,14 +116,14 @@ GroundFormula as_formula(const ConditionSet& c) {
   return all;
 }
 
+}  // namespace
+
 void insert_timed_literal(GroundTask& task, GroundTimedLiteral literal) {
   auto& tils = task.timed_literals;
   tils.insert(std::upper_bound(tils.begin(), tils.end(), literal,
                                [](const GroundTimedLiteral& a, const GroundTimedLiteral& b) { return a.time < b.time; }),
               literal);
 }
-
-}  // namespace
 
 std::optional<std::vector<FactId>> fact_disjunction(const ConditionSet& phi) {
   if (phi.never) return std::vector<FactId>{};
@@ -137,9 +141,8 @@ std::optional<std::vector<FactId>> fact_disjunction(const ConditionSet& phi) {
 
 std::optional<std::string> compile_at_most_once(OrderCompilation& c, std::size_t k, const GroundConstraint& g) {
   std::vector<FactId> phi;
-  if (std::optional<std::string> why = trigger_facts(g.requirement, phi)) return why;
+  if (std::optional<std::string> why = phi_facts(c.task, g.requirement, true, phi)) return why;
   if (phi.empty()) return std::nullopt;  // φ never holds: met
-  if (std::optional<std::string> why = timed_literal_writes(c.task, phi, false)) return why;
   const FactId closed = c.new_fact("pddl3-closed-" + std::to_string(k));
   for (const Snap& s : snaps_of(c.task, c.source_actions)) {
     const bool adds = adds_unconditionally(s, phi);
@@ -192,9 +195,8 @@ std::optional<std::string> compile_at_most_once(OrderCompilation& c, std::size_t
 
 std::optional<std::string> compile_sometime_before(OrderCompilation& c, std::size_t k, const GroundConstraint& g) {
   std::vector<FactId> phi;
-  if (std::optional<std::string> why = trigger_facts(g.trigger, phi)) return why;
-  if (phi.empty()) return std::nullopt;
-  if (std::optional<std::string> why = timed_literal_writes(c.task, phi, true)) return why;
+  if (std::optional<std::string> why = phi_facts(c.task, g.trigger, false, phi)) return why;
+  if (phi.empty()) return std::nullopt;  // φ never holds: met
   if (any_of_facts(c.start_facts, phi)) {
     return std::string("its first condition holds in the first state, with no state before it");
   }
@@ -212,13 +214,14 @@ std::optional<std::string> compile_sometime_before(OrderCompilation& c, std::siz
 
 std::optional<std::string> compile_sometime_after(OrderCompilation& c, std::size_t k, const GroundConstraint& g) {
   std::vector<FactId> phi;
-  if (std::optional<std::string> why = trigger_facts(g.trigger, phi)) return why;
-  if (phi.empty()) return std::nullopt;
-  if (std::optional<std::string> why = timed_literal_writes(c.task, phi, true)) return why;
+  if (std::optional<std::string> why = phi_facts(c.task, g.trigger, false, phi)) return why;
+  if (phi.empty()) return std::nullopt;  // φ never holds: met
   const FactId pending = c.new_fact("pddl3-pending-" + std::to_string(k));
   for (const Snap& s : snaps_of(c.task, c.source_actions)) {
-    if (adds_unconditionally(s, phi)) s.effects->add.push_back(pending);
-    sort_unique(s.effects->add);
+    if (adds_unconditionally(s, phi)) {
+      s.effects->add.push_back(pending);
+      sort_unique(s.effects->add);
+    }
     const std::size_t count = s.effects->conditional.size();
     for (std::size_t e = 0; e < count; ++e) {
       if (any_of_facts(s.effects->conditional[e].add, phi)) s.effects->conditional[e].add.push_back(pending);

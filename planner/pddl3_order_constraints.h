@@ -53,6 +53,10 @@ namespace alplan {
 // it can never hold; nullopt for any other form.
 std::optional<std::vector<FactId>> fact_disjunction(const ConditionSet& phi);
 
+// Adds a timed literal to the task, keeping its literals sorted by time
+// (after those already at that time).
+void insert_timed_literal(GroundTask& task, GroundTimedLiteral literal);
+
 // What an order compilation needs of the task being compiled.
 struct OrderCompilation {
   GroundTask& task;                // the compiled task, being written
@@ -60,7 +64,7 @@ struct OrderCompilation {
   const std::vector<FactId>& start_facts;
   std::function<FactId(const std::string&)> new_fact;
   // A witness: an instantaneous action, one per disjunct of `condition`,
-  // that adds `adds`; named after constraint k.
+  // that adds the fact (deletes it, where `deletes`); named after constraint k.
   std::function<void(std::size_t k, const ConditionSet& condition, FactId adds, bool deletes)> witness;
 };
 

@@ -12,6 +12,7 @@
 
 #include "planner/formula_evaluation.h"
 #include "planner/explicit_state.h"
+#include "planner/linear_metric.h"
 #include "planner/pddl3_compilation.h"
 #include "planner/trajectory_monitor.h"
 #include "planner/violation_weights.h"
@@ -54,7 +55,7 @@ double saving(const GroundTask& task, std::vector<double> violations, std::uint3
     const double with = evaluate(task.metric->expression, state, context);
     violations[preference] = 0.0;
     const double without = evaluate(task.metric->expression, state, context);
-    return task.metric->minimize ? with - without : without - with;
+    return minimised(task, with) - minimised(task, without);
   } catch (const EvaluationError&) {
     return 0.0;
   }
@@ -67,7 +68,8 @@ class Rounds {
   Rounds(std::shared_ptr<const GroundTask> task, const PlannerOptions& options, const PlanningStart& start,
          std::shared_ptr<const TrajectoryMonitor> seen, const std::function<void(const FoundPlan&)>& on_plan)
       : task_(std::move(task)), options_(options), start_(start), seen_(std::move(seen)), on_plan_(on_plan),
-        began_(Clock::now()), validator_(task_->lifted, ValidatorOptions{options.tolerance, false}) {}
+        began_(Clock::now()), validator_(task_->lifted, ValidatorOptions{options.tolerance, false}),
+        metric_is_lower_bound_(compiled_metric_is_lower_bound(*task_)) {}
 
   double remaining() const { return options_.time_limit - since(began_); }
   PlannerResult& result() { return result_; }
@@ -99,7 +101,7 @@ class Rounds {
     // Each plan the compiled task gives is judged on the task, violations
     // counted: the search hands on, and its anytime phases bound by, the
     // best value under the task's own metric, not the compiled one's.
-    options.objective.metric_is_lower_bound = compiled_metric_is_lower_bound(*task_);
+    options.objective.metric_is_lower_bound = metric_is_lower_bound_;
     options.objective.value = [&](const FoundPlan& found) -> std::optional<double> {
       if (result_.status == PlannerResult::Status::InternalError) return std::nullopt;
       FoundPlan plan = without_witnesses(found, witnesses);
@@ -114,22 +116,20 @@ class Rounds {
                           plan.validation.violation->message() + "\n" + plan.text;
         return std::nullopt;
       }
-      const double value = oriented(plan.validation.value);
+      const double value = minimised(*task_, plan.validation.value);
       if (!best() || better(plan.validation.value, best()->validation.value)) {
         improved = true;
         if (on_plan_) on_plan_(plan);
         result_.plans.push_back(std::move(plan));
       }
-      return std::min(value, oriented(best()->validation.value));
+      return std::min(value, minimised(*task_, best()->validation.value));
     };
     inner = TemporalPlanner(compiled.task, options).plan_from(from);
     add_statistics(inner);
     return {improved, inner};
   }
 
-  bool better(double a, double b) const { return oriented(a) < oriented(b) - 1e-9; }
-  // Smaller is better: a maximised metric negated.
-  double oriented(double value) const { return task_->metric && !task_->metric->minimize ? -value : value; }
+  bool better(double a, double b) const { return minimised(*task_, a) < minimised(*task_, b) - 1e-9; }
 
  private:
   // The observed start on the compiled task: its ids extend the task's, and
@@ -179,6 +179,8 @@ class Rounds {
   const std::function<void(const FoundPlan&)>& on_plan_;
   Clock::time_point began_;
   PlanValidator validator_;
+  // The compiled tasks' metric never exceeds the task's (violation_weights.h).
+  bool metric_is_lower_bound_;
   PlannerResult result_;
   std::vector<std::shared_ptr<void>> memory_;
 };

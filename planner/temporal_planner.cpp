@@ -324,9 +324,7 @@ class PlanChecker {
     if (const std::optional<Solution> lifted = deorder(input, solution)) {
       FoundPlan candidate = validated(*lifted, engine + ", deordered");
       // Better under the metric's own direction (a maximised one is larger).
-      const bool maximize = task_->metric && !task_->metric->minimize;
-      const double gain = maximize ? candidate.validation.value - found.validation.value
-                                   : found.validation.value - candidate.validation.value;
+      const double gain = minimised(*task_, found.validation.value) - minimised(*task_, candidate.validation.value);
       if (candidate.validation.valid && gain > 1e-9) return candidate;
     }
     return found;
@@ -521,8 +519,6 @@ PlannerResult TemporalPlanner::search_once(const PlanningStart& start, const std
 
   const Clock::time_point search_began = Clock::now();
   const PlannerOptions::Objective& objective = options_.objective;
-  // Smaller is better: a maximised metric is negated.
-  const bool maximize = task_->metric && !task_->metric->minimize;
   double best_objective = std::numeric_limits<double>::infinity();
   auto on_solution = [&](const Solution& solution, const std::string& engine) -> std::optional<SolutionValue> {
     const Clock::time_point validation_began = Clock::now();
@@ -536,7 +532,7 @@ PlannerResult TemporalPlanner::search_once(const PlanningStart& start, const std
       return std::nullopt;
     }
     const double printed = found.validation.value;
-    double value = maximize ? -printed : printed;
+    double value = minimised(*task_, printed);  // smaller is better
     if (objective.value) {
       const std::optional<double> measured = objective.value(found);
       if (!measured) return std::nullopt;

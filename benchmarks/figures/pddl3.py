@@ -12,23 +12,33 @@ from figures.common import HERE, RESULTS, load, nearest_rank, table, strategies_
 PDDL3_FIRST = "pddl3-60s-first-2026-12-07"
 
 
+def folder_runs(folder):
+    """A `bench planners` folder's runs and VAL's verdicts on its plans
+    (val-check.txt, benchmarks/val_check.py)."""
+    runs = load(f"{folder}/runs.json")
+    runs = runs["runs"] if isinstance(runs, dict) else runs
+    with open(os.path.join(RESULTS, folder, "val-check.txt")) as f:
+        return runs, f.read()
+
+
+def maximised(run):
+    """Whether the run's problem maximises its metric (read from the problem file)."""
+    with open(os.path.join(HERE, "..", "..", "shared", "benchmarks", run["problem"])) as f:
+        return re.search(r"\(:metric\s+maximize", f.read(), re.I) is not None
+
+
 def pddl3_classical_block(folder=PDDL3_FIRST):
     """IPC 2006's simple- and qualitative-preferences tracks in a `bench
     planners` run: coverage and the summed metric per domain (there is no
     reference planner's result for them in ../shared), and VAL's verdicts
     from the folder's val-check.txt (benchmarks/val_check.py)."""
-    runs = load(f"{folder}/runs.json")
-    runs = runs["runs"] if isinstance(runs, dict) else runs
-    with open(os.path.join(RESULTS, folder, "val-check.txt")) as f:
-        val = f.read()
+    runs, val = folder_runs(folder)
     rows = []
     for domain in sorted({r["domain"] for r in runs if r["domain"].startswith("ipc-2006-classical/")}):
         mine = [r for r in runs if r["domain"] == domain]
         solved = [r for r in mine if r["status"] == "solved"]
         accepted = sum(f"{r['problem']}: VAL valid" in val for r in solved)
-        instance = os.path.join(HERE, "..", "..", "shared", "benchmarks", mine[0]["problem"])
-        with open(instance) as f:
-            direction = "maximised" if re.search(r"\(:metric\s+maximize", f.read(), re.I) else "minimised"
+        direction = "maximised" if maximised(mine[0]) else "minimised"
         rows.append([domain.split("/", 1)[1], f"{len(solved)}/{len(mine)}", f"{accepted}/{len(solved)}", direction,
                      f"{sum(r['value'] for r in solved):.1f}"])
     return table(["domain", "coverage", "VAL accepts", "metric", "summed metric"], rows)
@@ -57,23 +67,22 @@ def pddl3_against_optic_block(folder):
     (../shared/benchmarks/pddl3/baseline): coverage, VAL's verdicts
     (val-check.txt), and on the problems both solve the summed metric, ours
     beside OPTIC's better run per problem, in the metric's direction."""
-    runs = load(f"{folder}/runs.json")
-    runs = runs["runs"] if isinstance(runs, dict) else runs
-    with open(os.path.join(RESULTS, folder, "val-check.txt")) as f:
-        val = f.read()
+    runs, val = folder_runs(folder)
     optic = optic_runs()
+
+    def optic_values(run):
+        return optic.get((run["domain"], int(re.search(r"instance-(\d+)", run["problem"]).group(1))), [])
+
     rows = []
     for domain in sorted({r["domain"] for r in runs if r["domain"].startswith("ipc-2006/")}):
         mine = [r for r in runs if r["domain"] == domain]
         solved = [r for r in mine if r["status"] == "solved"]
         accepted = sum(f"{r['problem']}: VAL valid" in val for r in solved)
-        instance = os.path.join(HERE, "..", "..", "shared", "benchmarks", mine[0]["problem"])
-        with open(instance) as f:
-            maximise = re.search(r"\(:metric\s+maximize", f.read(), re.I) is not None
-        optic_solved = sum(1 for r in mine if optic.get((domain, int(re.search(r"instance-(\d+)", r["problem"]).group(1)))))
+        maximise = maximised(mine[0])
+        optic_solved = sum(1 for r in mine if optic_values(r))
         ours, theirs, both = 0.0, 0.0, 0
         for r in solved:
-            values = optic.get((domain, int(re.search(r"instance-(\d+)", r["problem"]).group(1))), [])
+            values = optic_values(r)
             if values:
                 both += 1
                 ours += r["value"]

@@ -12,6 +12,7 @@
 #include "planner/planner.h"
 #include "planner/search_configuration.h"
 #include "planner/validator.h"
+#include "tests/support/pddl3_planning.h"
 #include "tests/support/task_loader.h"
 
 using namespace alplan;
@@ -39,25 +40,12 @@ std::string problem(const std::string& goal, const std::string& constraints, con
 }
 
 PlannerResult plan(const std::string& problem_text, PlannerOptions options = {}) {
-  const test::LoadedTask loaded = test::load_task_text(kLamp, problem_text);
-  if (options.time_limit == std::numeric_limits<double>::infinity() &&
-      options.node_limit == std::numeric_limits<std::size_t>::max()) {
-    options.time_limit = 20.0;
-  }
-  return Planner(ground(loaded.normalized), options).plan();
+  return test::plan_texts(kLamp, problem_text, options);
 }
 
 // The printed plan is valid on the original task, constraints included.
 ValidationResult check_valid(const std::string& problem_text, const PlannerResult& result) {
-  INFO(result.message);
-  REQUIRE(result.status == PlannerResult::Status::Solved);
-  const test::LoadedTask loaded = test::load_task_text(kLamp, problem_text);
-  PlanValidator validator(loaded.normalized);
-  const ValidationResult v = validator.validate(read_plan(result.best()->text, "plan").plan);
-  INFO(result.best()->text);
-  CHECK(v.valid);
-  CHECK(result.best()->text.find("pddl3-") == std::string::npos);
-  return v;
+  return test::check_printed_plan_valid(kLamp, problem_text, result);
 }
 
 bool has_step(const PlannerResult& result, const std::string& action) {
