@@ -170,11 +170,9 @@ class Deordering {
       if (from != kInitial && k < from) {
         edge(k, from, input_.epsilon);
       } else if (k > until) {
-        // VAL would let an invariant's fact go at its action's very end (it
-        // checks invariants on the open interval), but a plan a robot runs
-        // keeps epsilon there, as the search's preferred schedule does;
-        // where that costs a deadline, validation keeps the plan as found.
-        edge(until, k, input_.epsilon);
+        // VAL checks an invariant on its action's open interval, so its fact
+        // may go at the very end: no gap (OPTIC schedules it so too).
+        edge(until, k, 0.0);
       } else {
         return false;
       }
@@ -182,10 +180,12 @@ class Deordering {
     return true;
   }
 
-  bool link(std::uint32_t j, FactId f, bool positive, std::uint32_t until) {
+  // `gap` is epsilon for a condition; an invariant, checked on the open
+  // interval after its start, may be given at the start's very time.
+  bool link(std::uint32_t j, FactId f, bool positive, std::uint32_t until, double gap) {
     const std::optional<std::uint32_t> a = achiever(j, f, positive);
     if (!a) return false;
-    if (*a != kInitial && *a != j) edge(*a, j, input_.epsilon);
+    if (*a != kInitial && *a != j) edge(*a, j, gap);
     return protect(*a, until, f, positive);
   }
 
@@ -193,25 +193,24 @@ class Deordering {
     for (std::uint32_t j = 0; j < n_; ++j) {
       const StepFacts& s = steps_[j];
       for (FactId f : s.pre_pos) {
-        if (!link(j, f, true, j)) return false;
+        if (!link(j, f, true, j, input_.epsilon)) return false;
       }
       for (FactId f : s.pre_neg) {
-        if (!link(j, f, false, j)) return false;
+        if (!link(j, f, false, j, input_.epsilon)) return false;
       }
       if (s.end == kNoId) continue;
       // An invariant holds from its start (which may give it itself) to its
-      // end; the start is no precondition of it in VAL's mutex rule. Given
-      // by another step, it keeps epsilon after it too (the search gives no
-      // gap only where a window needs it, partial_plan.h).
+      // end; the start is no precondition of it in VAL's mutex rule, so
+      // another step may give it at the start's very time.
       for (FactId f : s.inv_pos) {
         if (has(s.add, f)) {
           if (!protect(j, s.end, f, true)) return false;
-        } else if (!link(j, f, true, s.end)) {
+        } else if (!link(j, f, true, s.end, 0.0)) {
           return false;
         }
       }
       for (FactId f : s.inv_neg) {
-        if (!link(j, f, false, s.end)) return false;
+        if (!link(j, f, false, s.end, 0.0)) return false;
       }
     }
     return true;

@@ -306,7 +306,8 @@ SearchStart search_start_of(const GroundTask& task, const PlanningStart& start, 
 // task's start by the plan validator, from an observed state by
 // validate_from), and lifted to the order its causal links need and
 // scheduled again (plan_deordering.h), which is kept when it is valid and
-// better. A plan we print is always one the validator accepted.
+// better, or as good and shorter. A plan we print is always one the
+// validator accepted.
 class PlanChecker {
  public:
   PlanChecker(std::shared_ptr<const GroundTask> task, const PlanningStart& start, const TaskIndex& index,
@@ -323,9 +324,11 @@ class PlanChecker {
     const DeorderingInput input{index_, search_start_.state, search_start_.release, options_.epsilon};
     if (const std::optional<Solution> lifted = deorder(input, solution)) {
       FoundPlan candidate = validated(*lifted, engine + ", deordered");
-      // Better under the metric's own direction (a maximised one is larger).
+      // Better under the metric's own direction (a maximised one is larger);
+      // at an equal value, shorter (a task without a metric counts steps).
       const double gain = minimised(*task_, found.validation.value) - minimised(*task_, candidate.validation.value);
-      if (candidate.validation.valid && gain > 1e-9) return candidate;
+      const double shorter = found.validation.makespan - candidate.validation.makespan;
+      if (candidate.validation.valid && (gain > 1e-9 || (gain >= -1e-9 && shorter > 1e-9))) return candidate;
     }
     return found;
   }

@@ -302,3 +302,28 @@ TEST_CASE("invariants one member may break and another restore make exhaustion n
     CHECK(result.message.find("several snaps may change") != std::string::npos);
   }
 }
+
+// An invariant is checked on its action's open interval (VAL, and OPTIC
+// schedules so): a holder may start at the very time another step gives
+// its invariant, and a step may delete that fact at the holder's very end.
+// The deordering once kept epsilon at both places (trucks-time-constraints
+// 1: 843.209 against OPTIC's 843.204).
+TEST_CASE("an invariant is given at its holder's start and taken at its end with no gap") {
+  const std::string domain = R"(
+(define (domain carry) (:requirements :strips :durative-actions)
+  (:predicates (at-a) (at-b) (loaded) (gone))
+  (:durative-action drive :parameters () :duration (= ?duration 10)
+    :condition (at start (at-a)) :effect (and (at start (not (at-a))) (at end (at-b))))
+  (:durative-action load :parameters () :duration (= ?duration 1)
+    :condition (over all (at-b)) :effect (at end (loaded)))
+  (:durative-action leave :parameters () :duration (= ?duration 1)
+    :condition (at start (at-b)) :effect (and (at start (not (at-b))) (at end (gone))))))";
+  const std::string problem =
+      "(define (problem c) (:domain carry) (:init (at-a)) (:goal (and (loaded) (gone))))";
+  const PlannerResult result = plan_text(domain, problem);
+  check_solved(domain, problem, result);
+  CHECK(result.best()->text == "0.000: (drive) [10.000]\n10.000: (load) [1.000]\n11.000: (leave) [1.000]\n");
+  const oracle::LoadedTask reference = oracle::load_task_text(domain, problem);
+  REQUIRE(reference.ok());
+  CHECK(oracle::Judge(reference.domain, reference.problem).judge(oracle::read_timed_plan(result.best()->text).plan).valid());
+}
