@@ -20,7 +20,11 @@ struct LoadOptions {
   bool show_warnings = true;
 };
 
-// Null on any error; the diagnostics went to `diagnostics`.
+// The name diagnostics give an input: the path, or "<stdin>" for "-".
+std::string input_name(const std::string& path);
+
+// Null on any error; the diagnostics went to `diagnostics`. Either path may
+// be "-" (pddl::kStandardInput), not both: standard input is read once.
 std::optional<TaskFiles> load_task_files(const std::string& domain_path, const std::string& problem_path,
                                          std::ostream& diagnostics, const LoadOptions& options = {});
 

@@ -1,5 +1,7 @@
-// alplan validate DOMAIN PROBLEM PLAN [--epsilon E] [--json]
-// Exit 0 valid, 1 invalid, 2 input error.
+// alplan validate DOMAIN PROBLEM PLAN [-t|--epsilon E] [-v] [--json]
+// Exit 0 valid, 1 invalid, 2 input error. Takes VAL's -t and -v, so that it
+// can stand in for VAL's Validate in scripts; any one of the three files may
+// be "-", standard input.
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
@@ -13,6 +15,7 @@
 #include "pddl_parser/parser.h"
 #include "pddl_parser/writer.h"
 #include "planner/normalize.h"
+#include "planner/validation_trace.h"
 #include "planner/validator.h"
 
 namespace alplan::cli {
@@ -27,11 +30,16 @@ struct ValidateOptions {
   bool val_total_time = false;
   bool reference = false;
   bool exact = false;
+  bool verbose = false;
 };
 
 // The reference semantics (oracle/), which shares no code with the planner
 // or its validator: a second opinion on a plan.
 int run_reference(const ValidateOptions& options) {
+  if (options.domain == pddl::kStandardInput || options.problem == pddl::kStandardInput) {
+    std::cerr << "-: error: --reference reads the domain and the problem from files, not standard input\n";
+    return kExitInputError;
+  }
   const oracle::LoadedTask task = oracle::load_task_files(options.domain, options.problem);
   if (!task.ok()) {
     std::cerr << task.error;
@@ -39,7 +47,7 @@ int run_reference(const ValidateOptions& options) {
   }
   std::vector<pddl::Diagnostic> io;
   std::string text;
-  if (!pddl::read_file(options.plan, text, io)) {
+  if (!pddl::read_input(options.plan, text, io)) {
     std::cerr << io.front().to_string() << "\n";
     return kExitInputError;
   }
@@ -86,44 +94,85 @@ nlohmann::json to_json(const Violation& v) {
   return j;
 }
 
+// Standard input can be read once: two "-" would hand the second file an
+// empty text and a baffling parse error.
+bool one_standard_input(const ValidateOptions& options) {
+  const int count = (options.domain == pddl::kStandardInput) + (options.problem == pddl::kStandardInput) +
+                    (options.plan == pddl::kStandardInput);
+  if (count <= 1) return true;
+  std::cerr << "-: error: standard input ('-') is given for more than one file; it can be read once\n";
+  return false;
+}
+
+void print_json(const ValidationResult& result) {
+  nlohmann::json j = {{"valid", result.valid}, {"happenings", result.happenings}};
+  if (result.valid) {
+    j["makespan"] = result.makespan;
+    j["metric"] = result.metric ? nlohmann::json(*result.metric) : nlohmann::json();
+    j["value"] = result.value;
+    if (!result.preference_violations.empty()) j["preference_violations"] = result.preference_violations;
+  } else {
+    j["violation"] = to_json(*result.violation);
+    nlohmann::json all = nlohmann::json::array();
+    for (const Violation& v : result.violations) all.push_back(to_json(v));
+    j["violations"] = std::move(all);
+  }
+  std::cout << j.dump(2) << "\n";
+}
+
+void print_text(const ValidationResult& result) {
+  if (result.valid) {
+    std::cout << "Plan valid. Makespan: " << pddl::format_number(result.makespan)
+              << ". Metric: " << (result.metric ? pddl::format_number(*result.metric) : std::string("none")) << ".\n";
+    for (const auto& [name, count] : result.preference_violations) {
+      std::cout << "Preference " << name << " violated " << pddl::format_number(count) << " times.\n";
+    }
+    return;
+  }
+  std::cout << "Plan invalid. " << result.violation->message() << "\n";
+  if (result.violations.size() < 2) return;
+  const std::size_t more = result.violations.size() - 1;
+  std::cout << more << (more == 1 ? " more violation" : " more violations")
+            << ", found going on with the effects applied (later ones may follow from earlier ones):\n";
+  for (std::size_t i = 1; i < result.violations.size(); ++i) {
+    std::cout << "  " << result.violations[i].message() << "\n";
+  }
+}
+
 int run(const ValidateOptions& options) {
+  if (!one_standard_input(options)) return kExitInputError;
   if (options.reference) return run_reference(options);
   const auto files = load_task_files(options.domain, options.problem, std::cerr, {false});
   if (!files) return kExitInputError;
   std::vector<pddl::Diagnostic> io;
   std::string text;
-  if (!pddl::read_file(options.plan, text, io)) {
+  if (!pddl::read_input(options.plan, text, io)) {
     std::cerr << io.front().to_string() << "\n";
     return kExitInputError;
   }
-  const PlanReadResult plan = read_plan(text, options.plan);
+  const PlanReadResult plan = read_plan(text, input_name(options.plan));
   if (!plan.ok()) {
     for (const pddl::Diagnostic& d : plan.diagnostics) std::cerr << d.to_string() << "\n";
     return kExitInputError;
   }
   auto lifted = std::make_shared<const NormalizedTask>(
       normalize(*files->domain, *files->problem, {options.domain, options.problem, {}}));
-  PlanValidator validator(lifted, {options.epsilon, options.val_total_time});
-  const ValidationResult result = validator.validate(plan.plan);
+  ValidatorOptions validator_options;
+  validator_options.epsilon = options.epsilon;
+  validator_options.val_total_time = options.val_total_time;
+  validator_options.report_all = true;
+  PlanValidator validator(lifted, validator_options);
+  HappeningObserver trace;
+  if (options.verbose) {
+    // Beside JSON the trace goes to standard error, so stdout stays one JSON document.
+    std::ostream& out = options.json ? std::cerr : std::cout;
+    trace = [&validator, &out](const HappeningRecord& h) { out << format_happening(validator.world(), h); };
+  }
+  const ValidationResult result = validator.validate(plan.plan, trace);
   if (options.json) {
-    nlohmann::json j = {{"valid", result.valid}, {"happenings", result.happenings}};
-    if (result.valid) {
-      j["makespan"] = result.makespan;
-      j["metric"] = result.metric ? nlohmann::json(*result.metric) : nlohmann::json();
-      j["value"] = result.value;
-      if (!result.preference_violations.empty()) j["preference_violations"] = result.preference_violations;
-    } else {
-      j["violation"] = to_json(*result.violation);
-    }
-    std::cout << j.dump(2) << "\n";
-  } else if (result.valid) {
-    std::cout << "Plan valid. Makespan: " << pddl::format_number(result.makespan)
-              << ". Metric: " << (result.metric ? pddl::format_number(*result.metric) : std::string("none")) << ".\n";
-    for (const auto& [name, count] : result.preference_violations) {
-      std::cout << "Preference " << name << " violated " << pddl::format_number(count) << " times.\n";
-    }
+    print_json(result);
   } else {
-    std::cout << "Plan invalid. " << result.violation->message() << "\n";
+    print_text(result);
   }
   return result.valid ? kExitOk : kExitInvalid;
 }
@@ -133,11 +182,17 @@ int run(const ValidateOptions& options) {
 void add_validate_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<ValidateOptions>();
   CLI::App* cmd = app.add_subcommand("validate", "Validate a plan with VAL's semantics (exit 0 valid, 1 invalid)");
-  cmd->add_option("DOMAIN", options->domain, "Domain file")->required();
-  cmd->add_option("PROBLEM", options->problem, "Problem file")->required();
-  cmd->add_option("PLAN", options->plan, "Plan file (IPC format, or one (action args) a line)")->required();
-  cmd->add_option("--epsilon", options->epsilon, "VAL's -t: happenings within epsilon/10 are one happening")
-      ->check(CLI::PositiveNumber);
+  cmd->add_option("DOMAIN", options->domain, "Domain file ('-': standard input)")->required();
+  cmd->add_option("PROBLEM", options->problem, "Problem file ('-': standard input)")->required();
+  cmd->add_option("PLAN", options->plan,
+                  "Plan file (IPC format, or one (action args) a line; '-': standard input)")
+      ->required();
+  cmd->add_option("-t,--epsilon", options->epsilon, "VAL's -t: happenings within epsilon/10 are one happening")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_flag("-v,--verbose", options->verbose,
+                "Print a state trace, as VAL's -v: per happening its time, members, the facts it adds and "
+                "deletes, the values it changes, its violations");
   cmd->add_flag("--json", options->json, "Print the result as JSON");
   cmd->add_flag("--val-total-time", options->val_total_time,
                 "Count (total-time) in steps when the domain omits :durative-actions, as VAL does");

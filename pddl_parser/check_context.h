@@ -26,6 +26,10 @@ struct Declarations {
   bool in_problem = false;
 };
 
+// Warns about each construct the domain uses without its :requirements flag
+// (check_requirements.cpp), once per flag, at its first use.
+void warn_missing_requirements(const Domain& domain, DiagnosticSink& sink);
+
 // Where a formula stands; decides which constructs are allowed.
 enum class Place {
   Precondition,

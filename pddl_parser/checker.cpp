@@ -186,24 +186,6 @@ void check_actions(const Domain& domain, FormulaChecker& formulas, DiagnosticSin
   }
 }
 
-// Constructs used without their flag: warnings, since VAL and the IPC files
-// are lax here (umts omits :durative-actions, promela omits
-// :derived-predicates).
-void warn_missing_requirements(const Domain& domain, DiagnosticSink& sink) {
-  auto has = [&](std::string_view flag) {
-    return std::any_of(domain.requirements.begin(), domain.requirements.end(),
-                       [&](const Requirement& r) { return r.name == flag; });
-  };
-  auto need = [&](bool used, std::string_view flag, std::string_view what) {
-    if (used && !has(flag)) {
-      sink.warning(domain.location, std::string(what) + " without the requirement " + std::string(flag));
-    }
-  };
-  need(!domain.durative_actions.empty(), ":durative-actions", "durative actions are used");
-  need(!domain.derived_predicates.empty() && !has(":adl"), ":derived-predicates", "derived predicates are used");
-  need(!domain.types.empty(), ":typing", "types are declared");
-}
-
 }  // namespace
 
 bool is_known_requirement(const std::string& name) {
@@ -213,7 +195,7 @@ bool is_known_requirement(const std::string& name) {
 std::vector<Diagnostic> check_domain(const Domain& domain, const std::string& file_name) {
   DiagnosticSink sink(file_name);
   check_requirements(domain.requirements, sink);
-  warn_missing_requirements(domain, sink);
+  detail::warn_missing_requirements(domain, sink);
   Declarations decls = declarations_of(domain, sink, true);
   FormulaChecker formulas(decls, sink);
   for (const DerivedPredicate& d : domain.derived_predicates) check_derived(d, decls, formulas, sink);

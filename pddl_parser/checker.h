@@ -11,7 +11,10 @@
 // predicate or a numeric function); a durative action without a ?duration
 // constraint.
 // Warnings: a construct used without its :requirements flag (several IPC
-// domains omit flags; VAL accepts them too), objects that repeat constants.
+// domains omit flags; VAL accepts them too), once per flag at its first use
+// (durative actions, numeric fluents, negative, disjunctive, quantified
+// and equality conditions, conditional effects, types, derived predicates,
+// preferences, constraints); objects that repeat constants.
 #pragma once
 
 #include <vector>

@@ -141,6 +141,12 @@ void parse_domain_section(ParserCore& core, Domain& domain, SourceLocation where
     domain.durative_actions.push_back(parse_durative_action(core, where));
   } else if (k == ":derived") {
     domain.derived_predicates.push_back(parse_derived(core, where));
+  } else if (k == ":process" || k == ":event") {
+    // PDDL+ (Fox & Long 2006): named, so that a user is not sent looking
+    // for a typo in a section that is spelled right.
+    core.fail(keyword.location, std::string(k == ":process" ? "PDDL+ processes (:process)" : "PDDL+ events (:event)") +
+                                    " are not supported: alplan plans PDDL 2.1 durative actions, with continuous "
+                                    "effects (#t) inside them, not PDDL+");
   } else {
     core.fail(keyword.location, "unknown domain section " + std::string(k) +
                                     " (expected :requirements, :types, :constants, :predicates, :functions, "

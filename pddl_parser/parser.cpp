@@ -1,6 +1,7 @@
 #include "pddl_parser/parser.h"
 
 #include <functional>
+#include <iostream>
 
 #include "pddl_parser/lexer.h"
 #include "pddl_parser/parser_core.h"
@@ -93,6 +94,17 @@ FileKind detect_file_kind(std::string_view text) {
     }
   }
   return FileKind::Unknown;
+}
+
+bool read_input(const std::string& path, std::string& contents, std::vector<Diagnostic>& diagnostics) {
+  if (path != kStandardInput) return read_file(path, contents, diagnostics);
+  std::string text;
+  if (!detail::read_stream(std::cin, text)) {
+    diagnostics.push_back({Severity::Error, path, 0, 0, "cannot read standard input"});
+    return false;
+  }
+  contents = std::move(text);
+  return true;
 }
 
 }  // namespace alplan::pddl

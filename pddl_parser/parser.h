@@ -36,7 +36,18 @@ enum class FileKind { Domain, Problem, Unknown };
 // Reads `(define (domain|problem ...` without parsing the rest.
 FileKind detect_file_kind(std::string_view text);
 
-// Reads a whole file; returns false and a diagnostic when it cannot.
+// Reads a whole file. Returns false and a diagnostic naming the path and
+// the system's reason ("cannot open the file: No such file or directory")
+// when it cannot.
 bool read_file(const std::string& path, std::string& contents, std::vector<Diagnostic>& diagnostics);
+
+// The path that names standard input on a command line, as most Unix tools
+// read it.
+inline constexpr const char* kStandardInput = "-";
+
+// read_file, but kStandardInput reads standard input to its end (so it can
+// be read once: a second read finds it empty). For command lines; a library
+// caller naming a file "-" means the file.
+bool read_input(const std::string& path, std::string& contents, std::vector<Diagnostic>& diagnostics);
 
 }  // namespace alplan::pddl

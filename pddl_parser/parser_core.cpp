@@ -1,6 +1,10 @@
 #include "pddl_parser/parser_core.h"
 
 #include <array>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <istream>
 #include <fstream>
 #include <string>
 
@@ -106,6 +110,18 @@ void ParserCore::skip_past_list(int open_depth) {
   }
 }
 
+// Reads `in` to its end. Into the string ourselves: `buffer << in.rdbuf()`
+// catches a bad_alloc raised while it copies and only sets failbit, so under
+// a memory limit it handed the parser a silently truncated file. Growing the
+// string here lets the allocation failure reach the caller.
+bool read_stream(std::istream& in, std::string& text) {
+  std::array<char, 1 << 16> chunk{};
+  while (in.read(chunk.data(), chunk.size()) || in.gcount() > 0) {
+    text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+  }
+  return !in.bad();
+}
+
 ParserCore::Nesting::Nesting(ParserCore& core) : core_(core) {
   if (++core_.nesting_ > core_.options_.max_nesting) {
     --core_.nesting_;
@@ -118,23 +134,34 @@ ParserCore::Nesting::Nesting(ParserCore& core) : core_(core) {
 
 namespace alplan::pddl {
 
+namespace {
+
+// The system's reason for the last failed call, as strerror words it ("No
+// such file or directory"), or a plain fallback when it left none.
+std::string system_reason(int error) {
+  return error != 0 ? std::string(std::strerror(error)) : std::string("the system gave no reason");
+}
+
+}  // namespace
+
 bool read_file(const std::string& path, std::string& contents, std::vector<Diagnostic>& diagnostics) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    diagnostics.push_back({Severity::Error, path, 0, 0, "cannot open the file"});
+  std::string text;
+  // A directory opens as a stream on Linux and fails only when read, with
+  // a reason nobody would guess from "cannot read": say what it is.
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) {
+    diagnostics.push_back({Severity::Error, path, 0, 0, "cannot open the file: it is a directory"});
     return false;
   }
-  // Read into the string ourselves: `buffer << in.rdbuf()` catches a
-  // bad_alloc raised while it copies and only sets failbit, so under a
-  // memory limit it handed the parser a silently truncated file. Growing
-  // the string here lets the allocation failure reach the caller.
-  std::string text;
-  std::array<char, 1 << 16> chunk{};
-  while (in.read(chunk.data(), chunk.size()) || in.gcount() > 0) {
-    text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+  errno = 0;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    diagnostics.push_back({Severity::Error, path, 0, 0, "cannot open the file: " + system_reason(errno)});
+    return false;
   }
-  if (in.bad()) {
-    diagnostics.push_back({Severity::Error, path, 0, 0, "cannot read the file"});
+  errno = 0;
+  if (!detail::read_stream(in, text)) {
+    diagnostics.push_back({Severity::Error, path, 0, 0, "cannot read the file: " + system_reason(errno)});
     return false;
   }
   contents = std::move(text);

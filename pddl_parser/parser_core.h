@@ -3,6 +3,7 @@
 #pragma once
 
 #include <exception>
+#include <istream>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -94,5 +95,9 @@ std::optional<Comparison> comparison_from_symbol(std::string_view symbol);
 // its closing ')'.
 void parse_domain_section(ParserCore& core, Domain& domain, SourceLocation where);
 void parse_problem_section(ParserCore& core, Problem& problem, SourceLocation where);
+
+// Reads `in` to its end into `text`; false when the stream went bad. For
+// read_file and, on standard input, read_input (parser.h).
+bool read_stream(std::istream& in, std::string& text);
 
 }  // namespace alplan::pddl::detail

@@ -4,10 +4,14 @@ namespace alplan::pddl {
 
 std::string Diagnostic::to_string() const {
   std::string out = file;
-  out += ':';
-  out += std::to_string(line);
-  out += ':';
-  out += std::to_string(column);
+  // Line 0 is no place in the file (it could not be opened, say): a
+  // "file:0:0" would send a reader looking for a line that is not there.
+  if (line != 0) {
+    out += ':';
+    out += std::to_string(line);
+    out += ':';
+    out += std::to_string(column);
+  }
   out += severity == Severity::Error ? ": error: " : ": warning: ";
   out += message;
   return out;

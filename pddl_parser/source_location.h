@@ -24,7 +24,8 @@ struct SourceLocation {
 
 enum class Severity { Error, Warning };
 
-// One finding about an input file: `file:line:col: error: message`.
+// One finding about an input file: `file:line:col: error: message`, or
+// `file: error: message` when it has no place in the file (line 0).
 struct Diagnostic {
   Severity severity = Severity::Error;
   std::string file;

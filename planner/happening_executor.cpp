@@ -28,48 +28,6 @@ std::optional<double> total_cost(const GroundTask& task, const ExplicitState& st
   return std::nullopt;
 }
 
-void collect_facts(const GroundFormula& f, std::set<FactId>& out) {
-  if (f.kind == GroundFormula::Kind::Literal) out.insert(f.fact);
-  for (const GroundFormula& child : f.children) collect_facts(child, out);
-}
-
-void collect_variables(const GroundExpression& e, std::set<NumericVarId>& out) {
-  if (e.kind == GroundExpression::Kind::Variable) out.insert(e.variable);
-  for (const GroundExpression& operand : e.operands) collect_variables(operand, out);
-}
-
-void collect_variables(const GroundFormula& f, std::set<NumericVarId>& out) {
-  if (f.kind == GroundFormula::Kind::Comparison) {
-    collect_variables(f.comparison.left, out);
-    collect_variables(f.comparison.right, out);
-  }
-  for (const GroundFormula& child : f.children) collect_variables(child, out);
-}
-
-// Atoms and values named where they decide nothing (ConditionSet::mentioned:
-// simplified away, or a precondition preference a round of the preference
-// search leaves out) count too: VAL reads every proposition a precondition
-// names (the differential tester's task 8589948526, a dropped preference's
-// read with a fact added twice).
-void collect_reads(const ConditionSet& c, std::set<FactId>& facts, std::set<NumericVarId>& values) {
-  facts.insert(c.positive.begin(), c.positive.end());
-  facts.insert(c.negative.begin(), c.negative.end());
-  facts.insert(c.mentioned.begin(), c.mentioned.end());
-  values.insert(c.mentioned_values.begin(), c.mentioned_values.end());
-  for (const GroundComparison& cmp : c.numeric) {
-    collect_variables(cmp.left, values);
-    collect_variables(cmp.right, values);
-  }
-  for (const GroundFormula& f : c.complex) {
-    collect_facts(f, facts);
-    collect_variables(f, values);
-  }
-}
-
-bool additive(pddl::AssignOperator op) {
-  return op == pddl::AssignOperator::Increase || op == pddl::AssignOperator::Decrease;
-}
-
 }  // namespace
 
 std::string HappeningExecutor::explain(const EvaluationError& error) const {
@@ -87,7 +45,21 @@ Violation HappeningExecutor::undefined_value(const EvaluationError& error, doubl
 }
 
 HappeningExecutor::HappeningExecutor(const GroundTask& task, const ValidatorOptions& options)
-    : task_(task), epsilon_(options.epsilon), val_total_time_(options.val_total_time), numeric_slack_(options.numeric_slack) {}
+    : task_(task),
+      epsilon_(options.epsilon),
+      val_total_time_(options.val_total_time),
+      numeric_slack_(options.numeric_slack),
+      report_all_(options.report_all) {}
+
+bool HappeningExecutor::record(std::optional<Violation> v) {
+  if (!v) return false;
+  // An invariant failing at both ends of an interval is one violation.
+  for (const Violation& seen : step_violations_) {
+    if (seen.message() == v->message()) return false;
+  }
+  step_violations_.push_back(std::move(*v));
+  return !report_all_;
+}
 
 const GroundAction* HappeningExecutor::action_of(const Event& e) const {
   if (e.point == Point::Til) return nullptr;
@@ -241,128 +213,6 @@ void HappeningExecutor::count_preferences(const Event& e, pddl::TimeSpecifier ti
   }
 }
 
-HappeningExecutor::Footprint HappeningExecutor::footprint(const Event& e) const {
-  Footprint f;
-  if (e.point == Point::Til) {
-    const GroundTimedLiteral& til = task_.timed_literals[e.scheduled];
-    (til.positive ? f.adds : f.dels).insert(til.fact);
-    return f;
-  }
-  const GroundAction& action = *action_of(e);
-  collect_reads(e.point == Point::End ? action.at_end : action.at_start, f.reads, f.reads_values);
-  // VAL's mutex rule reads the propositions of preferences too.
-  const pddl::TimeSpecifier at = e.point == Point::End ? pddl::TimeSpecifier::AtEnd : pddl::TimeSpecifier::AtStart;
-  for (const GroundPreference& p : action.preferences) {
-    if (p.time == at) collect_reads(p.condition, f.reads, f.reads_values);
-  }
-  // A condition on a derived fact reads what it is derived from (VAL).
-  auto expand_derived = [&](std::set<FactId>& reads, std::set<NumericVarId>& values) {
-    if (task_.axioms.empty()) return;
-    if (!derived_) derived_ = std::make_unique<DerivedSupport>(task_);
-    const std::vector<FactId> read(reads.begin(), reads.end());
-    for (FactId p : read) {
-      if (!task_.is_derived(p)) continue;
-      const DerivedSupport::Support& s = derived_->of(p);
-      reads.insert(s.facts.begin(), s.facts.end());
-      values.insert(s.variables.begin(), s.variables.end());
-    }
-  };
-  expand_derived(f.reads, f.reads_values);
-  for (const GroundDurationConstraint& d : action.duration) collect_variables(d.value, f.reads_values);
-  const HappeningEffects& effects = e.point == Point::End ? action.end : action.start;
-  const EvaluationContext context = context_of(e);
-  std::set<FactId> changed;  // by this event so far, in VAL's order
-  f.claimed_reads = f.reads;
-  f.added_again.insert(effects.added_twice.begin(), effects.added_twice.end());
-  auto add_effects = [&](const std::vector<FactId>& adds, const std::vector<FactId>& dels,
-                         const std::vector<NumericAssignment>& numeric) {
-    for (FactId p : adds) {
-      if (!changed.insert(p).second) f.added_again.insert(p);
-    }
-    changed.insert(dels.begin(), dels.end());
-    f.adds.insert(adds.begin(), adds.end());
-    f.dels.insert(dels.begin(), dels.end());
-    for (const NumericAssignment& a : numeric) {
-      collect_variables(a.value, f.reads_values);
-      f.writes.emplace_back(a.variable, a.assign);
-    }
-  };
-  add_effects(effects.add, effects.del, effects.numeric);
-  for (const ConditionalEffect& c : effects.conditional) {
-    if (!holds(c.condition, state_, context, numeric_slack_)) continue;
-    // VAL claims a firing condition's reads when it constructs that effect
-    // (Action::handleEffects): a fact this event has not yet changed is
-    // claimed as read, and adding it twice afterwards is the added-and-read
-    // mutex. One it has changed stays owned as written, so whether another
-    // member's write of it is a mutex depends on which of the two the plan
-    // lists first (VAL 3c7a1f3 refuses `0: (n)`, `0: (m)` and accepts
-    // `0: (m)`, `0: (n)` where m deletes p and reads it in a conditional
-    // effect and n deletes it). A plan's listing order is no part of its
-    // meaning: every fact a firing condition reads counts as a read against
-    // the other members, so what passes here passes VAL in any order.
-    std::set<FactId> condition_reads;
-    collect_reads(c.condition, condition_reads, f.reads_values);
-    expand_derived(condition_reads, f.reads_values);
-    for (FactId p : condition_reads) {
-      f.reads.insert(p);
-      if (!changed.count(p)) f.claimed_reads.insert(p);
-    }
-    add_effects(c.add, c.del, c.numeric);
-  }
-  return f;
-}
-
-std::optional<Violation> HappeningExecutor::check_mutex(const std::vector<Event>& events) {
-  std::vector<Footprint> prints;
-  for (const Event& e : events) prints.push_back(footprint(e));
-  auto clash = [&](std::size_t a, std::size_t b, std::string what) {
-    Violation v = violation(Violation::Kind::MutexViolation, events[a]);
-    v.condition = std::move(what);
-    v.other_action = event_name(events[b]);
-    return v;
-  };
-  for (std::size_t a = 0; a < events.size(); ++a) {
-    const Footprint& fa = prints[a];
-    // VAL marks what an action reads only when its happening has other
-    // members; a second add of such a fact by the same action then finds
-    // it owned as added-and-read and is a mutex (Ownership::ownsForAdd).
-    for (FactId p : fa.added_again) {
-      if (events.size() > 1 && fa.claimed_reads.count(p)) {
-        return clash(a, a, "adds " + task_.fact_name(p) + " twice while it reads it, with other members in its happening");
-      }
-    }
-    for (std::size_t i = 0; i < fa.writes.size(); ++i) {
-      for (std::size_t j = i + 1; j < fa.writes.size(); ++j) {
-        if (fa.writes[i].first == fa.writes[j].first && !(additive(fa.writes[i].second) && additive(fa.writes[j].second))) {
-          return clash(a, a, "assigns to " + task_.variable_name(fa.writes[i].first) + " twice");
-        }
-      }
-    }
-    for (std::size_t b = 0; b < events.size(); ++b) {
-      if (a == b) continue;
-      const Footprint& fb = prints[b];
-      for (FactId p : fa.reads) {
-        if (fb.adds.count(p)) return clash(b, a, "adds " + task_.fact_name(p) + ", which the other requires");
-        if (fb.dels.count(p)) return clash(b, a, "deletes " + task_.fact_name(p) + ", which the other requires");
-      }
-      for (FactId p : fa.adds) {
-        if (fb.dels.count(p)) return clash(a, b, "adds " + task_.fact_name(p) + ", which the other deletes");
-      }
-      for (const auto& [variable, op] : fb.writes) {
-        if (fa.reads_values.count(variable)) {
-          return clash(b, a, "changes " + task_.variable_name(variable) + ", which the other reads");
-        }
-        for (const auto& [other, other_op] : fa.writes) {
-          if (other == variable && !(additive(op) && additive(other_op))) {
-            return clash(b, a, "changes " + task_.variable_name(variable) + ", which the other also changes");
-          }
-        }
-      }
-    }
-  }
-  return std::nullopt;
-}
-
 std::optional<Violation> HappeningExecutor::apply(const std::vector<Event>& events) {
   std::vector<FactId> adds, dels;
   std::vector<Update> updates;
@@ -411,7 +261,8 @@ void HappeningExecutor::advance(ExplicitState& state, double elapsed) const {
   }
 }
 
-std::optional<Violation> HappeningExecutor::check_invariants(const ExplicitState& state, double at, double until) {
+bool HappeningExecutor::check_invariants(const ExplicitState& state, double at, double until) {
+  bool failed_any = false;
   for (const auto& [scheduled, action] : running_) {
     const ConditionSet& invariant = task_.actions[action].over_all;
     count_preferences({Point::Start, at, scheduled}, pddl::TimeSpecifier::OverAll, state);
@@ -427,13 +278,15 @@ std::optional<Violation> HappeningExecutor::check_invariants(const ExplicitState
       v.step = steps_[scheduled].step;
       v.line = steps_[scheduled].line;
       v.condition = describe(task_, invariant, *failed);
-      return v;
+      failed_any = true;
+      if (record(std::move(v))) return true;
     }
   }
-  return std::nullopt;
+  return failed_any;
 }
 
 std::optional<Violation> HappeningExecutor::step() {
+  step_violations_.clear();
   // VAL checks trajectory constraints in the state before each happening:
   // the initial state, then each happening's result but the last (finish_run).
   auto observe = [&]() -> std::optional<Violation> {
@@ -443,39 +296,60 @@ std::optional<Violation> HappeningExecutor::step() {
       return undefined_value(error, time_, "the PDDL 3 constraints");
     }
   };
-  if (next_ == 0 && trajectory_->active()) {
-    if (auto v = observe()) return v;
+  std::optional<ExplicitState> before;
+  if (observer_) before = state_;
+  if (next_ == 0 && trajectory_->active() && record(observe())) return step_violations_.front();
+  const std::size_t index = next_;
+  execute_happening();
+  const bool stopped = !report_all_ && !step_violations_.empty();
+  if (!stopped && !done() && trajectory_->active()) record(observe());
+  if (observer_) {
+    HappeningRecord happening{index, happening_times_[index], {}, &*before, &state_, step_violations_};
+    for (const Event& e : happenings_[index]) happening.members.push_back(event_name(e));
+    observer_(happening);
   }
-  if (auto v = execute_happening()) return v;
-  if (!done() && trajectory_->active()) return observe();
-  return std::nullopt;
+  if (step_violations_.empty()) return std::nullopt;
+  return step_violations_.front();
 }
 
-std::optional<Violation> HappeningExecutor::execute_happening() {
-  const std::vector<Event>& events = happenings_[next_];
-  advance(state_, happening_times_[next_] - time_);
-  time_ = happening_times_[next_];
-  ++next_;
+void HappeningExecutor::execute_members(const std::vector<Event>& events) {
+  // An undefined value stops the member (or the stage) it arose in: with
+  // report_all the other members' conditions are still checked, but a
+  // happening whose effects cannot all be evaluated changes nothing.
+  auto undefined = [&](const EvaluationError& error, const Event& e) {
+    Violation v = violation(Violation::Kind::UndefinedValue, e);
+    v.condition = explain(error);
+    return v;
+  };
+  for (const Event& e : events) {
+    try {
+      if (record(check_conditions(e))) return;
+    } catch (const EvaluationError& error) {
+      if (record(undefined(error, e))) return;
+    }
+  }
   const Event* current = &events.front();
   try {
-    for (const Event& e : events) {
-      current = &e;
-      if (auto v = check_conditions(e)) return v;
-    }
-    current = &events.front();
     // With one member too: VAL refuses an action that assigns a value twice.
-    if (auto v = check_mutex(events)) return v;
+    if (record(check_mutex(events))) return;
     for (const Event& e : events) {
       current = &e;
       if (e.point == Point::Start) start_rates(e.scheduled, state_);
     }
     current = &events.front();
-    if (auto v = apply(events)) return v;
+    record(apply(events));
   } catch (const EvaluationError& error) {
-    Violation v = violation(Violation::Kind::UndefinedValue, *current);
-    v.condition = explain(error);
-    return v;
+    record(undefined(error, *current));
   }
+}
+
+void HappeningExecutor::execute_happening() {
+  const std::vector<Event>& events = happenings_[next_];
+  advance(state_, happening_times_[next_] - time_);
+  time_ = happening_times_[next_];
+  ++next_;
+  execute_members(events);
+  if (!report_all_ && !step_violations_.empty()) return;
   for (const Event& e : events) {
     if (e.point == Point::End) {
       running_.erase(e.scheduled);
@@ -489,25 +363,26 @@ std::optional<Violation> HappeningExecutor::execute_happening() {
     last_action_state_ = state_;
     last_action_time_ = time_;
   }
-  if (next_ < happenings_.size() && !running_.empty()) {
-    try {
-      if (auto v = check_invariants(state_, time_, happening_times_[next_])) return v;
-      if (rates_.empty()) return std::nullopt;
-      // Change is linear between happenings: the ends of the interval are
-      // its extremes, so the state just before the next happening is the
-      // other point an invariant must hold at.
-      ExplicitState before_next = state_;
-      advance(before_next, happening_times_[next_] - time_);
-      return check_invariants(before_next, time_, happening_times_[next_]);
-    } catch (const EvaluationError& error) {
-      Violation v;
-      v.kind = Violation::Kind::UndefinedValue;
-      v.time = time_;
-      v.condition = explain(error);
-      return v;
-    }
+  if (next_ < happenings_.size() && !running_.empty()) check_running();
+}
+
+void HappeningExecutor::check_running() {
+  try {
+    if (check_invariants(state_, time_, happening_times_[next_]) && !report_all_) return;
+    if (rates_.empty()) return;
+    // Change is linear between happenings: the ends of the interval are
+    // its extremes, so the state just before the next happening is the
+    // other point an invariant must hold at.
+    ExplicitState before_next = state_;
+    advance(before_next, happening_times_[next_] - time_);
+    check_invariants(before_next, time_, happening_times_[next_]);
+  } catch (const EvaluationError& error) {
+    Violation v;
+    v.kind = Violation::Kind::UndefinedValue;
+    v.time = time_;
+    v.condition = explain(error);
+    record(std::move(v));
   }
-  return std::nullopt;
 }
 
 ValidationResult HappeningExecutor::run(const std::vector<ScheduledStep>& steps, std::size_t plan_steps) {
@@ -536,27 +411,54 @@ std::optional<Violation> HappeningExecutor::finish_trajectory(ValidationResult& 
   return std::nullopt;
 }
 
-ValidationResult HappeningExecutor::finish_run(std::size_t plan_steps) {
-  ValidationResult result;
-  result.happenings = happenings_.size();
-  while (!done()) {
-    if (auto v = step()) {
-      result.violation = std::move(v);
-      return result;
+std::vector<Violation> HappeningExecutor::unmet_goals() const {
+  using P = Unsatisfied::Part;
+  const ConditionSet& goal = task_.goal;
+  const EvaluationContext context{};
+  std::vector<Unsatisfied> failed;
+  if (!report_all_ || goal.never) {
+    if (auto first = first_unsatisfied(goal, state_, context, numeric_slack_)) failed.push_back(*first);
+  } else {
+    for (std::size_t i = 0; i < goal.positive.size(); ++i) {
+      if (!state_.fact(goal.positive[i])) failed.push_back({P::Positive, i});
+    }
+    for (std::size_t i = 0; i < goal.negative.size(); ++i) {
+      if (state_.fact(goal.negative[i])) failed.push_back({P::Negative, i});
+    }
+    for (std::size_t i = 0; i < goal.numeric.size(); ++i) {
+      if (!holds(goal.numeric[i], state_, context, numeric_slack_)) failed.push_back({P::Numeric, i});
+    }
+    for (std::size_t i = 0; i < goal.complex.size(); ++i) {
+      if (!holds(goal.complex[i], state_, context, numeric_slack_)) failed.push_back({P::Complex, i});
     }
   }
-  if (auto failed = first_unsatisfied(task_.goal, state_, EvaluationContext{}, numeric_slack_)) {
+  std::vector<Violation> violations;
+  for (const Unsatisfied& where : failed) {
     Violation v;
     v.kind = Violation::Kind::GoalNotReached;
     v.time = time_;
-    v.condition = describe(task_, task_.goal, *failed);
-    result.violation = v;
-    return result;
+    v.condition = describe(task_, goal, where);
+    violations.push_back(std::move(v));
   }
-  if (auto v = finish_trajectory(result)) {
-    result.violation = std::move(v);
+  return violations;
+}
+
+ValidationResult HappeningExecutor::finish_run(std::size_t plan_steps) {
+  ValidationResult result;
+  result.happenings = happenings_.size();
+  auto failed = [&result]() -> ValidationResult& {
+    result.violation = result.violations.front();
     return result;
+  };
+  while (!done()) {
+    step();
+    result.violations.insert(result.violations.end(), step_violations_.begin(), step_violations_.end());
+    if (!report_all_ && !result.violations.empty()) return failed();
   }
+  for (Violation& v : unmet_goals()) result.violations.push_back(std::move(v));
+  if (!report_all_ && !result.violations.empty()) return failed();
+  if (auto v = finish_trajectory(result)) result.violations.push_back(std::move(*v));
+  if (!result.violations.empty()) return failed();
   // VAL's value: the metric after the last action happening; (total-time)
   // is its time, or the step count when the domain is not temporal.
   const double steps_and_literals = static_cast<double>(plan_steps + task_.timed_literals.size());
@@ -576,8 +478,8 @@ ValidationResult HappeningExecutor::finish_run(std::size_t plan_steps) {
       v.kind = Violation::Kind::UndefinedValue;
       v.action = "the metric";
       v.condition = explain(error);
-      result.violation = v;
-      return result;
+      result.violations.push_back(v);
+      return failed();
     }
     result.value = *result.metric;
   } else {

@@ -1,6 +1,8 @@
 // Executes a scheduled plan happening by happening, with VAL's semantics
 // (see validator.h). `step()` advances one happening, so a caller can watch
 // the state between happenings; `run()` goes to the end and judges the goal.
+// With ValidatorOptions::report_all it goes on after a violation as
+// validator.h describes; an observer sees each happening as it is executed.
 #pragma once
 
 #include <cstddef>
@@ -59,7 +61,12 @@ class HappeningExecutor {
   void load(const std::vector<ScheduledStep>& steps);
   void load(const std::vector<ScheduledStep>& steps, const ExecutionStart& start);
   bool done() const { return next_ >= happenings_.size(); }
+  // The first violation at the next happening, if any; with report_all,
+  // step_violations() holds every one found there.
   std::optional<Violation> step();
+  const std::vector<Violation>& step_violations() const { return step_violations_; }
+  // Called after each happening that step() or run() executes.
+  void set_observer(HappeningObserver observer) { observer_ = std::move(observer); }
   double time() const { return time_; }
   std::size_t happenings() const { return happenings_.size(); }
   const ExplicitState& state() const { return state_; }
@@ -94,7 +101,17 @@ class HappeningExecutor {
   };
 
   ValidationResult finish_run(std::size_t plan_steps);
-  std::optional<Violation> execute_happening();
+  // Executes the next happening; its violations go to step_violations_.
+  void execute_happening();
+  // Conditions, mutex, effects of one happening's members, at time_.
+  void execute_members(const std::vector<Event>& events);
+  // The invariants of the actions running after the happening just run.
+  void check_running();
+  // Records a violation; true when validation must stop there.
+  bool record(std::optional<Violation> v);
+  // Every goal condition unsatisfied in the final state (one with
+  // report_all off), as GoalNotReached violations.
+  std::vector<Violation> unmet_goals() const;
   // PDDL 3 preferences of an action's condition at `time`: each failing
   // instance counts one violation (over all: once per occurrence).
   void count_preferences(const Event& e, pddl::TimeSpecifier time, const ExplicitState& state);
@@ -103,7 +120,9 @@ class HappeningExecutor {
   std::optional<Violation> check_conditions(const Event& e);
   std::optional<Violation> check_mutex(const std::vector<Event>& events);
   std::optional<Violation> apply(const std::vector<Event>& events);
-  std::optional<Violation> check_invariants(const ExplicitState& state, double at, double until);
+  // Every running action whose invariant fails in `state` (the first only,
+  // without report_all) goes to step_violations_; true when one did.
+  bool check_invariants(const ExplicitState& state, double at, double until);
   // Continuous change (PDDL 2.1 level 4): the rates an action runs with,
   // fixed in the state where it starts; `advance` moves the state along them.
   void start_rates(std::size_t scheduled, const ExplicitState& state);
@@ -121,6 +140,9 @@ class HappeningExecutor {
   double epsilon_;
   bool val_total_time_;
   double numeric_slack_;
+  bool report_all_;
+  HappeningObserver observer_;
+  std::vector<Violation> step_violations_;
   // The supports of derived facts, found as conditions on them are met.
   mutable std::unique_ptr<DerivedSupport> derived_;
   std::vector<ScheduledStep> steps_;

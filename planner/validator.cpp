@@ -127,13 +127,16 @@ std::optional<std::size_t> PlanValidator::instantiate_step(const PlanStep& step,
   return world_->actions.size() - 1;
 }
 
-ValidationResult PlanValidator::validate(const Plan& plan) {
+ValidationResult PlanValidator::validate(const Plan& plan) { return validate(plan, HappeningObserver{}); }
+
+ValidationResult PlanValidator::validate(const Plan& plan, const HappeningObserver& observer) {
   ValidationResult result;
   if (!world_->lifted->unsupported.empty()) {
     Violation v;
     v.kind = Violation::Kind::Unsupported;
     v.condition = world_->lifted->unsupported.front();
     result.violation = v;
+    result.violations.push_back(v);
     return result;
   }
   std::vector<ScheduledStep> steps;
@@ -143,13 +146,20 @@ ValidationResult PlanValidator::validate(const Plan& plan) {
     Violation error;
     std::optional<std::size_t> action = instantiate_step(step, i, error);
     if (!action) {
-      result.violation = error;
-      return result;
+      result.violations.push_back(error);
+      if (!options_.report_all) break;
+      continue;
     }
     const double start = step.time ? *step.time : (untimed_clock += 1.0);
     steps.push_back({*action, i, step.line, start, step.duration.value_or(0.0), step_name(step)});
   }
-  return HappeningExecutor(*world_, options_).run(steps, plan.steps.size());
+  if (!result.violations.empty()) {
+    result.violation = result.violations.front();
+    return result;
+  }
+  HappeningExecutor executor(*world_, options_);
+  if (observer) executor.set_observer(observer);
+  return executor.run(steps, plan.steps.size());
 }
 
 }  // namespace alplan

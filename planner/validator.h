@@ -14,6 +14,23 @@
 //   happening, (total-time) being its time — or, without :durative-actions,
 //   the number of steps and timed literals, as VAL counts it.
 // The first violation stops validation and is returned as a typed record.
+//
+// With ValidatorOptions::report_all, validation goes on after a violation
+// and lists every one it finds (ValidationResult::violations, the first
+// being the one it would have stopped at):
+// - steps that name no action, an unknown object, a wrong type or arity, or
+//   lack a duration are all listed, and then the plan is not executed (it
+//   cannot be, as written);
+// - in a happening, every member's conditions are checked (per member and
+//   point, the first condition that fails), then the mutex rule (the
+//   happening's first clash), and the effects are applied as if all held;
+//   a happening whose effects read an undefined value changes nothing;
+// - the invariants of every running action are checked after each
+//   happening (one violation per action and interval), trajectory
+//   constraints after each state, and every unmet goal condition is listed.
+// Later violations may be consequences of earlier ones (an action applied
+// without its precondition leaves a state the plan's author never meant),
+// as VAL's repair advice warns: fix the first and validate again.
 #pragma once
 
 #include <map>
@@ -36,6 +53,8 @@ class PlanValidator {
   explicit PlanValidator(std::shared_ptr<const NormalizedTask> task, ValidatorOptions options = {});
 
   ValidationResult validate(const Plan& plan);
+  // The same, with `observer` called after each happening (a state trace).
+  ValidationResult validate(const Plan& plan, const HappeningObserver& observer);
   // The task as the validator grounds it (open: it grows with the plans).
   const GroundTask& world() const { return *world_; }
   // A snapshot of it, with every static condition kept (the planner's task

@@ -8,7 +8,7 @@ expect_run(0 "metric: minimize (total-time)" ${ALPLAN} parse ${zeno}/domain.pddl
 expect_run(0 "\"durative_actions\": 5" ${ALPLAN} parse --json ${zeno}/domain.pddl ${zeno}/instances/instance-1.pddl)
 expect_run(0 "(:durative-action fly" ${ALPLAN} parse --print ${zeno}/domain.pddl)
 expect_run(2 "as_printed.pddl:82:44: error: expected :parameters" ${ALPLAN} parse ${DATA}/paper_fig2/as_printed.pddl)
-expect_run(2 "no-such-file.pddl:0:0: error: cannot open the file" ${ALPLAN} parse no-such-file.pddl)
+expect_run(2 "no-such-file.pddl: error: cannot open the file: No such file or directory" ${ALPLAN} parse no-such-file.pddl)
 expect_run(2 "error: expected a problem definition, found 'domain'" ${ALPLAN} parse ${zeno}/domain.pddl ${zeno}/domain.pddl)
 expect_run(2 "" ${ALPLAN} parse)
 expect_run(2 "" ${ALPLAN} parse --no-such-flag ${zeno}/domain.pddl)

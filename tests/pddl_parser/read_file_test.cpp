@@ -49,8 +49,19 @@ TEST_CASE("read_file names a file it cannot open") {
   CHECK_FALSE(alplan::pddl::read_file("/nonexistent/alplan/domain.pddl", read, diagnostics));
   REQUIRE(diagnostics.size() == 1);
   CHECK(diagnostics[0].file == "/nonexistent/alplan/domain.pddl");
-  CHECK(diagnostics[0].message == "cannot open the file");
+  CHECK(diagnostics[0].message == "cannot open the file: No such file or directory");
+  // No place in the file: no "0:0" for a reader to look for.
+  CHECK(diagnostics[0].to_string() ==
+        "/nonexistent/alplan/domain.pddl: error: cannot open the file: No such file or directory");
   CHECK(read == "untouched");
+}
+
+TEST_CASE("read_file says a directory is one") {
+  std::string read;
+  std::vector<alplan::pddl::Diagnostic> diagnostics;
+  CHECK_FALSE(alplan::pddl::read_file(std::filesystem::temp_directory_path().string(), read, diagnostics));
+  REQUIRE(diagnostics.size() == 1);
+  CHECK(diagnostics[0].message == "cannot open the file: it is a directory");
 }
 
 // Copying through `out << in.rdbuf()` swallowed the bad_alloc and returned a

@@ -2,6 +2,7 @@
 // required concurrency and derived predicates.
 #include <catch2/catch.hpp>
 
+#include "planner/validation_trace.h"
 #include "planner/validator.h"
 #include "tests/support/task_loader.h"
 
@@ -326,4 +327,75 @@ TEST_CASE("a conditional effect reading what its action deleted counts as a read
   require_violation(validator.validate(read_plan("0: (n)\n0: (m)\n", "p").plan), Violation::Kind::MutexViolation);
   require_violation(validator.validate(read_plan("0: (m)\n0: (n)\n", "p").plan), Violation::Kind::MutexViolation);
   CHECK(validator.validate(read_plan("0: (m)\n0.001: (n)\n", "p").plan).valid);
+}
+
+namespace {
+
+// Validates `plan_text` both ways: report_all must keep `valid` and the
+// first violation exactly as the default stops at them.
+ValidationResult check_all(const std::string& plan_text) {
+  ValidatorOptions all;
+  all.report_all = true;
+  const ValidationResult first = check(plan_text);
+  const ValidationResult every = check(plan_text, all);
+  CHECK(every.valid == first.valid);
+  CHECK(every.violations.empty() == every.valid);
+  CHECK(first.violations.size() == (first.valid ? 0U : 1U));
+  if (!first.valid) {
+    REQUIRE(every.violation);
+    CHECK(every.violation->message() == first.violation->message());
+    CHECK(every.violations.front().message() == first.violation->message());
+  }
+  return every;
+}
+
+}  // namespace
+
+TEST_CASE("report_all lists every violation after the first, which stays the default's") {
+  // The second move lacks its precondition (r1 is still travelling), the
+  // pick then finds no robot in the kitchen for its invariant, and the goal
+  // is not reached: the default stops at the first of these.
+  const ValidationResult r = check_all("0: (move r1 hall kitchen) [10]\n5: (move r1 hall kitchen) [10]\n");
+  REQUIRE(r.violations.size() >= 2);
+  CHECK(r.violations[0].kind == Violation::Kind::UnsatisfiedPrecondition);
+  CHECK(r.violations[0].time == 5);
+  CHECK(r.violations.back().kind == Violation::Kind::GoalNotReached);
+  CHECK(r.violations.back().condition == "(holding r1 c1)");
+}
+
+TEST_CASE("report_all lists every bad step and does not execute the plan") {
+  const ValidationResult r = check_all("0: (fly r1 hall kitchen) [10]\n1: (move r1 hall attic) [10]\n"
+                                       "2: (move r1 hall kitchen) [10]\n");
+  REQUIRE(r.violations.size() == 2);
+  CHECK(r.violations[0].kind == Violation::Kind::UnknownAction);
+  CHECK(r.violations[1].kind == Violation::Kind::UnknownObject);
+  CHECK(r.violations[1].line == 2);
+}
+
+TEST_CASE("report_all keeps valid plans valid and each violation kind first") {
+  CHECK(check_all("0.000: (move r1 hall kitchen) [10.000]\n10.001: (pick r1 c1 kitchen) [2.000]\n").valid);
+  check_all("0: (move r1 hall kitchen) [12.5]\n20: (pick r1 c1 kitchen) [2]\n");
+  check_all("0: (move r1 hall kitchen) [10]\n18.5: (pick r1 c1 kitchen) [2]\n");
+  check_all("0: (move r1 hall kitchen) [10]\n0.00005: (move r1 hall kitchen) [10]\n");
+  check_all("0: (move r1 hall kitchen) [10]\n10.001: (move r1 kitchen hall) [10]\n"
+            "20.002: (move r1 hall kitchen) [10]\n30.003: (move r1 kitchen hall) [10]\n"
+            "40.004: (move r1 hall kitchen) [10]\n");
+}
+
+TEST_CASE("an observer sees every happening with its members and the states around it") {
+  const test::LoadedTask task = test::load_task_text(kDomain, kProblem);
+  PlanValidator validator(task.normalized);
+  const PlanReadResult plan = read_plan("0: (move r1 hall kitchen) [10]\n10.001: (pick r1 c1 kitchen) [2]\n", "plan");
+  REQUIRE(plan.ok());
+  std::vector<std::string> seen;
+  const ValidationResult r = validator.validate(plan.plan, [&](const HappeningRecord& h) {
+    REQUIRE(h.before);
+    REQUIRE(h.after);
+    seen.push_back(format_happening(validator.world(), h));
+  });
+  REQUIRE(r.valid);
+  REQUIRE(seen.size() == r.happenings);
+  CHECK(seen[0] == "Happening 1, time 0:\n  (move r1 hall kitchen) - start\n  deletes (at r1 hall)\n");
+  CHECK(seen[1] == "Happening 2, time 10:\n  (move r1 hall kitchen) - end\n  adds (at r1 kitchen)\n"
+                   "  (moves): 0 -> 1\n  (battery r1): 20 -> 15\n");
 }
