@@ -6,6 +6,7 @@ under the build_temp folder. Install with:
     pip install --no-build-isolation .
 """
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -14,6 +15,16 @@ from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
 
 ROOT = os.path.dirname(os.path.abspath(__file__))
+
+
+def project_version():
+    """The version in CMakeLists.txt's project(): one place for the package,
+    alplan.__version__ and `alplan --version`."""
+    with open(os.path.join(ROOT, "CMakeLists.txt"), encoding="utf-8") as cmake:
+        match = re.search(r"project\(alplan VERSION ([0-9.]+)", cmake.read())
+    if not match:
+        raise RuntimeError("no project(alplan VERSION ...) in CMakeLists.txt")
+    return match.group(1)
 
 
 class CMakeExtension(Extension):
@@ -42,4 +53,4 @@ class CMakeBuild(build_ext):
 
 
 # packages=[]: the folders here are C++ libraries, not Python packages.
-setup(packages=[], ext_modules=[CMakeExtension("alplan")], cmdclass={"build_ext": CMakeBuild})
+setup(version=project_version(), packages=[], ext_modules=[CMakeExtension("alplan")], cmdclass={"build_ext": CMakeBuild})

@@ -54,6 +54,7 @@ struct BenchPlannersOptions {
   std::string search = "ehc";
   std::string order;  // "": the planner's default
   std::vector<std::string> plan_args;
+  std::vector<std::string> planners;  // NAME=COMMAND, other planners beside ours
   SlurmFlags slurm;
   bench::TestSetRunOptions test_set;
 };
@@ -85,6 +86,12 @@ int run_planners(const BenchPlannersOptions& options) {
   o.order = options.order;
   o.plan_args = options.plan_args;
   o.test_set = options.test_set;
+  try {
+    for (const std::string& spec : options.planners) o.external.push_back(bench::parse_external_planner(spec));
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitInputError;
+  }
   std::string error;
   if (!array_run(options.slurm, options.out, o.array, error)) {
     std::cerr << "error: " << error << "\n";
@@ -118,7 +125,7 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   g->callback([grounding, &exit_code] { exit_code = run_grounding(*grounding); });
 
   auto planners = std::make_shared<BenchPlannersOptions>();
-  CLI::App* p = bench->add_subcommand("planners", "Run our planner on a suite, validate, compare with OPTIC and POPF");
+  CLI::App* p = bench->add_subcommand("planners", "Run our planner (and others by --planner) on a suite, validate, compare with a baseline");
   p->add_option("--suite", planners->suite, "Suite folder, list file, or baseline CSV")->required();
   p->add_option("--out", planners->out, "Folder for runs.csv, runs.json, summary.md and the plans");
   p->add_option("--baseline", planners->baseline,
@@ -141,6 +148,10 @@ void add_bench_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"metric", "steps"}));
   p->add_option("--plan-arg", planners->plan_args,
                 "A flag for every alplan plan run, as given (repeat it; e.g. --plan-arg=--deferred)")
+      ->allow_extra_args(false);
+  p->add_option("--planner", planners->planners,
+                "Another planner beside ours, as NAME='COMMAND {domain} {problem} {plan}' (repeat it): run under "
+                "/bin/sh with the same limits, its plan written to {plan} and judged by our validator")
       ->allow_extra_args(false);
   add_slurm_options(p, planners->slurm);
   add_test_set_flags(p, planners->test_set);

@@ -21,6 +21,7 @@
 #include "cli/test_set_flags.h"
 #include "home/home_bench.h"
 #include "planner/progress_meter.h"
+#include "repair/repair_strategy.h"
 
 namespace alplan::cli {
 namespace {
@@ -89,7 +90,7 @@ void add_bench_home_command(CLI::App* bench, int& exit_code) {
   cmd->add_option("--hours", o->hours, "Simulated hours")->check(CLI::Range(0.01, 168.0));
   cmd->add_option("--seed", s.seed, "Seed of the home, the seniors and the failures");
   add_home_run_options(*cmd, s);
-  cmd->add_option("--strategy", s.strategy, "Repair strategy");
+  cmd->add_option("--strategy", s.strategy, "Repair strategy: " + repair::strategy_list());
   cmd->add_option("--out", o->out, "Write bench-home.json here");
   add_test_set_flags(cmd, o->test_set);
   cmd->add_option("--unplanned-dir", s.unplanned_dir, "Write each problem the planner found no plan for here (PDDL)");

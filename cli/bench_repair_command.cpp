@@ -271,7 +271,7 @@ void add_bench_repair_command(CLI::App* bench, int& exit_code) {
   r->add_option("--bootstrap", o->bench.bootstrap.resamples, "Bootstrap resamples for the confidence intervals")
       ->check(CLI::PositiveNumber);
   r->add_flag("!--no-paper-home", o->bench.paper_home, "Skip timing the strategies on the paper's three scenarios");
-  r->add_option("--out", o->bench.out_dir, "Folder for runs.csv, runs.json, summary.md, summary.json, plots/");
+  r->add_option("--out", o->bench.out_dir, "Folder for runs.csv, runs.json, summary.md, summary.json, plots/ (required)");
   r->add_option("--summarize", o->summarize,
                 "Summarise a run folder again from its full/, iot/, camera/ runs.json: each model's summary.md "
                 "tables, summary.json and plots/, and observation.md where there are two models or more; runs "

@@ -166,7 +166,7 @@ void add_bench_stability_command(CLI::App* bench, int& exit_code) {
   auto o = std::make_shared<BenchStabilityOptions>();
   CLI::App* s = bench->add_subcommand(
       "stability", "Replanning against plan repair on IPC temporal domains, perturbed while the plan runs");
-  s->add_option("--ipc", o->bench.ipc_dir, "The IPC folder (shared/benchmarks/ipc)");
+  s->add_option("--ipc", o->bench.ipc_dir, "The IPC folder (shared/benchmarks/ipc; required)");
   s->add_option("--domains", o->domains,
                 "Comma-separated: driverlog, rovers, depots, satellite, zenotravel (IPC 2002 temporal), or folders "
                 "under --ipc");
@@ -190,7 +190,7 @@ void add_bench_stability_command(CLI::App* bench, int& exit_code) {
               "A* on LM-cut (benchmarks/harness/stable_cross_check.h)");
   s->add_option("--cross-check-seconds", o->bench.cross_check_seconds, "Seconds per cross-check's search")
       ->check(CLI::PositiveNumber);
-  s->add_option("--out", o->out, "Folder for runs.csv, runs.json, summary.md");
+  s->add_option("--out", o->out, "Folder for runs.csv, runs.json, summary.md (required)");
   add_test_set_flags(s, o->test_set);
   s->add_option("--summarize", o->summarize, "Write a run folder's summary.md again from its runs.json; runs nothing");
   s->callback([o, &exit_code] { exit_code = run_stability(*o); });

@@ -12,6 +12,7 @@
 #include "cli/perceive_common.h"
 #include "domains/mission_run.h"
 #include "perception/common/emotion.h"
+#include "repair/repair_strategy.h"
 
 namespace alplan::cli {
 namespace {
@@ -62,7 +63,7 @@ void add_deliberation_options(CLI::App& cmd, DeliberationSettings& s) {
       ->check(CLI::Range(0.0, 3600.0));
   cmd.add_option("--camera", s.camera, "Folder with a subfolder of images per location: what the robot's camera sees");
   cmd.add_option("--unavailable", s.unavailable, "OBJECT@TIME: the object becomes unavailable then (repeatable)");
-  cmd.add_option("--strategy", s.strategy, "Repair strategy: replan, substitute, suggest, patch, adapt, switch");
+  cmd.add_option("--strategy", s.strategy, "Repair strategy: " + repair::strategy_list());
 }
 
 namespace {

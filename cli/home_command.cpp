@@ -19,6 +19,7 @@
 #include "home/event_log.h"
 #include "home/home_run.h"
 #include "planner/progress_meter.h"
+#include "repair/repair_strategy.h"
 
 namespace alplan::cli {
 namespace {
@@ -195,7 +196,7 @@ void add_home_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--robots", s.generate_robots, "Robots of the generated home")->check(CLI::Range(1, 100));
   cmd->add_option("--rooms", s.generate_rooms, "Rooms of the generated home")->check(CLI::Range(4, 1000));
   cmd->add_option("--objects", s.generate_objects, "Portable objects of the generated home")->check(CLI::Range(1, 10000));
-  cmd->add_option("--strategy", s.strategy, "Repair strategy: replan, substitute, suggest, patch, adapt, switch");
+  cmd->add_option("--strategy", s.strategy, "Repair strategy: " + repair::strategy_list());
   cmd->add_option("--observe", s.observe, "What the robots see: full, iot, camera (repair/observation.h)");
   cmd->add_option("--until", s.until, "Simulated seconds to run (--live: wall seconds; default until SIGINT/SIGTERM)")->check(CLI::Range(0.0, 7.0 * 24 * 3600));
   cmd->add_option("--seed", s.seed, "Seed of the seniors, the failures and a generated home");

@@ -13,6 +13,8 @@ int main(int argc, char** argv) {
   if (alplan::cli::runs_in_perception_module(argc, argv)) return alplan::cli::run_perception_command(argc, argv);
   CLI::App app{"alplan: PDDL 2.2 temporal planning toolkit for assisted-living deliberation"};
   app.require_subcommand(1);
+  // Every option's help shows its default (subcommands inherit this).
+  app.option_defaults()->always_capture_default();
   app.set_help_all_flag("--help-all", "Print help for every subcommand");
   // Papers cite versions: the project's and the commit the binary was built from.
   const alplan::bench::BuildInfo build = alplan::bench::build_info();

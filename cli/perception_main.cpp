@@ -18,6 +18,8 @@ extern "C" __attribute__((visibility("default"))) int alplan_perception_main(int
   cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_ERROR);
   CLI::App app{"alplan: PDDL 2.2 temporal planning toolkit for assisted-living deliberation"};
   app.require_subcommand(1);
+  // Every option's help shows its default (subcommands inherit this).
+  app.option_defaults()->always_capture_default();
   int exit_code = alplan::cli::kExitOk;
   alplan::cli::add_perceive_command(app, exit_code);
   alplan::cli::add_deliberate_command(app, exit_code);

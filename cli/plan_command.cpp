@@ -16,9 +16,11 @@
 #include <memory>
 #include <new>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include "cli/commands.h"
+#include "cli/plan_output.h"
 #include "cli/task_files.h"
 #include "pddl_parser/writer.h"
 #include "planner/diverse_plans.h"
@@ -54,31 +56,6 @@ struct PlanOptions {
   std::size_t diverse = 0;
   std::size_t min_distance = 2;
 };
-
-// Times are the printed plan's (three decimals on the 0.001 grid), as
-// numbers; `cost` is the sum of action costs where the domain has them (the
-// metric may weigh it with the makespan), VAL's value otherwise; `metric`
-// and `value` are the metric's and VAL's values.
-nlohmann::json plan_json(const FoundPlan& p, std::size_t index) {
-  nlohmann::json steps = nlohmann::json::array();
-  for (const PlanStep& s : p.plan.steps) {
-    nlohmann::json step = {{"time", rounded_plan_time(*s.time)}, {"action", s.action}, {"args", s.args}};
-    if (s.duration) step["duration"] = rounded_plan_time(*s.duration);
-    steps.push_back(step);
-  }
-  const ValidationResult& v = p.validation;
-  return {{"index", index},
-          {"steps", steps},
-          {"makespan", rounded_plan_time(v.makespan)},
-          {"metric", v.metric ? nlohmann::json(*v.metric) : nlohmann::json()},
-          {"value", v.value},
-          {"cost", v.total_cost.value_or(v.value)},
-          {"total_cost", v.total_cost ? nlohmann::json(*v.total_cost) : nlohmann::json()},
-          {"preference_violations", v.preference_violations},
-          {"found_after_seconds", p.seconds},
-          {"search", p.engine},
-          {"text", p.text}};
-}
 
 // Ten significant digits: enough for times on the 0.001 grid, without the
 // binary noise of a sum (15.001000000000001).
@@ -116,24 +93,30 @@ void print_best(const PlannerResult& result, std::ostream& out) {
     for (const auto& [name, count] : v.preference_violations) out << " " << name << "=" << readable(count);
     out << "\n";
   }
-  out << "; best plan found after: " << readable(best.seconds) << " s by " << best.engine << "\n";
+  out << "; best plan found after: " << seconds_text(best.seconds) << " s by " << best.engine << "\n";
 }
 
 // A limit reached before the planner could report one itself (memory while
 // loading or grounding, time while grounding): the same status the planner
 // gives, on the same streams, and exit 11.
-int limit_reached(const PlanOptions& options, const std::string& message) {
+int limit_reached(const PlanOptions& options, const std::string& message, const char* limit) {
   if (options.json) {
-    const nlohmann::json j = {{"status", status_name(PlannerResult::Status::LimitReached)},
-                              {"message", message},
-                              {"best", nullptr},
-                              {"plans", nlohmann::json::array()}};
+    nlohmann::json j = outcome_json(status_name(PlannerResult::Status::LimitReached), message);
+    j["limit"] = limit;
     std::cout << j.dump(2) << "\n";
   } else {
     print_comment(std::cout, message);
     std::cout << "; status: " << status_name(PlannerResult::Status::LimitReached) << "\n";
   }
   return kExitLimit;
+}
+
+// Bad input (exit 2): the message on stderr, and with --json an object on
+// stdout too, so that a script reading stdout sees every outcome.
+int input_error(const PlanOptions& options, const std::string& message, const std::string& diagnostics) {
+  if (diagnostics.empty()) std::cerr << "error: " << message << "\n";
+  if (options.json) std::cout << input_error_json(message, diagnostics.empty() ? "error: " + message : diagnostics).dump(2) << "\n";
+  return kExitInputError;
 }
 
 // The configuration the options ask for: --alias, --search (a name or an
@@ -171,7 +154,7 @@ int plan_diverse(const std::shared_ptr<const GroundTask>& task, const PlannerOpt
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = 0; j < n; ++j) distances[i][j] = plan_action_distance(found.plans[i].plan, found.plans[j].plan);
   }
-  if (n > 0 && !options.out.empty()) std::ofstream(options.out) << found.plans.front().text;
+  if (n > 0 && !options.out.empty()) std::ofstream(options.out) << printed_plan_text(task.get(), found.plans.front());
   const std::string shortfall =
       n == options.diverse ? ""
                            : "found " + std::to_string(n) + " of " + std::to_string(options.diverse) + " plans at least " +
@@ -180,8 +163,9 @@ int plan_diverse(const std::shared_ptr<const GroundTask>& task, const PlannerOpt
                                                   : "(the budget ran out)");
   if (options.json) {
     nlohmann::json plans = nlohmann::json::array();
-    for (std::size_t i = 0; i < n; ++i) plans.push_back(plan_json(found.plans[i], i + 1));
-    const nlohmann::json j = {{"status", status_name(n > 0 ? PlannerResult::Status::Solved : found.first_status)},
+    for (std::size_t i = 0; i < n; ++i) plans.push_back(plan_json(task.get(), found.plans[i], i + 1));
+    const nlohmann::json j = {{"schema_version", kPlanJsonSchemaVersion},
+                              {"status", status_name(n > 0 ? PlannerResult::Status::Solved : found.first_status)},
                               {"message", n > 0 ? shortfall : found.message}, {"requested", options.diverse},
                               {"min_distance", options.min_distance}, {"plans", plans}, {"distances", distances},
                               {"planner_calls", found.planner_calls}, {"seconds", found.seconds}};
@@ -190,7 +174,7 @@ int plan_diverse(const std::shared_ptr<const GroundTask>& task, const PlannerOpt
     for (std::size_t i = 0; i < n; ++i) {
       const ValidationResult& v = found.plans[i].validation;
       std::cout << "; plan " << i + 1 << " of " << options.diverse << ": makespan " << readable(v.makespan)
-                << ", value " << readable(v.value) << "\n" << found.plans[i].text;
+                << ", value " << readable(v.value) << "\n" << printed_plan_text(task.get(), found.plans[i]);
     }
     if (n > 0) std::cout << "; distances (ground actions added + removed):\n";
     for (std::size_t i = 0; i < n; ++i) {
@@ -201,7 +185,7 @@ int plan_diverse(const std::shared_ptr<const GroundTask>& task, const PlannerOpt
     if (!shortfall.empty()) print_comment(std::cout, shortfall);
     if (n == 0) print_comment(std::cout, found.message);
     std::cout << "; status: " << status_name(n > 0 ? PlannerResult::Status::Solved : found.first_status) << "; "
-              << found.planner_calls << " searches, " << readable(found.seconds) << " s\n";
+              << found.planner_calls << " searches, " << seconds_text(found.seconds) << " s\n";
   }
   return n > 0 ? kExitOk : exit_code(found.first_status);
 }
@@ -213,8 +197,12 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
                std::shared_ptr<void>& search_memory) {
   const auto began = std::chrono::steady_clock::now();
   phase = "loading the files";
-  const auto files = load_task_files(options.domain, options.problem, std::cerr, {!options.quiet});
-  if (!files) return kExitInputError;
+  // With --json the diagnostics also go into the JSON on stdout.
+  std::ostringstream captured;
+  const auto files = load_task_files(options.domain, options.problem, options.json ? captured : std::cerr,
+                                     {!options.quiet});
+  if (options.json) std::cerr << captured.str();
+  if (!files) return input_error(options, "the input files have errors", captured.str());
   phase = "grounding";
   GroundingOptions grounding_options{{options.domain, options.problem, {}}, std::nullopt};
   if (std::isfinite(options.time_limit)) {
@@ -224,18 +212,16 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
   try {
     task = ground(*files->domain, *files->problem, grounding_options);
   } catch (const GroundingError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return kExitInputError;
+    return input_error(options, e.what(), "");
   }
   const double grounding = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
-  if (grounding >= options.time_limit) return limit_reached(options, "the time limit was reached while grounding");
+  if (grounding >= options.time_limit) return limit_reached(options, "the time limit was reached while grounding", "time");
   phase = "search";
   PlannerOptions planner_options;
   try {
     planner_options.search = search_configuration(options);
   } catch (const SearchConfigurationError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return kExitInputError;
+    return input_error(options, e.what(), "");
   }
   planner_options.prune_irrelevant = options.prune_irrelevant;
   planner_options.deorder = options.deorder;
@@ -252,30 +238,32 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
   if (options.diverse > 0) return plan_diverse(task, planner_options, options);
   auto on_plan = [&](const FoundPlan& p) {
     if (options.json) return;
-    std::cout << "; plan found after " << readable(p.seconds) << " s by " << p.engine << ", makespan "
-              << readable(p.validation.makespan) << ", value " << readable(p.validation.value) << "\n"
-              << p.text << std::flush;
+    const std::string text = printed_plan_text(task.get(), p);
+    const std::string length = text == p.text ? "makespan " + readable(p.validation.makespan)
+                                              : std::to_string(p.plan.steps.size()) + " steps";
+    std::cout << "; plan found after " << seconds_text(p.seconds) << " s by " << p.engine << ", " << length
+              << ", value " << readable(p.validation.value) << "\n"
+              << text << std::flush;
   };
   const PlannerResult result = Planner(task, planner_options).plan(on_plan);
   search_memory = result.search_memory;
   phase = "writing the result";
-  if (result.best() && !options.out.empty()) std::ofstream(options.out) << result.best()->text;
+  if (result.best() && !options.out.empty()) std::ofstream(options.out) << printed_plan_text(task.get(), *result.best());
   if (options.json) {
     nlohmann::json plans = nlohmann::json::array();
-    for (std::size_t i = 0; i < result.plans.size(); ++i) plans.push_back(plan_json(result.plans[i], i + 1));
+    for (std::size_t i = 0; i < result.plans.size(); ++i) plans.push_back(plan_json(task.get(), result.plans[i], i + 1));
     const SearchStatistics& s = result.statistics;
-    nlohmann::json j = {
-        {"status", status_name(result.status)},
-        {"message", result.message},
-        {"best", result.best() ? plan_json(*result.best(), result.plans.size()) : nlohmann::json()},
-        {"best_index", result.best() ? nlohmann::json(result.plans.size()) : nlohmann::json()},
-        {"plans", plans},
-        {"statistics",
-         {{"expanded", s.expanded}, {"evaluated", s.evaluated}, {"generated", s.generated},
-          {"duplicates", s.duplicates}, {"unschedulable", s.unschedulable}, {"dead_ends", s.dead_ends}}},
-        {"seconds",
-         {{"grounding", grounding}, {"setup", result.times.setup}, {"search", result.times.search},
-          {"validation", result.times.validation}}}};
+    nlohmann::json j = outcome_json(status_name(result.status), result.message);
+    if (!result.limit.empty()) j["limit"] = result.limit;
+    if (result.best()) {
+      j["best"] = plan_json(task.get(), *result.best(), result.plans.size());
+      j["best_index"] = result.plans.size();
+    }
+    j["plans"] = plans;
+    j["statistics"] = {{"expanded", s.expanded}, {"evaluated", s.evaluated}, {"generated", s.generated},
+                       {"duplicates", s.duplicates}, {"unschedulable", s.unschedulable}, {"dead_ends", s.dead_ends}};
+    j["seconds"] = {{"grounding", grounding}, {"setup", result.times.setup}, {"search", result.times.search},
+                    {"validation", result.times.validation}};
     std::cout << j.dump(2) << "\n";
   } else {
     if (planner_options.search.engine.kind == EngineSpec::Kind::Anytime && result.best()) print_best(result, std::cout);
@@ -284,7 +272,7 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
     if (result.status != PlannerResult::Status::Solved || !result.message.empty()) print_comment(std::cout, result.message);
     std::cout << "; status: " << status_name(result.status) << "; expanded " << result.statistics.expanded
               << ", evaluated " << result.statistics.evaluated << ", grounding "
-              << readable(grounding) << " s, search " << readable(result.times.search)
+              << seconds_text(grounding) << " s, search " << seconds_text(result.times.search)
               << " s\n";
   }
   if (result.status == PlannerResult::Status::InternalError || result.status == PlannerResult::Status::Unsupported) {
@@ -313,9 +301,9 @@ int run(const PlanOptions& options) {
     task.reset();
     search_memory.reset();
     std::cerr << "error: memory limit reached while " << phase << "\n";
-    code = limit_reached(options, std::string("the memory limit was reached while ") + phase);
+    code = limit_reached(options, std::string("the memory limit was reached while ") + phase, "memory");
   } catch (const GroundingTimeout& e) {
-    code = limit_reached(options, e.what());
+    code = limit_reached(options, e.what(), "time");
   }
   // The process ends here. Freeing a large grounded task piece by piece
   // takes a good part of a second (0.2 s for driver-log's 134,000 actions),

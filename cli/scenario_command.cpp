@@ -18,6 +18,7 @@
 #include "domains/paper_scenarios.h"
 #include "domains/pddl_files.h"
 #include "repair/type_ontology.h"
+#include "repair/repair_strategy.h"
 
 namespace alplan::cli {
 namespace {
@@ -104,7 +105,7 @@ void add_scenario_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<ScenarioCommandOptions>();
   CLI::App* cmd = app.add_subcommand("scenario", "Run one of the paper's scenarios end to end");
   cmd->add_option("SCENARIO", options->name, "paper-1, paper-2 or paper-3")->required();
-  cmd->add_option("--strategy", options->strategy, "Repair strategy: replan, substitute, suggest, patch, adapt, switch");
+  cmd->add_option("--strategy", options->strategy, "Repair strategy: " + repair::strategy_list());
   cmd->add_option("--domains-dir", options->dir, "Folder with domain.pddl, types.ttl and the scenario problems");
   cmd->add_option("--epsilon", options->epsilon, "Separation of dependent happenings (the paper's plans: 0.002)")
       ->check(CLI::PositiveNumber);

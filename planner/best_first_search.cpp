@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <queue>
+#include <sstream>
 #include <unordered_map>
 
 #include "planner/search_engine.h"
@@ -42,7 +43,9 @@ class BestFirstSearch : public SearchEngine {
     if (novelty_) traits += ", novelty";
     if (options_.complete) traits += ", complete";
     if (options_.weight == 0) return traits.empty() ? "gbfs" : "gbfs (" + traits.substr(2) + ")";
-    return "wastar (w=" + std::to_string(options_.weight) + (options_.metric ? ", metric" : "") + traits + ")";
+    std::ostringstream weight;  // 3, not 3.000000
+    weight << options_.weight;
+    return "wastar (w=" + weight.str() + (options_.metric ? ", metric" : "") + traits + ")";
   }
 
   SearchStatus step() override {

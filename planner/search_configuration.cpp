@@ -358,15 +358,6 @@ std::string format_number(double x) {
   return out.str();
 }
 
-std::string heuristic_text(const HeuristicSpec& h) {
-  if (h.kind == HeuristicSpec::Kind::Blind) return "blind";
-  if (h.kind == HeuristicSpec::Kind::LmCut) return "lmcut";
-  std::string options;
-  if (!h.helpful) options += ", helpful=false";
-  if (!h.repetitions) options += ", repetitions=false";
-  if (!h.balance) options += ", balance=false";
-  return options.empty() ? "trpg" : "trpg(" + options.substr(2) + ")";
-}
 
 std::string engine_text(const EngineSpec& e) {
   using K = EngineSpec::Kind;
@@ -421,6 +412,16 @@ std::string engine_text(const EngineSpec& e) {
 }
 
 }  // namespace
+
+std::string heuristic_text(const HeuristicSpec& h) {
+  if (h.kind == HeuristicSpec::Kind::Blind) return "blind";
+  if (h.kind == HeuristicSpec::Kind::LmCut) return "lmcut";
+  std::string options;
+  if (!h.helpful) options += ", helpful=false";
+  if (!h.repetitions) options += ", repetitions=false";
+  if (!h.balance) options += ", balance=false";
+  return options.empty() ? "trpg" : "trpg(" + options.substr(2) + ")";
+}
 
 std::string SearchConfiguration::to_string() const { return engine_text(engine); }
 

@@ -106,6 +106,8 @@ class SearchConfigurationError : public std::runtime_error {
 };
 
 SearchConfiguration parse_search_configuration(std::string_view expression);
+// The heuristic as the configuration language writes it: trpg, lmcut, ...
+std::string heuristic_text(const HeuristicSpec& heuristic);
 // The expression of a named configuration; throws for an unknown name.
 std::string alias_expression(std::string_view name);
 std::vector<std::string> alias_names();

@@ -56,6 +56,7 @@ void flatten(const EngineSpec& e, std::vector<Phase>& phases) {
 struct PhaseOutcome {
   SearchStatus status = SearchStatus::InProgress;  // InProgress: a limit or the budget
   bool budget_spent = false;
+  StoppingLimit limit = StoppingLimit::None;
   bool root_dead_end = false;
   std::optional<Solution> solution;
   std::string engine;
@@ -146,6 +147,7 @@ PhaseOutcome run_phase(const Phase& phase, const PipelineContext& context, const
     // Every step: a step cut short by the deadline has dropped children.
     if (passed(context.limits.deadline)) {
       stopped = true;
+      outcome.limit = StoppingLimit::Time;
       break;
     }
     if ((steps & 15) == 0) {
@@ -158,9 +160,14 @@ PhaseOutcome run_phase(const Phase& phase, const PipelineContext& context, const
       // A search stopped by a limit keeps its memory (freed when the
       // process ends), whichever limit it was.
       const std::size_t address_limit = context.limits.address_space_limit;
-      if (nodes > context.limits.node_limit ||
-          (address_limit && (steps & 255) == 0 && address_space_bytes() > address_limit)) {
+      if (nodes > context.limits.node_limit) {
         stopped = true;
+        outcome.limit = StoppingLimit::Nodes;
+        break;
+      }
+      if (address_limit && (steps & 255) == 0 && address_space_bytes() > address_limit) {
+        stopped = true;
+        outcome.limit = StoppingLimit::Memory;
         break;
       }
       if ((phase.expansions && expanded > phase.expansions) || since(began) > time_budget) {
@@ -174,7 +181,7 @@ PhaseOutcome run_phase(const Phase& phase, const PipelineContext& context, const
     if (status == SearchStatus::Solved) {
       outcome.status = SearchStatus::Solved;
       outcome.solution = engines[e]->solution();
-      outcome.engine = engines[e]->name();
+      outcome.engine = engines[e]->name() + " with " + heuristic_text(phase.engines[e].heuristic);
       break;
     }
     if (status == SearchStatus::Exhausted) {
@@ -536,6 +543,7 @@ PipelineOutcome run_pipeline(const SearchConfiguration& configuration, const Pip
     if (outcome.status == SearchStatus::InProgress) {
       result.memory = outcome.memory;
       result.stopped_at_limit = true;
+      result.limit = outcome.limit;
       return result;
     }
     if (outcome.status == SearchStatus::Exhausted) {

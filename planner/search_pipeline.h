@@ -47,8 +47,12 @@ struct PipelineContext {
   PipelineLimits limits;
 };
 
+// Which limit stopped a search, so that each is reported in its own words.
+enum class StoppingLimit { None, Time, Nodes, Memory };
+
 struct PipelineOutcome {
   bool stopped_at_limit = false;  // time, nodes or memory
+  StoppingLimit limit = StoppingLimit::None;
   std::string proof;              // why no plan exists; empty: no proof
   // The proof is an exhausted complete search, which holds for plans whose
   // dependent happenings are the search's epsilon apart (not the relaxation

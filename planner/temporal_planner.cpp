@@ -22,6 +22,12 @@ using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
+std::string readable_seconds(double seconds) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", seconds);
+  return buffer;
+}
+
 std::string plan_text(const Plan& plan) {
   std::string out;
   for (const PlanStep& step : plan.steps) {
@@ -578,7 +584,26 @@ void TemporalPlanner::finish(PlannerResult& result, const PipelineOutcome& outco
     result.message = "the search space is exhausted without a plan; this is not a proof: " + outcome.not_proven;
   } else {
     result.status = PlannerResult::Status::LimitReached;
-    result.message = "the time, node or memory limit was reached before a plan was found";
+    switch (outcome.limit) {
+      case StoppingLimit::Time:
+        result.limit = "time";
+        result.message = "the time limit was reached before a plan was found (" +
+                         readable_seconds(options_.time_limit) + " s for the search)";
+        break;
+      case StoppingLimit::Nodes:
+        result.limit = "nodes";
+        result.message = "the node limit was reached before a plan was found (" +
+                         std::to_string(options_.node_limit) + " search nodes)";
+        break;
+      case StoppingLimit::Memory:
+        result.limit = "memory";
+        result.message = "the memory limit was reached before a plan was found (the search stops at 90% of the "
+                         "address space allowed)";
+        break;
+      case StoppingLimit::None:
+        result.message = "the time, node or memory limit was reached before a plan was found";
+        break;
+    }
   }
 }
 

@@ -106,6 +106,9 @@ struct PlannerResult {
   SearchStatistics statistics;
   SearchPhaseTimes times;
   std::string message;
+  // With LimitReached: which limit, "time", "nodes" or "memory" (empty when
+  // a preference round or another caller could not tell).
+  std::string limit;
   // The search the time limit stopped, handed over instead of freed:
   // freeing a million nodes one by one takes seconds (6.9 s for 1.1 million
   // on pathways, where the limit was 40 s), which would overrun the limit.

@@ -217,6 +217,12 @@ std::vector<std::string> strategy_names() {
   return {"replan", "substitute", "suggest", "patch", "adapt", "stable", "switch"};
 }
 
+std::string strategy_list() {
+  std::string list;
+  for (const std::string& n : strategy_names()) list += (list.empty() ? "" : ", ") + n;
+  return list;
+}
+
 std::unique_ptr<RepairStrategy> make_strategy(const std::string& name, const StrategyOptions& options) {
   if (name == "replan") return std::make_unique<ReplanStrategy>(options);
   if (name == "substitute") return std::make_unique<SubstituteStrategy>(options);
@@ -225,9 +231,7 @@ std::unique_ptr<RepairStrategy> make_strategy(const std::string& name, const Str
   if (name == "adapt") return make_adapt_strategy(options);
   if (name == "stable") return make_stable_strategy(options);
   if (name == "switch") return make_switch_strategy(options);
-  std::string known;
-  for (const std::string& n : strategy_names()) known += (known.empty() ? "" : ", ") + n;
-  throw std::invalid_argument("unknown repair strategy '" + name + "' (known: " + known + ")");
+  throw std::invalid_argument("unknown repair strategy '" + name + "' (known: " + strategy_list() + ")");
 }
 
 }  // namespace alplan::repair

@@ -141,6 +141,8 @@ class RepairStrategy {
 // Throws std::invalid_argument for an unknown name.
 std::unique_ptr<RepairStrategy> make_strategy(const std::string& name, const StrategyOptions& options);
 std::vector<std::string> strategy_names();
+// The names as a list for help and messages: "replan, substitute, ...".
+std::string strategy_list();
 
 // Shared by the strategies: reformulate from the observed state and plan.
 // `excluded`: schemas whose actions the new plan may not use.

@@ -86,10 +86,22 @@ Baseline load_pddl3(const std::string& folder, std::ifstream& csv) {
 
 }  // namespace
 
+Baseline Baseline::none() {
+  Baseline baseline;
+  baseline.planners.clear();
+  baseline.titles.clear();
+  return baseline;
+}
+
 Baseline Baseline::load(const std::string& folder) {
-  if (std::ifstream pddl3(folder + "/optic_60s.csv"); pddl3) return load_pddl3(folder, pddl3);
+  if (std::ifstream pddl3(folder + "/optic_60s.csv"); pddl3) {
+    Baseline baseline = load_pddl3(folder, pddl3);
+    baseline.time_limit = 60.0;
+    return baseline;
+  }
   Baseline baseline;
   std::ifstream runs(folder + "/optic_popf_60s.csv");
+  if (runs) baseline.time_limit = 60.0;
   std::string line;
   std::getline(runs, line);  // planner,domain_file,problem_file,status,wall_s,max_rss_kb,makespan,n_actions,val_status,val_value
   while (std::getline(runs, line)) {

@@ -31,6 +31,9 @@ struct Baseline {
   std::map<std::string, double> best;                                 // problem -> best reference value
   // Problems whose metric is maximised (a larger value is better).
   std::map<std::string, bool> maximize;
+  // The time limit of the reference runs in seconds (0: unknown): both
+  // baselines in shared/benchmarks were run at 60 s (their READMEs).
+  double time_limit = 0.0;
 
   bool maximized(const std::string& problem) const {
     const auto it = maximize.find(problem);
@@ -41,6 +44,9 @@ struct Baseline {
 
   // Empty when the folder has no baseline files.
   static Baseline load(const std::string& baseline_folder);
+  // No reference planner at all (what `bench planners` compares with when
+  // given no --baseline): no columns for planners that did not run.
+  static Baseline none();
 };
 
 // "ipc/ipc-YYYY/..." or "pddl3/ipc-YYYY/..." from any path that contains

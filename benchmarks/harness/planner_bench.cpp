@@ -2,7 +2,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +12,7 @@
 #include <optional>
 #include <mutex>
 #include <ostream>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -32,9 +35,29 @@ struct Run {
   double makespan = 0;
   double value = 0;
   std::string message;
+  std::string plan_file;  // where our plan went (relative to the results folder when there is one)
+  std::map<std::string, ExternalRun> external;  // the other planners' runs, by name
 };
 
-Run run_one(const SuiteProblem& p, const PlannerBenchOptions& options, const std::string& plan_file) {
+// plans/N.plan for ours, plans/N.NAME.plan for another planner.
+std::string plan_path(const std::string& dir, std::size_t index, const std::string& planner = "") {
+  return dir + "/" + std::to_string(index) + (planner.empty() ? "" : "." + planner) + ".plan";
+}
+
+Run run_ours(const SuiteProblem& p, const PlannerBenchOptions& options, const std::string& plan_file);
+
+// Ours, then each other planner, on problem `index` of the suite.
+Run run_one(const SuiteProblem& p, const PlannerBenchOptions& options, const std::string& dir, std::size_t index) {
+  Run run = run_ours(p, options, plan_path(dir, index));
+  run.plan_file = "plans/" + std::to_string(index) + ".plan";
+  for (const ExternalPlanner& planner : options.external) {
+    run.external[planner.name] =
+        run_external_planner(planner, p, plan_path(dir, index, planner.name), options.limits, options.alplan);
+  }
+  return run;
+}
+
+Run run_ours(const SuiteProblem& p, const PlannerBenchOptions& options, const std::string& plan_file) {
   Run run;
   run.problem = p;
   std::vector<std::string> argv{options.alplan, "plan", "--json", "-q", "--search", options.search,
@@ -69,11 +92,19 @@ Run run_one(const SuiteProblem& p, const PlannerBenchOptions& options, const std
   return run;
 }
 
+nlohmann::json to_json(const ExternalRun& r) {
+  return {{"status", r.status}, {"seconds", r.seconds}, {"max_rss_kib", r.max_rss_kib}, {"value", r.value},
+          {"message", r.message}};
+}
+
 nlohmann::json to_json(const Run& run) {
+  nlohmann::json external = nlohmann::json::object();
+  for (const auto& [name, r] : run.external) external[name] = to_json(r);
   return {{"domain_file", run.problem.domain_file}, {"problem_file", run.problem.problem_file},
           {"domain", run.problem.domain}, {"number", run.problem.number}, {"status", run.status},
           {"seconds", run.seconds}, {"first_plan", run.first_plan}, {"max_rss_kib", run.max_rss_kib},
-          {"makespan", run.makespan}, {"value", run.value}, {"message", run.message}};
+          {"makespan", run.makespan}, {"value", run.value}, {"message", run.message},
+          {"plan_file", run.plan_file}, {"external", external}};
 }
 
 Run run_from_json(const nlohmann::json& j) {
@@ -89,6 +120,16 @@ Run run_from_json(const nlohmann::json& j) {
   run.makespan = j.at("makespan");
   run.value = j.at("value");
   run.message = j.at("message");
+  run.plan_file = j.value("plan_file", "");
+  for (const auto& [name, e] : j.value("external", nlohmann::json::object()).items()) {
+    ExternalRun r;
+    r.status = e.at("status");
+    r.seconds = e.at("seconds");
+    r.max_rss_kib = e.at("max_rss_kib");
+    r.value = e.at("value");
+    r.message = e.at("message");
+    run.external[name] = r;
+  }
   return run;
 }
 
@@ -102,6 +143,10 @@ std::string progress_line(const Run& run, std::size_t done, std::size_t total) {
   line << "[" << done << "/" << total << "] " << run.problem.domain << " "
        << std::filesystem::path(run.problem.problem_file).filename().string() << ": " << run.status;
   if (run.status == "solved") line << " value " << run.value << " in " << fixed(run.first_plan, 2) << " s";
+  for (const auto& [name, r] : run.external) {
+    line << "; " << name << ": " << r.status;
+    if (r.status == "solved") line << " value " << r.value;
+  }
   return line.str();
 }
 
@@ -115,7 +160,7 @@ std::vector<Run> run_locally(const std::vector<SuiteProblem>& suite, const Plann
   ProgressMeter meter(progress, static_cast<double>(suite.size()), "problems", options.progress_bar);
   auto worker = [&] {
     for (std::size_t i = next++; i < suite.size(); i = next++) {
-      runs[i] = run_one(suite[i], options, plans_dir(options) + "/" + std::to_string(i) + ".plan");
+      runs[i] = run_one(suite[i], options, plans_dir(options), i);
       const std::lock_guard<std::mutex> lock(print);
       ++done;
       meter.update(static_cast<double>(done), progress_line(runs[i], done, suite.size()));
@@ -157,8 +202,7 @@ void run_task(const std::vector<SuiteProblem>& suite, const PlannerBenchOptions&
   const auto [first, last] = task_items(options.array.task, n, m.slurm.batch);
   nlohmann::json runs = nlohmann::json::array();
   for (int i = first; i < last; ++i) {
-    const Run run = run_one(suite[static_cast<std::size_t>(i)], options,
-                            plans_dir(options) + "/" + std::to_string(i) + ".plan");
+    const Run run = run_one(suite[static_cast<std::size_t>(i)], options, plans_dir(options), static_cast<std::size_t>(i));
     progress << progress_line(run, static_cast<std::size_t>(i - first + 1), static_cast<std::size_t>(last - first))
              << "\n" << std::flush;
     runs.push_back(to_json(run));
@@ -339,14 +383,72 @@ Table metric_table(const std::map<std::string, MetricSums>& sums) {
   return table;
 }
 
+// Whether the problem's metric is maximised, read from its file (for a
+// problem no baseline knows).
+bool maximises(const std::string& problem_file) {
+  std::ifstream in(problem_file);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::size_t metric = text.find("(:metric");
+  return metric != std::string::npos && text.compare(text.find_first_not_of(" \t\r\n", metric + 8), 8, "maximize") == 0;
+}
+
+// The baseline's planners and the other planners run here, as one set of
+// references: each other planner a column, its valid plans competing for
+// the best value the quality score divides by.
+Baseline compared_planners(const std::vector<Run>& runs, const PlannerBenchOptions& options) {
+  Baseline compared = options.baseline.empty() ? Baseline::none() : Baseline::load(options.baseline);
+  for (const ExternalPlanner& planner : options.external) {
+    compared.planners.push_back(planner.name);
+    compared.titles.push_back(planner.name);
+  }
+  for (const Run& run : runs) {
+    const std::string key = problem_key(run.problem.problem_file);
+    if (!compared.maximize.count(key)) compared.maximize[key] = maximises(run.problem.problem_file);
+    for (const auto& [name, r] : run.external) {
+      ReferenceRun reference{r.status, r.status == "solved", r.seconds, r.value};
+      compared.runs[key][name] = reference;
+      if (!reference.valid) continue;
+      const auto best = compared.best.find(key);
+      if (best == compared.best.end() || compared.better(key, r.value, best->second)) compared.best[key] = r.value;
+    }
+  }
+  return compared;
+}
+
+// What a reader must know before trusting the table.
+std::vector<std::string> comparison_warnings(const Baseline& reference, const PlannerBenchOptions& options) {
+  std::vector<std::string> warnings;
+  if (reference.time_limit > 0 && std::abs(reference.time_limit - options.limits.seconds) > 1e-9) {
+    warnings.push_back("our runs have a " + fixed(options.limits.seconds, 0) + " s limit, the baseline's " +
+                       fixed(reference.time_limit, 0) + " s: coverage and time scores are not like for like");
+  }
+  if (options.jobs > 1) {
+    warnings.push_back(std::to_string(options.jobs) + " runs at once: timings are not comparable with one run at a time");
+  }
+  return warnings;
+}
+
 int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions& options, std::ostream& out) {
-  const Baseline baseline = options.baseline.empty() ? Baseline{} : Baseline::load(options.baseline);
+  const Baseline baseline = compared_planners(runs, options);
+  const std::set<std::string> externals = [&] {
+    std::set<std::string> names;
+    for (const ExternalPlanner& p : options.external) names.insert(p.name);
+    return names;
+  }();
+  const std::vector<std::string> warnings = comparison_warnings(baseline, options);
+  for (const std::string& w : warnings) out << "warning: " << w << "\n";
   // Scores per domain, ours and the references' on the same problems.
   std::map<std::string, std::map<std::string, Scores>> scores;
   std::map<std::string, MetricSums> sums;
   int invalid = 0;
   nlohmann::json rows = nlohmann::json::array();
-  Table runs_table({"domain", "problem", "status", "first plan s", "wall s", "peak MiB", "makespan", "value"});
+  std::vector<std::string> run_columns{"domain", "problem", "status", "first plan s", "wall s", "peak MiB", "makespan",
+                                      "value", "plan"};
+  for (const ExternalPlanner& p : options.external) {
+    run_columns.insert(run_columns.end(), {p.name + " status", p.name + " wall s", p.name + " value", p.name + " plan"});
+  }
+  Table runs_table(run_columns);
   for (const Run& run : runs) {
     const std::string key = problem_key(run.problem.problem_file);
     const auto refs = baseline.runs.find(key);
@@ -373,7 +475,12 @@ int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions
       ours.time += time_score(run.first_plan, options.limits.seconds);
     }
     if (in_baseline) {
+      // A baseline's planner counts where the baseline has the problem;
+      // another planner run here ran on every problem.
+      const bool in_reference = std::any_of(refs->second.begin(), refs->second.end(),
+                                             [&](const auto& entry) { return !externals.count(entry.first); });
       for (const std::string& planner : baseline.planners) {
+        if (!externals.count(planner) && !in_reference) continue;
         Scores& s = scores[run.problem.domain][planner];
         ++s.attempted;
         auto r = refs->second.find(planner);
@@ -392,15 +499,30 @@ int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions
         m.maximize = maximize;
       }
     }
-    runs_table.add({run.problem.domain, std::filesystem::path(run.problem.problem_file).filename().string(),
-                    run.status, run.status == "solved" ? fixed(run.first_plan, 2) : "", fixed(run.seconds, 2),
-                    fixed(static_cast<double>(run.max_rss_kib) / 1024.0, 0),
-                    run.status == "solved" ? fixed(run.makespan, 3) : "", run.status == "solved" ? fixed(run.value, 3) : ""});
+    std::vector<std::string> cells{run.problem.domain, std::filesystem::path(run.problem.problem_file).filename().string(),
+                                   run.status, run.status == "solved" ? fixed(run.first_plan, 2) : "", fixed(run.seconds, 2),
+                                   fixed(static_cast<double>(run.max_rss_kib) / 1024.0, 0),
+                                   run.status == "solved" ? fixed(run.makespan, 3) : "",
+                                   run.status == "solved" ? fixed(run.value, 3) : "", run.plan_file};
+    nlohmann::json external = nlohmann::json::object();
+    for (const ExternalPlanner& p : options.external) {
+      const auto r = run.external.find(p.name);
+      if (r == run.external.end()) {
+        cells.insert(cells.end(), {"", "", "", ""});
+        continue;
+      }
+      const std::string file = run.plan_file.empty() ? "" : run.plan_file.substr(0, run.plan_file.size() - 5) + "." + p.name + ".plan";
+      cells.insert(cells.end(), {r->second.status, fixed(r->second.seconds, 2),
+                                 r->second.status == "solved" ? fixed(r->second.value, 3) : "", file});
+      external[p.name] = to_json(r->second);
+      external[p.name]["plan_file"] = file;
+    }
+    runs_table.add(cells);
     rows.push_back({{"domain", run.problem.domain}, {"problem", key}, {"status", run.status},
                     {"first_plan_seconds", run.first_plan}, {"wall_seconds", run.seconds},
                     {"max_rss_kib", run.max_rss_kib}, {"makespan", run.makespan}, {"value", run.value},
                     {"reference", reference ? nlohmann::json(*reference) : nlohmann::json()},
-                    {"message", run.message}});
+                    {"message", run.message}, {"plan_file", run.plan_file}, {"external", external}});
   }
   const Table summary = summary_table(scores, baseline);
   summary.print(out);
@@ -418,6 +540,9 @@ int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions
   }
   const double overrun = worst ? std::max(0.0, worst->seconds - options.limits.seconds) : 0.0;
   if (worst) out << "worst overrun of the time limit: " << fixed(overrun, 2) << " s (" << problem_name(worst->problem) << ")\n";
+  out << "scores (IPC 2008-2014): quality = the best value any planner here reached / ours (ours / best where the "
+         "metric is maximised), time = 1 for a first plan within 1 s, else 1 - log(t) / log("
+      << fixed(options.limits.seconds, 0) << "), 0 unsolved; each summed over a domain's problems\n";
   if (!options.out_dir.empty()) {
     std::ofstream csv(options.out_dir + "/runs.csv");
     runs_table.write_csv(csv);
@@ -433,9 +558,11 @@ int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions
     json << nlohmann::json{{"time_limit", options.limits.seconds}, {"memory_mib", options.limits.memory_mib},
                            {"anytime", options.anytime}, {"search", options.search},
                            {"order", options.order}, {"plan_args", options.plan_args},
-                           {"worst_overrun_seconds", overrun}, {"runs", rows}}
+                           {"worst_overrun_seconds", overrun}, {"warnings", warnings}, {"runs", rows}}
                 .dump(2)
          << "\n";
+    out << "results: " << options.out_dir << "/ (summary.md, summary.csv, runs.csv, runs.json"
+        << (sums.empty() ? "" : ", metric.md") << ", plans/: runs.csv's plan columns name each problem's plan)\n";
   }
   return invalid;
 }

@@ -2,7 +2,8 @@
 // process per run under the time and memory limits (as the reference runs
 // in shared/benchmarks/baseline were made), validates every plan again with
 // `alplan validate`, and reports coverage, IPC quality score and IPC time
-// score per domain beside the reference planners of a baseline (baseline.h).
+// score per domain beside the reference planners of a baseline (baseline.h)
+// and other planners run by their command lines (external_planner.h).
 //
 // Scores (IPC 2008-2014 temporal tracks): quality = reference / ours, the
 // reference being the best value any compared planner reached (so at most
@@ -13,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "benchmarks/harness/external_planner.h"
 #include "benchmarks/harness/process_runner.h"
 #include "benchmarks/harness/slurm_array.h"
 #include "benchmarks/harness/test_set_ledger.h"
@@ -40,6 +42,9 @@ struct PlannerBenchOptions {
   // More flags for every `alplan plan` run, as given (an ablation:
   // "--no-resource-balance", "--deferred").
   std::vector<std::string> plan_args;
+  // Other planners run beside ours on every problem (external_planner.h),
+  // each a column of the tables like a baseline's planner.
+  std::vector<ExternalPlanner> external;
   // Local, or one role of a Slurm job array (slurm_array.h): the tasks
   // write their runs' plans to out_dir/plans as a local run does.
   ArrayRun array;

@@ -248,3 +248,12 @@ def test_an_unknown_strategy_is_a_value_error():
     domain = alplan.parse_domain_string(DOMAIN)
     with pytest.raises(ValueError, match="unknown repair strategy"):
         alplan.execute(domain, alplan.parse_problem_string(PROBLEM, domain), HandWorld(), strategy="pray")
+
+
+def test_version_is_the_projects():
+    # One place: CMakeLists.txt's project(), which `alplan --version` prints too.
+    import re
+    root = os.path.join(os.path.dirname(__file__), "..", "..")
+    with open(os.path.join(root, "CMakeLists.txt"), encoding="utf-8") as cmake:
+        version = re.search(r"project\(alplan VERSION ([0-9.]+)", cmake.read()).group(1)
+    assert alplan.__version__ == version

@@ -1,0 +1,1 @@
+(define (problem a-only) (:domain switches) (:init) (:goal (and (on-a) (not (locked)))))

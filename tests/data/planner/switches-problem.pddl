@@ -1,0 +1,1 @@
+(define (problem both) (:domain switches) (:init) (:goal (and (on-a) (on-b))))
