@@ -157,8 +157,10 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   add_test_set_flags(p, planners->test_set);
   p->callback([planners, &exit_code] { exit_code = run_planners(*planners); });
 
+#ifndef ALPLAN_PLANNER_ONLY
   add_bench_repair_command(bench, exit_code);
   add_bench_stability_command(bench, exit_code);
+#endif
   add_bench_merge_command(bench, exit_code);
 }
 

@@ -11,5 +11,7 @@ PYBIND11_MODULE(alplan, m) {
   alplan::python::add_errors(m);
   alplan::python::add_pddl(m);
   alplan::python::add_planning(m);
+#ifndef ALPLAN_PLANNER_ONLY
   alplan::python::add_monitor(m);
+#endif
 }
