@@ -38,9 +38,12 @@ class CMakeBuild(build_ext):
         build = reused or os.path.join(os.path.abspath(self.build_temp), "cmake")
         if not reused:
             # A build tree of its own, for the interpreter pip runs under.
+            # ALPLAN_COMPONENTS=planner: the module without the monitor, on a
+            # machine with only the planner's dependencies.
             subprocess.check_call(["cmake", "-S", ROOT, "-B", build, "-DCMAKE_BUILD_TYPE=Release",
                                    "-DALPLAN_PYTHON=" + sys.executable, "-DALPLAN_BUILD_TESTS=OFF",
-                                   "-DALPLAN_BUILD_BENCHMARKS=OFF"])
+                                   "-DALPLAN_BUILD_BENCHMARKS=OFF",
+                                   "-DALPLAN_COMPONENTS=" + os.environ.get("ALPLAN_COMPONENTS", "all")])
         # A reused tree keeps its configuration (ALPLAN_PYTHON among it): the
         # module is built for that interpreter, which must be pip's or its venv's base.
         subprocess.check_call(["cmake", "--build", build, "--target", "alplan_python", "-j", str(os.cpu_count() or 2)])

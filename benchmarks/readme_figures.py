@@ -34,7 +34,8 @@ from figures.common import HERE, check_nearest_rank
 from figures.differential import FUZZ_SEEDS, differential_block, oracle_against_val_block
 from figures.home_fleet import home_fleet_block
 from figures.ledger import test_set_ledger_block
-from figures.pddl3 import PDDL3_ISSUE44_ANYTIME, PDDL3_ISSUE44_FIRST, pddl3_against_optic_block, pddl3_classical_block
+from figures.pddl3 import (PDDL3_ISSUE44_ANYTIME, PDDL3_ISSUE44_ANYTIME_D11691A, PDDL3_ISSUE44_FIRST,
+                           pddl3_against_optic_block, pddl3_classical_block)
 from figures.repair_study import HELD_OUT, SCATTERED, camera_search, study_mix, study_switch, study_wins, tags_by_scatter
 from figures.stability import (CROSS_CHECK_FIRST, STABILITY, STABILITY_6_10_ADAPT_REMOVALS, STABILITY_ADAPT_REMOVALS,
                                cross_check_block,
@@ -76,6 +77,7 @@ BLOCKS = {
     "pddl3-classical": pddl3_classical_block,
     "pddl3-issue44-first": lambda: pddl3_against_optic_block(PDDL3_ISSUE44_FIRST),
     "pddl3-issue44-anytime": lambda: pddl3_against_optic_block(PDDL3_ISSUE44_ANYTIME),
+    "pddl3-issue44-anytime-d11691a": lambda: pddl3_against_optic_block(PDDL3_ISSUE44_ANYTIME_D11691A),
     "test-set-ledger": test_set_ledger_block,
     "stability-domains-1-5": lambda: stability_by_domain(STABILITY[0]),
     "stable-proof-search": proof_search_block,

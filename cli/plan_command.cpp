@@ -57,13 +57,7 @@ struct PlanOptions {
   std::size_t min_distance = 2;
 };
 
-// Ten significant digits: enough for times on the 0.001 grid, without the
-// binary noise of a sum (15.001000000000001).
-std::string readable(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.10g", x);
-  return buffer;
-}
+std::string readable(double x) { return format_value(x); }
 
 void print_comment(std::ostream& out, const std::string& message) { out << plan_comment(message); }
 
@@ -93,7 +87,7 @@ void print_best(const PlannerResult& result, std::ostream& out) {
     for (const auto& [name, count] : v.preference_violations) out << " " << name << "=" << readable(count);
     out << "\n";
   }
-  out << "; best plan found after: " << seconds_text(best.seconds) << " s by " << best.engine << "\n";
+  out << "; best plan found after: " << format_seconds(best.seconds) << " s by " << best.engine << "\n";
 }
 
 // A limit reached before the planner could report one itself (memory while
@@ -113,9 +107,13 @@ int limit_reached(const PlanOptions& options, const std::string& message, const 
 
 // Bad input (exit 2): the message on stderr, and with --json an object on
 // stdout too, so that a script reading stdout sees every outcome.
-int input_error(const PlanOptions& options, const std::string& message, const std::string& diagnostics) {
-  if (diagnostics.empty()) std::cerr << "error: " << message << "\n";
-  if (options.json) std::cout << input_error_json(message, diagnostics.empty() ? "error: " + message : diagnostics).dump(2) << "\n";
+// `diagnostics` were printed on stderr already; the message is too unless
+// they are what it sums up.
+int input_error(const PlanOptions& options, const std::string& message, const std::string& diagnostics,
+                bool diagnostics_say_it = false) {
+  const std::string said = diagnostics_say_it ? diagnostics : diagnostics + "error: " + message + "\n";
+  if (!diagnostics_say_it) std::cerr << "error: " << message << "\n";
+  if (options.json) std::cout << outcome_json("input_error", message, said).dump(2) << "\n";
   return kExitInputError;
 }
 
@@ -142,7 +140,8 @@ SearchConfiguration search_configuration(const PlanOptions& options) {
 // distances; fewer than K are printed with a line saying so. Exit codes as
 // for one plan: 0 with at least one, else the first search's.
 int plan_diverse(const std::shared_ptr<const GroundTask>& task, const PlannerOptions& planner,
-                 const PlanOptions& options) {
+                 const PlanOptions& options, const std::string& diagnostics) {
+  PlanPrinter printer(task.get());
   DiversePlanOptions diverse;
   diverse.k = options.diverse;
   diverse.min_distance = options.min_distance;
@@ -154,7 +153,7 @@ int plan_diverse(const std::shared_ptr<const GroundTask>& task, const PlannerOpt
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = 0; j < n; ++j) distances[i][j] = plan_action_distance(found.plans[i].plan, found.plans[j].plan);
   }
-  if (n > 0 && !options.out.empty()) std::ofstream(options.out) << printed_plan_text(task.get(), found.plans.front());
+  if (n > 0 && !options.out.empty()) std::ofstream(options.out) << printer.printed(found.plans.front()).text;
   const std::string shortfall =
       n == options.diverse ? ""
                            : "found " + std::to_string(n) + " of " + std::to_string(options.diverse) + " plans at least " +
@@ -163,18 +162,23 @@ int plan_diverse(const std::shared_ptr<const GroundTask>& task, const PlannerOpt
                                                   : "(the budget ran out)");
   if (options.json) {
     nlohmann::json plans = nlohmann::json::array();
-    for (std::size_t i = 0; i < n; ++i) plans.push_back(plan_json(task.get(), found.plans[i], i + 1));
-    const nlohmann::json j = {{"schema_version", kPlanJsonSchemaVersion},
-                              {"status", status_name(n > 0 ? PlannerResult::Status::Solved : found.first_status)},
-                              {"message", n > 0 ? shortfall : found.message}, {"requested", options.diverse},
-                              {"min_distance", options.min_distance}, {"plans", plans}, {"distances", distances},
-                              {"planner_calls", found.planner_calls}, {"seconds", found.seconds}};
+    for (std::size_t i = 0; i < n; ++i) plans.push_back(plan_json(found.plans[i], printer.printed(found.plans[i]), i + 1));
+    // The one schema, and what --diverse adds: no plan is "best" among them,
+    // and every planner call's time is search time.
+    nlohmann::json j = outcome_json(status_name(n > 0 ? PlannerResult::Status::Solved : found.first_status),
+                                    n > 0 ? shortfall : found.message, diagnostics);
+    j["plans"] = plans;
+    j["seconds"]["search"] = found.seconds;
+    j["requested"] = options.diverse;
+    j["min_distance"] = options.min_distance;
+    j["distances"] = distances;
+    j["planner_calls"] = found.planner_calls;
     std::cout << j.dump(2) << "\n";
   } else {
     for (std::size_t i = 0; i < n; ++i) {
       const ValidationResult& v = found.plans[i].validation;
       std::cout << "; plan " << i + 1 << " of " << options.diverse << ": makespan " << readable(v.makespan)
-                << ", value " << readable(v.value) << "\n" << printed_plan_text(task.get(), found.plans[i]);
+                << ", value " << readable(v.value) << "\n" << printer.printed(found.plans[i]).text;
     }
     if (n > 0) std::cout << "; distances (ground actions added + removed):\n";
     for (std::size_t i = 0; i < n; ++i) {
@@ -185,9 +189,31 @@ int plan_diverse(const std::shared_ptr<const GroundTask>& task, const PlannerOpt
     if (!shortfall.empty()) print_comment(std::cout, shortfall);
     if (n == 0) print_comment(std::cout, found.message);
     std::cout << "; status: " << status_name(n > 0 ? PlannerResult::Status::Solved : found.first_status) << "; "
-              << found.planner_calls << " searches, " << seconds_text(found.seconds) << " s\n";
+              << found.planner_calls << " searches, " << format_seconds(found.seconds) << " s\n";
   }
   return n > 0 ? kExitOk : exit_code(found.first_status);
+}
+
+// The planner's result in the one schema (plan_output.h).
+nlohmann::json result_json(const PlannerResult& result, PlanPrinter& printer, const std::string& diagnostics,
+                           double grounding) {
+  nlohmann::json plans = nlohmann::json::array();
+  for (std::size_t i = 0; i < result.plans.size(); ++i) {
+    plans.push_back(plan_json(result.plans[i], printer.printed(result.plans[i]), i + 1));
+  }
+  const SearchStatistics& s = result.statistics;
+  nlohmann::json j = outcome_json(status_name(result.status), result.message, diagnostics);
+  if (!result.limit.empty()) j["limit"] = result.limit;
+  if (result.best()) {
+    j["best"] = plan_json(*result.best(), printer.printed(*result.best()), result.plans.size());
+    j["best_index"] = result.plans.size();
+  }
+  j["plans"] = plans;
+  j["statistics"] = {{"expanded", s.expanded}, {"evaluated", s.evaluated}, {"generated", s.generated},
+                     {"duplicates", s.duplicates}, {"unschedulable", s.unschedulable}, {"dead_ends", s.dead_ends}};
+  j["seconds"] = {{"grounding", grounding}, {"setup", result.times.setup}, {"search", result.times.search},
+                  {"validation", result.times.validation}};
+  return j;
 }
 
 // Loads, grounds and plans; `phase` names the step under way, so that a
@@ -202,7 +228,8 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
   const auto files = load_task_files(options.domain, options.problem, options.json ? captured : std::cerr,
                                      {!options.quiet});
   if (options.json) std::cerr << captured.str();
-  if (!files) return input_error(options, "the input files have errors", captured.str());
+  const std::string diagnostics = captured.str();
+  if (!files) return input_error(options, "the input files have errors", diagnostics, true);
   phase = "grounding";
   GroundingOptions grounding_options{{options.domain, options.problem, {}}, std::nullopt};
   if (std::isfinite(options.time_limit)) {
@@ -212,7 +239,7 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
   try {
     task = ground(*files->domain, *files->problem, grounding_options);
   } catch (const GroundingError& e) {
-    return input_error(options, e.what(), "");
+    return input_error(options, e.what(), diagnostics);
   }
   const double grounding = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   if (grounding >= options.time_limit) return limit_reached(options, "the time limit was reached while grounding", "time");
@@ -221,7 +248,7 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
   try {
     planner_options.search = search_configuration(options);
   } catch (const SearchConfigurationError& e) {
-    return input_error(options, e.what(), "");
+    return input_error(options, e.what(), diagnostics);
   }
   planner_options.prune_irrelevant = options.prune_irrelevant;
   planner_options.deorder = options.deorder;
@@ -235,36 +262,23 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
   if (getrlimit(RLIMIT_AS, &address_space) == 0 && address_space.rlim_cur != RLIM_INFINITY) {
     planner_options.address_space_limit = static_cast<std::size_t>(0.9 * static_cast<double>(address_space.rlim_cur));
   }
-  if (options.diverse > 0) return plan_diverse(task, planner_options, options);
+  if (options.diverse > 0) return plan_diverse(task, planner_options, options, diagnostics);
+  PlanPrinter printer(task.get());
   auto on_plan = [&](const FoundPlan& p) {
     if (options.json) return;
-    const std::string text = printed_plan_text(task.get(), p);
-    const std::string length = text == p.text ? "makespan " + readable(p.validation.makespan)
-                                              : std::to_string(p.plan.steps.size()) + " steps";
-    std::cout << "; plan found after " << seconds_text(p.seconds) << " s by " << p.engine << ", " << length
+    const PrintedPlan& printed = printer.printed(p);
+    const std::string length = printed.sequential ? std::to_string(p.plan.steps.size()) + " steps"
+                                                  : "makespan " + readable(p.validation.makespan);
+    std::cout << "; plan found after " << format_seconds(p.seconds) << " s by " << p.engine << ", " << length
               << ", value " << readable(p.validation.value) << "\n"
-              << text << std::flush;
+              << printed.text << std::flush;
   };
   const PlannerResult result = Planner(task, planner_options).plan(on_plan);
   search_memory = result.search_memory;
   phase = "writing the result";
-  if (result.best() && !options.out.empty()) std::ofstream(options.out) << printed_plan_text(task.get(), *result.best());
+  if (result.best() && !options.out.empty()) std::ofstream(options.out) << printer.printed(*result.best()).text;
   if (options.json) {
-    nlohmann::json plans = nlohmann::json::array();
-    for (std::size_t i = 0; i < result.plans.size(); ++i) plans.push_back(plan_json(task.get(), result.plans[i], i + 1));
-    const SearchStatistics& s = result.statistics;
-    nlohmann::json j = outcome_json(status_name(result.status), result.message);
-    if (!result.limit.empty()) j["limit"] = result.limit;
-    if (result.best()) {
-      j["best"] = plan_json(task.get(), *result.best(), result.plans.size());
-      j["best_index"] = result.plans.size();
-    }
-    j["plans"] = plans;
-    j["statistics"] = {{"expanded", s.expanded}, {"evaluated", s.evaluated}, {"generated", s.generated},
-                       {"duplicates", s.duplicates}, {"unschedulable", s.unschedulable}, {"dead_ends", s.dead_ends}};
-    j["seconds"] = {{"grounding", grounding}, {"setup", result.times.setup}, {"search", result.times.search},
-                    {"validation", result.times.validation}};
-    std::cout << j.dump(2) << "\n";
+    std::cout << result_json(result, printer, diagnostics, grounding).dump(2) << "\n";
   } else {
     if (planner_options.search.engine.kind == EngineSpec::Kind::Anytime && result.best()) print_best(result, std::cout);
     // A solved task has a message only when how it was solved needs saying
@@ -272,7 +286,7 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
     if (result.status != PlannerResult::Status::Solved || !result.message.empty()) print_comment(std::cout, result.message);
     std::cout << "; status: " << status_name(result.status) << "; expanded " << result.statistics.expanded
               << ", evaluated " << result.statistics.evaluated << ", grounding "
-              << seconds_text(grounding) << " s, search " << seconds_text(result.times.search)
+              << format_seconds(grounding) << " s, search " << format_seconds(result.times.search)
               << " s\n";
   }
   if (result.status == PlannerResult::Status::InternalError || result.status == PlannerResult::Status::Unsupported) {

@@ -1,11 +1,11 @@
 // What `alplan plan` prints: plans as text (sequential for tasks that read
 // no time, planner/sequential_plan.h) and every outcome as JSON in one
-// schema, errors included (README: "JSON output").
+// schema, errors included (README: "alplan plan", `--json`).
 #pragma once
 
 #include <nlohmann/json.hpp>
 
-#include <optional>
+#include <map>
 #include <string>
 
 #include "planner/planner.h"
@@ -16,21 +16,31 @@ namespace alplan::cli {
 // `alplan plan --json` prints carries it.
 inline constexpr int kPlanJsonSchemaVersion = 1;
 
-// The plan as printed: sequential where the task reads no time, else timed.
-std::string printed_plan_text(const GroundTask* task, const FoundPlan& plan);
+struct PrintedPlan {
+  std::string text;
+  bool sequential = false;  // no timestamps, a cost line
+};
+
+// Each plan in the form printed, worked out once (a sequential form is
+// validated again, which grounds the task for the validator).
+class PlanPrinter {
+ public:
+  explicit PlanPrinter(const GroundTask* task) : task_(task) {}
+  const PrintedPlan& printed(const FoundPlan& plan);
+
+ private:
+  const GroundTask* task_;
+  std::map<std::string, PrintedPlan> by_text_;
+};
 
 // One plan: its steps (times as printed, null in a sequential plan), values
 // and the text exactly as printed.
-nlohmann::json plan_json(const GroundTask* task, const FoundPlan& p, std::size_t index);
+nlohmann::json plan_json(const FoundPlan& p, const PrintedPlan& printed, std::size_t index);
 
 // The object every outcome prints, with each field present (null or empty
-// where the outcome has none).
-nlohmann::json outcome_json(const std::string& status, const std::string& message);
-
-// Input errors (exit 2): the diagnostics, one per line, as printed on stderr.
-nlohmann::json input_error_json(const std::string& message, const std::string& diagnostics);
-
-// Seconds as the plan command prints them: milliseconds, no more.
-std::string seconds_text(double seconds);
+// where the outcome has none); `diagnostics` are the input's errors and
+// warnings as printed on stderr, one a line.
+nlohmann::json outcome_json(const std::string& status, const std::string& message,
+                            const std::string& diagnostics = "");
 
 }  // namespace alplan::cli

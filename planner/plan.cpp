@@ -139,6 +139,18 @@ bool on_grid(double x, double grid) { return std::fabs(grid - x) < 1e-7; }
 
 }  // namespace
 
+std::string format_value(double x) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.10g", x);
+  return buffer;
+}
+
+std::string format_seconds(double seconds) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.3f", seconds);
+  return buffer;
+}
+
 std::string format_plan_time(double x) {
   char buffer[64];
   const double grid = std::round(x * 1000.0) / 1000.0;

@@ -41,6 +41,15 @@ std::string format_plan_time(double x);
 // shown as a number (JSON), without a sum's binary noise (80.00200000000001).
 double rounded_plan_time(double x);
 
+// A metric's value, a cost or a makespan as reported beside a plan: ten
+// significant digits, enough for times on the 0.001 grid without the binary
+// noise of a sum (15.001000000000001).
+std::string format_value(double x);
+
+// Seconds of planning as the planner and its CLI report them: to the
+// millisecond ("0.012", "1800.000").
+std::string format_seconds(double seconds);
+
 // IPC format, times and durations with the given number of decimals.
 std::string write_plan(const Plan& plan, int decimals = 3);
 

@@ -163,16 +163,17 @@ class Deordering {
   }
 
   // A causal link from `from` to a consumer at step `to`, the fact held
-  // until step `until`: steps that undo it stay outside.
-  bool protect(std::uint32_t from, std::uint32_t until, FactId f, bool positive) {
+  // until step `until`: steps that undo it stay outside, `after` past
+  // `until`: epsilon past a condition's reader (one happening would be a
+  // mutex); 0 past an invariant's end, since VAL checks an invariant on its
+  // action's open interval (OPTIC schedules it so too).
+  bool protect(std::uint32_t from, std::uint32_t until, FactId f, bool positive, double after) {
     for (std::uint32_t k = 0; k < n_; ++k) {
       if (k == from || k == until || !undoes(k, f, positive)) continue;
       if (from != kInitial && k < from) {
         edge(k, from, input_.epsilon);
       } else if (k > until) {
-        // VAL checks an invariant on its action's open interval, so its fact
-        // may go at the very end: no gap (OPTIC schedules it so too).
-        edge(until, k, 0.0);
+        edge(until, k, after);
       } else {
         return false;
       }
@@ -186,7 +187,7 @@ class Deordering {
     const std::optional<std::uint32_t> a = achiever(j, f, positive);
     if (!a) return false;
     if (*a != kInitial && *a != j) edge(*a, j, gap);
-    return protect(*a, until, f, positive);
+    return protect(*a, until, f, positive, until == j ? input_.epsilon : 0.0);
   }
 
   bool link_all() {
@@ -204,7 +205,7 @@ class Deordering {
       // another step may give it at the start's very time.
       for (FactId f : s.inv_pos) {
         if (has(s.add, f)) {
-          if (!protect(j, s.end, f, true)) return false;
+          if (!protect(j, s.end, f, true, 0.0)) return false;
         } else if (!link(j, f, true, s.end, 0.0)) {
           return false;
         }

@@ -1,6 +1,7 @@
 // Plans of classical tasks in the form users of classical planners expect
 // (Fast Downward's `sas_plan`, the IPC classical tracks): one step a line,
-// no timestamps, then `; cost = N (unit cost)` or `(general cost)`. VAL
+// no timestamps, then `; cost = N (unit cost)`, `(general cost)` with
+// action costs, or `(metric)`, the metric's value without them. VAL
 // reads such a plan as one happening per step, in order.
 //
 // The planner schedules every task on the time line (0.000, 0.001, ...).

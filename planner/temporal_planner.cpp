@@ -22,12 +22,6 @@ using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-std::string readable_seconds(double seconds) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3g", seconds);
-  return buffer;
-}
-
 std::string plan_text(const Plan& plan) {
   std::string out;
   for (const PlanStep& step : plan.steps) {
@@ -588,7 +582,7 @@ void TemporalPlanner::finish(PlannerResult& result, const PipelineOutcome& outco
       case StoppingLimit::Time:
         result.limit = "time";
         result.message = "the time limit was reached before a plan was found (" +
-                         readable_seconds(options_.time_limit) + " s for the search)";
+                         format_seconds(options_.time_limit) + " s for the search)";
         break;
       case StoppingLimit::Nodes:
         result.limit = "nodes";

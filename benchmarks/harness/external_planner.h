@@ -5,9 +5,12 @@
 // planner of their own with alplan on their suite without a baseline file.
 //
 // A planner is given as NAME=COMMAND; COMMAND runs under /bin/sh with
-// {domain}, {problem} and {plan} replaced by the files' paths (quoted for
-// the shell) and must write its plan, in the IPC format, to {plan}. What it
-// prints is kept only for the message of a failed run.
+// {domain}, {problem} and {plan} replaced by the files' paths, quoted for
+// the shell (so the placeholders are written without quotes), and must
+// write one plan, in the IPC format, to {plan}: an anytime planner that
+// prints each improvement must keep only its last there. A plan written
+// before the time limit stopped the planner counts. What it prints is kept
+// only for the message of a failed run.
 #pragma once
 
 #include <string>
@@ -31,7 +34,8 @@ std::string external_command(const ExternalPlanner& planner, const std::string& 
 
 struct ExternalRun {
   // solved (a plan our validator accepts), invalid (a plan it rejects),
-  // limit (killed at the time or memory limit), unsolved (no plan written).
+  // limit (stopped at the time limit with no plan), unsolved (ended with no
+  // plan), unvalidated (our validator did not finish within 600 s).
   std::string status;
   double seconds = 0.0;  // wall time of the process
   long max_rss_kib = 0;

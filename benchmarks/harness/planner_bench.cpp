@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "benchmarks/harness/baseline.h"
+#include "benchmarks/harness/planner_comparison.h"
 #include "benchmarks/harness/run_status.h"
 #include "benchmarks/harness/slurm_array.h"
 #include "benchmarks/harness/suite.h"
@@ -49,7 +50,7 @@ Run run_ours(const SuiteProblem& p, const PlannerBenchOptions& options, const st
 // Ours, then each other planner, on problem `index` of the suite.
 Run run_one(const SuiteProblem& p, const PlannerBenchOptions& options, const std::string& dir, std::size_t index) {
   Run run = run_ours(p, options, plan_path(dir, index));
-  run.plan_file = "plans/" + std::to_string(index) + ".plan";
+  run.plan_file = plan_path(options.out_dir.empty() ? dir : "plans", index);
   for (const ExternalPlanner& planner : options.external) {
     run.external[planner.name] =
         run_external_planner(planner, p, plan_path(dir, index, planner.name), options.limits, options.alplan);
@@ -383,60 +384,45 @@ Table metric_table(const std::map<std::string, MetricSums>& sums) {
   return table;
 }
 
-// Whether the problem's metric is maximised, read from its file (for a
-// problem no baseline knows).
-bool maximises(const std::string& problem_file) {
-  std::ifstream in(problem_file);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
-  const std::size_t metric = text.find("(:metric");
-  return metric != std::string::npos && text.compare(text.find_first_not_of(" \t\r\n", metric + 8), 8, "maximize") == 0;
-}
+// A run's line of runs.csv (ours, then each other planner's status, time,
+// value and plan file) and the other planners' part of runs.json.
+struct RunRow {
+  std::vector<std::string> cells;
+  nlohmann::json external = nlohmann::json::object();
+};
 
-// The baseline's planners and the other planners run here, as one set of
-// references: each other planner a column, its valid plans competing for
-// the best value the quality score divides by.
-Baseline compared_planners(const std::vector<Run>& runs, const PlannerBenchOptions& options) {
-  Baseline compared = options.baseline.empty() ? Baseline::none() : Baseline::load(options.baseline);
-  for (const ExternalPlanner& planner : options.external) {
-    compared.planners.push_back(planner.name);
-    compared.titles.push_back(planner.name);
-  }
-  for (const Run& run : runs) {
-    const std::string key = problem_key(run.problem.problem_file);
-    if (!compared.maximize.count(key)) compared.maximize[key] = maximises(run.problem.problem_file);
-    for (const auto& [name, r] : run.external) {
-      ReferenceRun reference{r.status, r.status == "solved", r.seconds, r.value};
-      compared.runs[key][name] = reference;
-      if (!reference.valid) continue;
-      const auto best = compared.best.find(key);
-      if (best == compared.best.end() || compared.better(key, r.value, best->second)) compared.best[key] = r.value;
+RunRow run_row(const Run& run, std::size_t index, const std::vector<ExternalPlanner>& others,
+               const std::string& plans_folder) {
+  const bool solved = run.status == "solved";
+  RunRow row{{run.problem.domain, std::filesystem::path(run.problem.problem_file).filename().string(), run.status,
+              solved ? fixed(run.first_plan, 2) : "", fixed(run.seconds, 2),
+              fixed(static_cast<double>(run.max_rss_kib) / 1024.0, 0), solved ? fixed(run.makespan, 3) : "",
+              solved ? fixed(run.value, 3) : "", run.plan_file}};
+  for (const ExternalPlanner& p : others) {
+    const auto r = run.external.find(p.name);
+    if (r == run.external.end()) {
+      row.cells.insert(row.cells.end(), {"", "", "", ""});
+      continue;
     }
+    const std::string file = plan_path(plans_folder, index, p.name);
+    row.cells.insert(row.cells.end(), {r->second.status, fixed(r->second.seconds, 2),
+                                       r->second.status == "solved" ? fixed(r->second.value, 3) : "", file});
+    row.external[p.name] = to_json(r->second);
+    row.external[p.name]["plan_file"] = file;
   }
-  return compared;
-}
-
-// What a reader must know before trusting the table.
-std::vector<std::string> comparison_warnings(const Baseline& reference, const PlannerBenchOptions& options) {
-  std::vector<std::string> warnings;
-  if (reference.time_limit > 0 && std::abs(reference.time_limit - options.limits.seconds) > 1e-9) {
-    warnings.push_back("our runs have a " + fixed(options.limits.seconds, 0) + " s limit, the baseline's " +
-                       fixed(reference.time_limit, 0) + " s: coverage and time scores are not like for like");
-  }
-  if (options.jobs > 1) {
-    warnings.push_back(std::to_string(options.jobs) + " runs at once: timings are not comparable with one run at a time");
-  }
-  return warnings;
+  return row;
 }
 
 int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions& options, std::ostream& out) {
-  const Baseline baseline = compared_planners(runs, options);
+  std::vector<ProblemRuns> others;
+  for (const Run& run : runs) others.push_back({run.problem.problem_file, run.external});
+  const Baseline baseline = compared_planners(options.baseline, options.external, others);
   const std::set<std::string> externals = [&] {
     std::set<std::string> names;
     for (const ExternalPlanner& p : options.external) names.insert(p.name);
     return names;
   }();
-  const std::vector<std::string> warnings = comparison_warnings(baseline, options);
+  const std::vector<std::string> warnings = comparison_warnings(baseline, options.limits.seconds, options.jobs);
   for (const std::string& w : warnings) out << "warning: " << w << "\n";
   // Scores per domain, ours and the references' on the same problems.
   std::map<std::string, std::map<std::string, Scores>> scores;
@@ -449,7 +435,10 @@ int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions
     run_columns.insert(run_columns.end(), {p.name + " status", p.name + " wall s", p.name + " value", p.name + " plan"});
   }
   Table runs_table(run_columns);
-  for (const Run& run : runs) {
+  // Plan files as runs.csv names them: relative to the results folder.
+  const std::string plans_folder = options.out_dir.empty() ? plans_dir(options) : "plans";
+  for (std::size_t run_index = 0; run_index < runs.size(); ++run_index) {
+    const Run& run = runs[run_index];
     const std::string key = problem_key(run.problem.problem_file);
     const auto refs = baseline.runs.find(key);
     const bool in_baseline = refs != baseline.runs.end();
@@ -499,25 +488,9 @@ int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions
         m.maximize = maximize;
       }
     }
-    std::vector<std::string> cells{run.problem.domain, std::filesystem::path(run.problem.problem_file).filename().string(),
-                                   run.status, run.status == "solved" ? fixed(run.first_plan, 2) : "", fixed(run.seconds, 2),
-                                   fixed(static_cast<double>(run.max_rss_kib) / 1024.0, 0),
-                                   run.status == "solved" ? fixed(run.makespan, 3) : "",
-                                   run.status == "solved" ? fixed(run.value, 3) : "", run.plan_file};
-    nlohmann::json external = nlohmann::json::object();
-    for (const ExternalPlanner& p : options.external) {
-      const auto r = run.external.find(p.name);
-      if (r == run.external.end()) {
-        cells.insert(cells.end(), {"", "", "", ""});
-        continue;
-      }
-      const std::string file = run.plan_file.empty() ? "" : run.plan_file.substr(0, run.plan_file.size() - 5) + "." + p.name + ".plan";
-      cells.insert(cells.end(), {r->second.status, fixed(r->second.seconds, 2),
-                                 r->second.status == "solved" ? fixed(r->second.value, 3) : "", file});
-      external[p.name] = to_json(r->second);
-      external[p.name]["plan_file"] = file;
-    }
-    runs_table.add(cells);
+    const RunRow row = run_row(run, run_index, options.external, plans_folder);
+    const nlohmann::json& external = row.external;
+    runs_table.add(row.cells);
     rows.push_back({{"domain", run.problem.domain}, {"problem", key}, {"status", run.status},
                     {"first_plan_seconds", run.first_plan}, {"wall_seconds", run.seconds},
                     {"max_rss_kib", run.max_rss_kib}, {"makespan", run.makespan}, {"value", run.value},

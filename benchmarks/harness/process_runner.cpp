@@ -113,4 +113,10 @@ std::vector<std::string> own_command_line() {
   return argv;
 }
 
+std::string shell_quoted(const std::string& text) {
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
 }  // namespace alplan::bench

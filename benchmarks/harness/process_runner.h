@@ -26,6 +26,10 @@ struct RunResult {
 
 RunResult run_process(const std::vector<std::string>& argv, const RunLimits& limits);
 
+// `text` as one word for /bin/sh: in single quotes, each ' closed, escaped
+// and reopened.
+std::string shell_quoted(const std::string& text);
+
 // The running executable's own path (/proc/self/exe), so the harness can
 // start `alplan` subcommands as child processes.
 std::string self_executable();

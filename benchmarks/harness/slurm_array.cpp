@@ -25,12 +25,6 @@ const std::set<std::string>& slurm_options_with_value() {
   return names;
 }
 
-std::string shell_quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
 nlohmann::json to_json(const SlurmOptions& s) {
   return {{"partition", s.partition}, {"time", s.time}, {"mem", s.mem}, {"batch", s.batch}, {"sbatch", s.sbatch},
           {"submit", s.submit}};
@@ -83,8 +77,8 @@ std::string job_script(const std::string& dir, const ArrayManifest& m, const std
   if (!m.slurm.time.empty()) s << "#SBATCH --time=" << m.slurm.time << "\n";
   if (!m.slurm.mem.empty()) s << "#SBATCH --mem=" << m.slurm.mem << "\n";
   s << "exec";
-  for (const std::string& a : m.command) s << " " << shell_quote(a);
-  s << " --slurm-task " << shell_quote(dir) << " --slurm-task-index \"$SLURM_ARRAY_TASK_ID\"\n";
+  for (const std::string& a : m.command) s << " " << shell_quoted(a);
+  s << " --slurm-task " << shell_quoted(dir) << " --slurm-task-index \"$SLURM_ARRAY_TASK_ID\"\n";
   return s.str();
 }
 

@@ -29,6 +29,10 @@ if(NOT EXISTS ${WORK}/bench/plans/0.scripted.plan)
 endif()
 expect_run(0 "scores (IPC 2008-2014)" ${ALPLAN} bench planners --suite ${suite} --time-limit 10 --out ${WORK}/bench)
 
+# An anytime planner stopped by the limit after writing its plan: the plan counts.
+expect_run(0 "anytime: solved value 2" ${ALPLAN} bench planners --suite ${suite} --first 1 --time-limit 1
+  --out ${WORK}/bench-anytime "--planner=anytime=sh ${suite}/anytime-planner.sh {domain} {problem} {plan}")
+
 # Limits unlike the baseline's are said, not compared silently.
 expect_run(0 "warning: our runs have a 2 s limit, the baseline's 60 s" ${ALPLAN} bench planners --suite ${suite}
   --baseline ${SHARED}/benchmarks/baseline --time-limit 2 --out ${WORK}/bench-short)

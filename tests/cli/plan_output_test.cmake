@@ -49,3 +49,13 @@ expect_stdout(0 "\"format\": \"temporal\"" ${ALPLAN} plan --json ${data}/mixed-d
 # seconds to the millisecond.
 expect_stdout(0 "; plan found after [0-9]+\\.[0-9][0-9][0-9] s by wastar \\(w=2\\) with lmcut"
   ${ALPLAN} plan --search "wastar(lmcut, w=2)" ${data}/mixed-domain.pddl ${data}/mixed-problem.pddl)
+
+# --diverse prints the same schema, with what it adds.
+expect_stdout(0 "\"best_index\": null.*\"diagnostics\": \\[.*\"distances\".*\"limit\": null.*\"planner_calls\".*\"schema_version\": 1.*\"seconds\": {.*\"statistics\": {"
+  ${ALPLAN} plan --diverse 2 --json ${DATA}/planner/cups-domain.pddl ${DATA}/planner/cups-problem.pddl)
+# A warning about the input is in the JSON of a solved run too.
+file(WRITE ${WORK}/undeclared-domain.pddl "(define (domain undeclared) (:requirements :strips)
+  (:predicates (a) (b)) (:action x :parameters () :precondition (not (a)) :effect (b)))")
+file(WRITE ${WORK}/undeclared-problem.pddl "(define (problem p) (:domain undeclared) (:init) (:goal (b)))")
+expect_stdout(0 "\"diagnostics\": \\[\n[^]]*warning[^]]*negative-preconditions.*\"status\": \"solved\""
+  ${ALPLAN} plan --json ${WORK}/undeclared-domain.pddl ${WORK}/undeclared-problem.pddl)
