@@ -7,6 +7,8 @@
 
 #include <iostream>
 #include <memory>
+#include <sstream>
+#include <string>
 
 #include "cli/commands.h"
 #include "cli/task_files.h"
@@ -105,7 +107,8 @@ bool one_standard_input(const ValidateOptions& options) {
 }
 
 void print_json(const ValidationResult& result) {
-  nlohmann::json j = {{"valid", result.valid}, {"happenings", result.happenings}};
+  nlohmann::json j = {{"status", result.valid ? "valid" : "invalid"}, {"valid", result.valid},
+                      {"happenings", result.happenings}};
   if (result.valid) {
     j["makespan"] = result.makespan;
     j["metric"] = result.metric ? nlohmann::json(*result.metric) : nlohmann::json();
@@ -139,21 +142,39 @@ void print_text(const ValidationResult& result) {
   }
 }
 
+// Bad input (exit 2): already said on stderr; with --json also an object on
+// stdout, so that a script reading stdout sees every outcome.
+int input_error(const ValidateOptions& options, const std::string& diagnostics) {
+  if (options.json) {
+    nlohmann::json lines = nlohmann::json::array();
+    std::istringstream in(diagnostics);
+    for (std::string line; std::getline(in, line);) {
+      if (!line.empty()) lines.push_back(line);
+    }
+    std::cout << nlohmann::json{{"status", "input_error"}, {"valid", nullptr}, {"diagnostics", lines}}.dump(2) << "\n";
+  }
+  return kExitInputError;
+}
+
 int run(const ValidateOptions& options) {
-  if (!one_standard_input(options)) return kExitInputError;
+  if (!one_standard_input(options)) return input_error(options, "-: standard input given for more than one file");
   if (options.reference) return run_reference(options);
-  const auto files = load_task_files(options.domain, options.problem, std::cerr, {false});
-  if (!files) return kExitInputError;
+  std::ostringstream said;
+  const auto files = load_task_files(options.domain, options.problem, said, {false});
+  std::cerr << said.str();
+  if (!files) return input_error(options, said.str());
   std::vector<pddl::Diagnostic> io;
   std::string text;
   if (!pddl::read_input(options.plan, text, io)) {
     std::cerr << io.front().to_string() << "\n";
-    return kExitInputError;
+    return input_error(options, io.front().to_string());
   }
   const PlanReadResult plan = read_plan(text, input_name(options.plan));
   if (!plan.ok()) {
-    for (const pddl::Diagnostic& d : plan.diagnostics) std::cerr << d.to_string() << "\n";
-    return kExitInputError;
+    std::string diagnostics;
+    for (const pddl::Diagnostic& d : plan.diagnostics) diagnostics += d.to_string() + "\n";
+    std::cerr << diagnostics;
+    return input_error(options, diagnostics);
   }
   auto lifted = std::make_shared<const NormalizedTask>(
       normalize(*files->domain, *files->problem, {options.domain, options.problem, {}}));

@@ -59,3 +59,9 @@ file(WRITE ${WORK}/undeclared-domain.pddl "(define (domain undeclared) (:require
 file(WRITE ${WORK}/undeclared-problem.pddl "(define (problem p) (:domain undeclared) (:init) (:goal (b)))")
 expect_stdout(0 "\"diagnostics\": \\[\n[^]]*warning[^]]*negative-preconditions.*\"status\": \"solved\""
   ${ALPLAN} plan --json ${WORK}/undeclared-domain.pddl ${WORK}/undeclared-problem.pddl)
+
+# `validate --json` too: an object on stdout for bad input.
+expect_stdout(2 "no-such-plan.*\"status\": \"input_error\".*\"valid\": null"
+  ${ALPLAN} validate --json ${DATA}/planner/switches-domain.pddl ${DATA}/planner/switches-problem.pddl ${WORK}/no-such-plan)
+expect_stdout(0 "\"status\": \"valid\"" ${ALPLAN} validate --json ${DATA}/planner/switches-domain.pddl
+  ${DATA}/planner/switches-problem.pddl ${WORK}/switches.plan)
