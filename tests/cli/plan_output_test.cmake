@@ -5,17 +5,6 @@
 # millisecond. Variables: ALPLAN, SHARED, DATA, WORK (a scratch folder).
 include(${CMAKE_CURRENT_LIST_DIR}/expect_run.cmake)
 
-# expect_stdout(CODE REGEX COMMAND...): exit CODE and REGEX matched on stdout alone.
-function(expect_stdout expected_code pattern)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT code EQUAL expected_code)
-    message(FATAL_ERROR "${ARGN}\nexited ${code}, expected ${expected_code}\nstdout: ${out}\nstderr: ${err}")
-  endif()
-  if(NOT out MATCHES "${pattern}")
-    message(FATAL_ERROR "${ARGN}\nstdout does not match '${pattern}'\nstdout: ${out}\nstderr: ${err}")
-  endif()
-endfunction()
-
 set(data ${DATA}/planner)
 set(train ${SHARED}/benchmarks/ipc/ipc-2008/model-train-temporal-satisficing-numeric-fluents)
 

@@ -3,19 +3,6 @@
 # ALPLAN, SHARED, DATA, WORK (a scratch folder).
 include(${CMAKE_CURRENT_LIST_DIR}/expect_run.cmake)
 
-# expect_run_input(CODE TEXT INPUT COMMAND...): expect_run with INPUT as
-# standard input.
-function(expect_run_input expected_code expected_output input)
-  execute_process(COMMAND ${ARGN} INPUT_FILE ${input} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT code EQUAL expected_code)
-    message(FATAL_ERROR "${ARGN} < ${input}\nexited ${code}, expected ${expected_code}\nstdout: ${out}\nstderr: ${err}")
-  endif()
-  string(FIND "${out}${err}" "${expected_output}" at)
-  if(at EQUAL -1)
-    message(FATAL_ERROR "${ARGN} < ${input}\noutput lacks '${expected_output}'\nstdout: ${out}\nstderr: ${err}")
-  endif()
-endfunction()
-
 # Two rooms and a lamp in each; light needs the robot there.
 file(WRITE ${WORK}/domain.pddl "(define (domain lamps)
   (:requirements :strips :typing)
