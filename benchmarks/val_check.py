@@ -28,7 +28,10 @@ def main():
         if run["status"] != "solved":
             continue
         problem = Path(args.benchmarks) / run["problem"]
-        domain = problem.parent.parent / "domain.pddl"
+        # One domain for the folder, or (airport, promela, parc-printer,
+        # openstacks 2008 and 2011) domains/domain-N.pddl beside instance-N.
+        own = problem.parent.parent / "domains" / problem.name.replace("instance-", "domain-")
+        domain = own if own.exists() else problem.parent.parent / "domain.pddl"
         plan = Path(args.results) / "plans" / f"{index}.plan"
         out = subprocess.run([args.validate, "-t", "0.001", str(domain), str(problem), str(plan)],
                              capture_output=True, text=True).stdout

@@ -44,6 +44,7 @@ struct BenchPlannersOptions {
   std::string suite;
   std::string out;
   std::string baseline;
+  std::vector<std::string> references;
   double time_limit = 60;
   double memory_limit = 4096;
   int jobs = 1;
@@ -65,6 +66,7 @@ int run_planners(const BenchPlannersOptions& options) {
   o.out_dir = options.out;
   o.alplan = bench::self_executable();
   o.baseline = options.baseline;
+  o.references = options.references;
   o.limits = {options.time_limit, options.memory_limit};
   o.jobs = options.jobs;
   o.progress_bar = isatty(STDERR_FILENO) != 0;
@@ -130,6 +132,10 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   p->add_option("--out", planners->out, "Folder for runs.csv, runs.json, summary.md and the plans");
   p->add_option("--baseline", planners->baseline,
                 "Folder with optic_popf_60s.csv and quality_ref.csv, or (PDDL 3) optic_60s.csv");
+  p->add_option("--reference", planners->references,
+                "A CSV of reference values per problem (a problem_file column, numeric columns), scored beside "
+                "ours in quality.md (repeat it); the baseline's quality_ref.csv is read without it")
+      ->check(CLI::ExistingFile);
   p->add_option("--time-limit", planners->time_limit, "Seconds per run")->check(CLI::PositiveNumber);
   p->add_option("--memory-limit", planners->memory_limit, "MiB per run")->check(CLI::PositiveNumber);
   p->add_option("--jobs", planners->jobs, "Runs at once (1 for timings comparable to the baseline)")

@@ -45,6 +45,7 @@ struct PlanOptions {
   std::optional<std::uint64_t> ehc_expansions;
   bool prune_irrelevant = true;
   bool deorder = true;
+  bool eliminate_actions = true;
   // Shorthand flags given on the command line (they shape only the named
   // searches ehc, gbfs and wastar).
   std::vector<std::string> shorthands_given;
@@ -252,6 +253,7 @@ int plan_files(const PlanOptions& options, const char*& phase, std::shared_ptr<c
   }
   planner_options.prune_irrelevant = options.prune_irrelevant;
   planner_options.deorder = options.deorder;
+  planner_options.eliminate_actions = options.eliminate_actions;
   planner_options.epsilon = options.epsilon;
   planner_options.reserve_planning_time = options.reserve_planning_time;
   planner_options.time_limit = std::max(0.0, options.time_limit - grounding);
@@ -393,6 +395,9 @@ void add_plan_command(CLI::App& app, int& exit_code) {
                           "false, must precede (orders from h^2 mutexes, Koehler & Hoffmann 2000; default on)"));
   cmd->add_flag("!--no-deorder", options->deorder,
                 "Print plans as the search scheduled them, not lifted to the order their causal links need");
+  cmd->add_flag("!--no-action-elimination", options->eliminate_actions,
+                "Keep every action of a plan found, not only those it is valid and no worse without "
+                "(greedy action elimination, Nakhost & Muller 2010)");
   cmd->add_flag("!--no-relevance", options->prune_irrelevant,
                 "Search every ground action, not only those that can contribute to the goal");
   shorthand(cmd->add_flag("!--no-repetitions", options->search.knobs.heuristic.repetitions,

@@ -12,10 +12,10 @@ bool is_helpful(const SearchNode& parent, const StepRecord& step) {
 
 class EnforcedHillClimbing : public SearchEngine {
  public:
-  EnforcedHillClimbing(SearchSpace& space, Heuristic& heuristic, bool helpful_only, SearchDeadline deadline)
-      : space_(space), heuristic_(heuristic), helpful_only_(helpful_only), deadline_(deadline) {}
+  EnforcedHillClimbing(SearchSpace& space, Heuristic& heuristic, EhcOptions options)
+      : space_(space), heuristic_(heuristic), options_(options) {}
 
-  std::string name() const override { return helpful_only_ ? "ehc (helpful actions)" : "ehc"; }
+  std::string name() const override { return options_.helpful_only ? "ehc (helpful actions)" : "ehc"; }
 
   SearchStatus step() override {
     if (!started_) {
@@ -34,16 +34,22 @@ class EnforcedHillClimbing : public SearchEngine {
     std::vector<Successor> successors = space_.successors(id, stats_);
     const SearchNode& parent = space_.node(id);
     // Helpful children first; with helpful_only, the others only when the
-    // node has no schedulable helpful child at all. Children are scheduled
-    // as they are reached: most are never looked at.
+    // node has no schedulable helpful child at all. The others (and the
+    // helpful ones, unless they go shortest first) are scheduled as they are
+    // reached: most are never looked at.
     const auto helpful_end = std::stable_partition(successors.begin(), successors.end(),
                                                    [&](const Successor& s) { return is_helpful(parent, s.step); });
     const std::size_t helpful = static_cast<std::size_t>(helpful_end - successors.begin());
+    std::vector<std::optional<Child>> scheduled = options_.makespan_first
+                                                      ? shortest_first(id, plan, successors, helpful)
+                                                      : std::vector<std::optional<Child>>(helpful);
     bool any_helpful = false;
     for (std::size_t i = 0; i < successors.size(); ++i) {
-      if (helpful_only_ && any_helpful && i >= helpful) break;
-      if (passed(deadline_)) return SearchStatus::InProgress;
-      std::optional<Child> child = space_.schedule(id, plan, std::move(successors[i]), stats_);
+      if (options_.helpful_only && any_helpful && i >= helpful) break;
+      if (passed(options_.deadline)) return SearchStatus::InProgress;
+      std::optional<Child> child = i < helpful && options_.makespan_first
+                                       ? std::move(scheduled[i])
+                                       : space_.schedule(id, plan, std::move(successors[i]), stats_);
       if (!child) continue;
       any_helpful = any_helpful || i < helpful;
       if (space_.known(*child, stats_)) continue;
@@ -66,6 +72,26 @@ class EnforcedHillClimbing : public SearchEngine {
   }
 
  private:
+  // The first `helpful` successors scheduled, those that cannot be
+  // scheduled dropped, the rest by the makespan they give the partial plan
+  // (stable: equals keep the order they were generated in).
+  std::vector<std::optional<Child>> shortest_first(NodeId id, const PartialPlan& plan,
+                                                   std::vector<Successor>& successors, std::size_t helpful) {
+    std::vector<Child> children;
+    children.reserve(helpful);
+    for (std::size_t i = 0; i < helpful; ++i) {
+      if (passed(options_.deadline)) break;
+      if (std::optional<Child> child = space_.schedule(id, plan, std::move(successors[i]), stats_)) {
+        children.push_back(std::move(*child));
+      }
+    }
+    std::stable_sort(children.begin(), children.end(),
+                     [](const Child& a, const Child& b) { return a.node.makespan < b.node.makespan; });
+    std::vector<std::optional<Child>> ordered(helpful);  // the unscheduled at the back, empty
+    for (std::size_t i = 0; i < children.size(); ++i) ordered[i] = std::move(children[i]);
+    return ordered;
+  }
+
   bool reached_goal(NodeId id, const PartialPlan& plan) {
     if (space_.node(id).h != 0) return false;
     solution_ = space_.goal_reached(id, plan);
@@ -74,8 +100,7 @@ class EnforcedHillClimbing : public SearchEngine {
 
   SearchSpace& space_;
   Heuristic& heuristic_;
-  bool helpful_only_;
-  SearchDeadline deadline_;
+  EhcOptions options_;
   bool started_ = false;
   double best_h_ = 0;
   std::deque<NodeId> open_;
@@ -84,8 +109,8 @@ class EnforcedHillClimbing : public SearchEngine {
 }  // namespace
 
 std::unique_ptr<SearchEngine> make_enforced_hill_climbing(SearchSpace& space, Heuristic& heuristic,
-                                                          bool helpful_only, SearchDeadline deadline) {
-  return std::make_unique<EnforcedHillClimbing>(space, heuristic, helpful_only, deadline);
+                                                          EhcOptions options) {
+  return std::make_unique<EnforcedHillClimbing>(space, heuristic, options);
 }
 
 }  // namespace alplan

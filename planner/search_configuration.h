@@ -66,6 +66,8 @@ struct EngineSpec {
   std::uint64_t expansions = 0;
   double time_share = 1.0;
   bool goal_orders = false;  // ehc, gbfs
+  // ehc: helpful children tried shortest makespan first (EhcOptions)
+  bool makespan_first = true;
   bool typed = false;        // gbfs: a type-based queue beside the others
   int novelty = 0;           // gbfs: order by novelty of this width within h (0: by h)
   bool deferred = false;     // gbfs, wastar: evaluate when expanded

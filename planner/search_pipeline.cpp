@@ -75,7 +75,7 @@ std::unique_ptr<SearchEngine> make_engine(const EngineSpec& spec, SearchSpace& s
   const bool metric_order = spec.kind == EngineSpec::Kind::Wastar && spec.metric_order && context.metric;
   Heuristic& heuristic = context.heuristic(spec.heuristic, metric_order);
   if (spec.kind == EngineSpec::Kind::Ehc) {
-    return make_enforced_hill_climbing(space, heuristic, true, context.limits.deadline);
+    return make_enforced_hill_climbing(space, heuristic, {true, spec.makespan_first, context.limits.deadline});
   }
   BestFirstOptions options;
   options.weight = spec.kind == EngineSpec::Kind::Wastar ? spec.weight : 0.0;

@@ -10,6 +10,7 @@
 #include "planner/formula_evaluation.h"
 #include "planner/happening_executor.h"
 #include "planner/linear_metric.h"
+#include "planner/action_elimination.h"
 #include "planner/plan_deordering.h"
 #include "planner/search_engine.h"
 #include "planner/search_pipeline.h"
@@ -315,25 +316,56 @@ class PlanChecker {
       : task_(std::move(task)), start_(start), index_(index), search_start_(search_start), options_(options),
         from_initial_(is_initial_start(*task_, start) && !options.validate_ground) {
     // The plan validator grounds the task again for itself: only from the start.
-    if (from_initial_) validator_.emplace(task_->lifted, ValidatorOptions{options.tolerance, false});
+    if (from_initial_) {
+      validator_.emplace(task_->lifted, ValidatorOptions{options.tolerance, false});
+      exact_validator_.emplace(task_->lifted, ValidatorOptions{options.tolerance, false, 0.0});
+    }
   }
 
-  FoundPlan check(const Solution& solution, const std::string& engine) {
+  FoundPlan check(const Solution& solution, const std::string& engine, const SearchDeadline& deadline) {
     FoundPlan found = validated(solution, engine);
     if (!found.validation.valid || !options_.deorder) return found;
     const DeorderingInput input{index_, search_start_.state, search_start_.release, options_.epsilon};
-    if (const std::optional<Solution> lifted = deorder(input, solution)) {
+    Solution kept = solution;
+    if (std::optional<Solution> lifted = deorder(input, solution)) {
       FoundPlan candidate = validated(*lifted, engine + ", deordered");
-      // Better under the metric's own direction (a maximised one is larger);
-      // at an equal value, shorter (a task without a metric counts steps).
-      const double gain = minimised(*task_, found.validation.value) - minimised(*task_, candidate.validation.value);
-      const double shorter = found.validation.makespan - candidate.validation.makespan;
-      if (candidate.validation.valid && (gain > 1e-9 || (gain >= -1e-9 && shorter > 1e-9))) return candidate;
+      if (improves(found, candidate, false)) {
+        found = std::move(candidate);
+        kept = std::move(*lifted);
+      }
     }
+    // Only from the task's start, where the exact validator can judge: VAL
+    // compares numbers with a slack, so `(> lit 0)` holds at 0 and a plan
+    // without the steps that raise `lit` passes it (match-cellar's mends
+    // without their matches); the search never relies on the slack, and
+    // neither may a removal.
+    if (!options_.eliminate_actions || !exact_validator_) return found;
+    const std::string eliminated = found.engine + ", actions eliminated";
+    auto accept = [&](const Solution& fewer) {
+      FoundPlan candidate = validated(fewer, eliminated);
+      if (!improves(found, candidate, true)) return false;
+      if (!exact_validator_->validate(read_plan(candidate.text, "planner output").plan).valid) return false;
+      found = std::move(candidate);
+      return true;
+    };
+    eliminate_actions(input, kept, accept, {deadline});
     return found;
   }
 
  private:
+  // Whether a valid candidate replaces the plan: better under the metric's
+  // own direction (a maximised one is larger), or at an equal value shorter
+  // (a task without a metric counts steps); `fewer_actions`: at an equal
+  // value and makespan too, since it has fewer actions.
+  bool improves(const FoundPlan& plan, const FoundPlan& candidate, bool fewer_actions) const {
+    if (!candidate.validation.valid) return false;
+    const double gain = minimised(*task_, plan.validation.value) - minimised(*task_, candidate.validation.value);
+    const double shorter = plan.validation.makespan - candidate.validation.makespan;
+    if (gain > 1e-9) return true;
+    if (gain < -1e-9) return false;
+    return shorter > 1e-9 || (fewer_actions && shorter >= -1e-9);
+  }
+
   FoundPlan validated(const Solution& solution, const std::string& engine) {
     FoundPlan found;
     std::vector<ActionId> actions;
@@ -352,6 +384,7 @@ class PlanChecker {
   const PlannerOptions& options_;
   bool from_initial_;
   std::optional<PlanValidator> validator_;
+  std::optional<PlanValidator> exact_validator_;  // numbers compared without VAL's slack
 };
 
 }  // namespace
@@ -525,7 +558,7 @@ PlannerResult TemporalPlanner::search_once(const PlanningStart& start, const std
   double best_objective = std::numeric_limits<double>::infinity();
   auto on_solution = [&](const Solution& solution, const std::string& engine) -> std::optional<SolutionValue> {
     const Clock::time_point validation_began = Clock::now();
-    FoundPlan found = checker.check(solution, engine);
+    FoundPlan found = checker.check(solution, engine, limits.deadline);
     found.seconds = std::chrono::duration<double>(validation_began - search_began).count();
     result.times.validation += since(validation_began);
     if (!found.validation.valid) {

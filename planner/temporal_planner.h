@@ -64,6 +64,10 @@ struct PlannerOptions {
   // Lift each plan to the partial order its causal links need and schedule
   // it again (planner/plan_deordering.h); kept when valid and no worse.
   bool deorder = true;
+  // Then remove, one at a time, actions the plan is valid and no worse
+  // without (planner/action_elimination.h); only with deorder, whose
+  // causal explanation it reschedules by.
+  bool eliminate_actions = true;
   // Validate plans with the ground task's own executor instead of grounding
   // its lifted task again: for a task a pass derived (pddl3_compilation.h),
   // whose lifted task only names the actions the pass added.

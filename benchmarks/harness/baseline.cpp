@@ -5,17 +5,11 @@
 #include <sstream>
 #include <vector>
 
+#include "benchmarks/harness/table.h"
 #include "pddl_parser/parser.h"
 
 namespace alplan::bench {
 namespace {
-
-std::vector<std::string> cells_of(const std::string& line) {
-  std::vector<std::string> cells;
-  std::stringstream s(line);
-  for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
-  return cells;
-}
 
 double number_or(const std::string& text, double fallback) {
   try {
@@ -61,7 +55,7 @@ Baseline load_pddl3(const std::string& folder, std::ifstream& csv) {
   std::string line;
   std::getline(csv, line);
   while (std::getline(csv, line)) {
-    const std::vector<std::string> c = cells_of(line);
+    const std::vector<std::string> c = csv_cells(line);
     if (c.size() < 11) continue;
     const std::string file = folder + "/../" + c[0] + "/instances/instance-" + c[1] + ".pddl";
     const std::string key = problem_key(std::filesystem::weakly_canonical(file).string());
@@ -105,7 +99,7 @@ Baseline Baseline::load(const std::string& folder) {
   std::string line;
   std::getline(runs, line);  // planner,domain_file,problem_file,status,wall_s,max_rss_kb,makespan,n_actions,val_status,val_value
   while (std::getline(runs, line)) {
-    const std::vector<std::string> c = cells_of(line);
+    const std::vector<std::string> c = csv_cells(line);
     if (c.size() < 10) continue;
     ReferenceRun r;
     r.status = c[3];
@@ -117,7 +111,7 @@ Baseline Baseline::load(const std::string& folder) {
   std::ifstream quality(folder + "/quality_ref.csv");
   std::getline(quality, line);  // domain_file,problem_file,optic_first,optic_anytime_60s,popf,best
   while (std::getline(quality, line)) {
-    const std::vector<std::string> c = cells_of(line);
+    const std::vector<std::string> c = csv_cells(line);
     if (c.size() < 6) continue;
     const std::string key = problem_key(c[1]);
     baseline.best[key] = number_or(c[5], 0.0);

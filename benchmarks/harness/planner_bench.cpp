@@ -18,6 +18,7 @@
 
 #include "benchmarks/harness/baseline.h"
 #include "benchmarks/harness/planner_comparison.h"
+#include "benchmarks/harness/quality_report.h"
 #include "benchmarks/harness/run_status.h"
 #include "benchmarks/harness/slurm_array.h"
 #include "benchmarks/harness/suite.h"
@@ -37,6 +38,7 @@ struct Run {
   double value = 0;
   std::string message;
   std::string plan_file;  // where our plan went (relative to the results folder when there is one)
+  std::vector<PlanFound> plans;  // every plan the run printed, in order (anytime: each better)
   std::map<std::string, ExternalRun> external;  // the other planners' runs, by name
 };
 
@@ -83,7 +85,11 @@ Run run_ours(const SuiteProblem& p, const PlannerBenchOptions& options, const st
   run.makespan = best["makespan"];
   run.value = best["value"];  // VAL's value: the metric, as the baseline reports it
   const nlohmann::json& plans = j["plans"];
-  run.first_plan = plans.front()["found_after_seconds"].get<double>() + j["seconds"]["grounding"].get<double>();
+  const double grounding = j["seconds"]["grounding"].get<double>();
+  run.first_plan = plans.front()["found_after_seconds"].get<double>() + grounding;
+  for (const nlohmann::json& found : plans) {
+    run.plans.push_back({found["found_after_seconds"].get<double>() + grounding, found["value"].get<double>()});
+  }
   // Our validator, again, as a separate process on the written file.
   const RunResult v = run_process({options.alplan, "validate", p.domain_file, p.problem_file, plan_file}, {60, 4096});
   if (v.exit_code != 0) {
@@ -98,6 +104,12 @@ nlohmann::json to_json(const ExternalRun& r) {
           {"message", r.message}};
 }
 
+nlohmann::json plans_json(const std::vector<PlanFound>& plans) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const PlanFound& p : plans) list.push_back({{"seconds", p.seconds}, {"value", p.value}});
+  return list;
+}
+
 nlohmann::json to_json(const Run& run) {
   nlohmann::json external = nlohmann::json::object();
   for (const auto& [name, r] : run.external) external[name] = to_json(r);
@@ -105,7 +117,7 @@ nlohmann::json to_json(const Run& run) {
           {"domain", run.problem.domain}, {"number", run.problem.number}, {"status", run.status},
           {"seconds", run.seconds}, {"first_plan", run.first_plan}, {"max_rss_kib", run.max_rss_kib},
           {"makespan", run.makespan}, {"value", run.value}, {"message", run.message},
-          {"plan_file", run.plan_file}, {"external", external}};
+          {"plan_file", run.plan_file}, {"plans", plans_json(run.plans)}, {"external", external}};
 }
 
 Run run_from_json(const nlohmann::json& j) {
@@ -122,6 +134,9 @@ Run run_from_json(const nlohmann::json& j) {
   run.value = j.at("value");
   run.message = j.at("message");
   run.plan_file = j.value("plan_file", "");
+  for (const nlohmann::json& p : j.value("plans", nlohmann::json::array())) {
+    run.plans.push_back({p.at("seconds").get<double>(), p.at("value").get<double>()});
+  }
   for (const auto& [name, e] : j.value("external", nlohmann::json::object()).items()) {
     ExternalRun r;
     r.status = e.at("status");
@@ -413,6 +428,26 @@ RunRow run_row(const Run& run, std::size_t index, const std::vector<ExternalPlan
   return row;
 }
 
+// The quality of first and best plans against the baseline's quality_ref.csv
+// and the reference files given (quality_report.h).
+void report_quality(const std::vector<Run>& runs, const Baseline& baseline, const PlannerBenchOptions& options,
+                    std::ostream& out) {
+  ReferenceValues references;
+  const std::string quality_ref = options.baseline + "/quality_ref.csv";
+  if (!options.baseline.empty() && std::filesystem::exists(quality_ref)) add_reference_file(references, quality_ref);
+  for (const std::string& file : options.references) add_reference_file(references, file);
+  std::vector<QualityRun> quality;
+  for (const Run& run : runs) {
+    quality.push_back({run.problem.domain, problem_key(run.problem.problem_file),
+                       run.status == "solved" ? run.plans : std::vector<PlanFound>{}});
+  }
+  QualityReportOptions report;
+  report.time_limit = options.limits.seconds;
+  report.out_dir = options.out_dir;
+  report.maximized = [&](const std::string& problem) { return baseline.maximized(problem); };
+  write_quality_report(quality, references, report, out);
+}
+
 int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions& options, std::ostream& out) {
   std::vector<ProblemRuns> others;
   for (const Run& run : runs) others.push_back({run.problem.problem_file, run.external});
@@ -495,7 +530,8 @@ int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions
                     {"first_plan_seconds", run.first_plan}, {"wall_seconds", run.seconds},
                     {"max_rss_kib", run.max_rss_kib}, {"makespan", run.makespan}, {"value", run.value},
                     {"reference", reference ? nlohmann::json(*reference) : nlohmann::json()},
-                    {"message", run.message}, {"plan_file", run.plan_file}, {"external", external}});
+                    {"message", run.message}, {"plan_file", run.plan_file}, {"plans", plans_json(run.plans)},
+                    {"external", external}});
   }
   const Table summary = summary_table(scores, baseline);
   summary.print(out);
@@ -504,6 +540,7 @@ int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions
     out << "\n";
     metric.print(out);
   }
+  report_quality(runs, baseline, options, out);
   out << "\ninvalid plans: " << invalid << "\n";
   // How well the planner keeps its limit: the process's wall time beyond it
   // (the runner kills at the limit + 5 s, so no overrun shows more).

@@ -26,6 +26,9 @@ struct PlannerBenchOptions {
   std::string out_dir;
   std::string alplan;      // executable: `alplan plan --json`, `alplan validate`
   std::string baseline;    // a baseline folder (baseline.h), "" for none
+  // CSV files of reference values per problem beside the baseline's
+  // quality_ref.csv (quality_report.h).
+  std::vector<std::string> references;
   RunLimits limits;
   int jobs = 1;
   bool progress_bar = false;  // a bar with rate and ETA on the progress stream (a terminal)

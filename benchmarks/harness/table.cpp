@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <ostream>
+#include <sstream>
 
 namespace alplan::bench {
 
@@ -59,6 +60,16 @@ void Table::write_csv(std::ostream& out) const {
   };
   line(header_);
   for (const auto& row : rows_) line(row);
+}
+
+std::vector<std::string> csv_cells(const std::string& text) {
+  // A file written on Windows (quality_ref.csv is) ends its lines "\r\n".
+  const std::string line = !text.empty() && text.back() == '\r' ? text.substr(0, text.size() - 1) : text;
+  std::vector<std::string> cells;
+  std::stringstream in(line);
+  for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
+  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  return cells;
 }
 
 }  // namespace alplan::bench

@@ -22,6 +22,10 @@ class Table {
   std::vector<std::vector<std::string>> rows_;
 };
 
+// The cells of one CSV line (no quoting: the harness's files have none); a
+// trailing comma is an empty last cell, a trailing carriage return is no part of it.
+std::vector<std::string> csv_cells(const std::string& line);
+
 // Fixed-point text with `decimals` digits.
 std::string fixed(double value, int decimals);
 

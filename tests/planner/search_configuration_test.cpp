@@ -83,6 +83,12 @@ TEST_CASE("the anytime alias runs weighted A* with falling weights after the def
   CHECK_FALSE(e.own_heuristic);
 }
 
+TEST_CASE("the quality alias is the anytime configuration, by name and inside an expression") {
+  CHECK(alias("quality").engine == alias("anytime").engine);
+  CHECK(parse_search_configuration("quality").engine == alias("anytime").engine);
+  CHECK(configuration_named("quality").engine == configuration_named("anytime").engine);
+}
+
 TEST_CASE("components take their options by name") {
   const EngineSpec e =
       parse_search_configuration(
@@ -104,6 +110,12 @@ TEST_CASE("components take their options by name") {
   CHECK(e.children[1].children[1].weight == 2.0);
   CHECK_FALSE(e.children[2].heuristic.repetitions);
   CHECK_FALSE(e.children[2].heuristic.balance);
+  // EHC tries helpful children shortest makespan first unless told otherwise.
+  CHECK(e.children[0].makespan_first);
+  const EngineSpec listed = parse_search_configuration("ehc(trpg, children=listed)").engine;
+  CHECK_FALSE(listed.makespan_first);
+  CHECK(SearchConfiguration{listed}.to_string() == "ehc(trpg, children=listed)");
+  CHECK(parse_search_configuration("ehc(trpg, children=makespan)").engine.makespan_first);
 }
 
 TEST_CASE("a malformed configuration is refused with its place and what was expected") {
@@ -122,6 +134,8 @@ TEST_CASE("a malformed configuration is refused with its place and what was expe
   CHECK(error_of("portfolio(gbfs, turns=seconds)").find("turns is expansions or evaluations") != std::string::npos);
   CHECK(error_of("portfolio(gbfs, wastar(trpg, share=0))").find("share is a share") != std::string::npos);
   CHECK(error_of("portfolio(gbfs, wastar(trpg, share=1.5))").find("share is a share") != std::string::npos);
+  CHECK(error_of("ehc(trpg, children=random)").find("children is makespan or listed") != std::string::npos);
+  CHECK(error_of("gbfs(trpg, children=listed)").find("gbfs has no option 'children'") != std::string::npos);
   CHECK(error_of("ehc(trpg, share=0.5)").find("ehc has no option 'share'") != std::string::npos);
   CHECK_THROWS_AS(alias("lama"), SearchConfigurationError);
 }

@@ -29,6 +29,7 @@ void check_solved(const std::string& domain, const std::string& problem, const P
   REQUIRE(result.status == PlannerResult::Status::Solved);
   const test::LoadedTask loaded = test::load_task_text(domain, problem);
   PlanValidator validator(loaded.normalized, {0.001, false, 0.0});
+  INFO(result.best()->engine << "\n" << result.best()->text);
   CHECK(validator.validate(read_plan(result.best()->text, "plan").plan).valid);
 }
 
