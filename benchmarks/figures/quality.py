@@ -195,3 +195,22 @@ def suite_pair_block(before=QUALITY_FIRST_BEFORE, after=QUALITY_FIRST):
             f"\n\nStatus changed on {len(changed)} problems{': ' + ', '.join(changed) if changed else ''}. "
             f"Of the problems both solve, the later run's first plan is better on {better}, equal on {equal} "
             f"and worse on {worse}.")
+
+
+OPENSTACKS_TEST_FIRST = "openstacks-6-10-first-issue48-2026-12-07"
+OPENSTACKS_TEST_ANYTIME = "openstacks-6-10-anytime-issue48-2026-12-07"
+
+
+def openstacks_test_block(first=OPENSTACKS_TEST_FIRST, anytime=OPENSTACKS_TEST_ANYTIME):
+    """openstacks 2011, instances 6-10 (the test set, run once): our first
+    and anytime makespans; ../shared has no OPTIC run on them."""
+    firsts = {r["problem"]: r for r in all_runs_of(first)}
+    anys = {r["problem"]: r for r in all_runs_of(anytime)}
+    rows = []
+    for problem in sorted(firsts, key=lambda p: int(p.rsplit("-", 1)[1].split(".")[0])):
+        f_value = values(firsts[problem])[0]
+        a_value = values(anys[problem])[1] if problem in anys else None
+        rows.append([os.path.basename(problem), firsts[problem]["status"],
+                     f"{f_value:.3f}" if f_value is not None else "-",
+                     f"{a_value:.3f}" if a_value is not None else "-"])
+    return table(["problem", "status", "ours first", "ours anytime 60 s"], rows)
