@@ -60,6 +60,28 @@ std::optional<std::uint32_t> first_unsupported(const GroundTask& task, const Sea
   return std::nullopt;
 }
 
+// Whether the propositional goal still holds after the kept steps: a
+// removal that loses it would only be refused by the judge, at the price
+// of a rescheduling and two validations.
+bool goal_kept(const GroundTask& task, const SearchState& start, const Solution& solution,
+               const std::vector<bool>& removed) {
+  std::vector<bool> facts(task.facts.size());
+  for (FactId f = 0; f < facts.size(); ++f) facts[f] = start.fact(f);
+  for (std::uint32_t i = 0; i < solution.steps.size(); ++i) {
+    if (removed[i]) continue;
+    const StepRecord& r = solution.steps[i];
+    if (r.snap.kind == SnapKind::TimedLiteral) {
+      facts[task.timed_literals[r.snap.index].fact] = task.timed_literals[r.snap.index].positive;
+      continue;
+    }
+    const HappeningEffects& e = r.snap.kind == SnapKind::End ? task.actions[r.snap.index].end
+                                                              : task.actions[r.snap.index].start;
+    for (FactId f : e.del) facts[f] = false;
+    for (FactId f : e.add) facts[f] = true;
+  }
+  return holds(task, task.goal, facts);
+}
+
 }  // namespace
 
 std::optional<std::vector<bool>> removal_set(const GroundTask& task, const SearchState& start,
@@ -71,7 +93,7 @@ std::optional<std::vector<bool>> removal_set(const GroundTask& task, const Searc
   // Each round drops the first step left without support, until none is.
   for (std::uint32_t round = 0; round < n; ++round) {
     const std::optional<std::uint32_t> failing = first_unsupported(task, start, solution, removed);
-    if (!failing) return removed;
+    if (!failing) return goal_kept(task, start, solution, removed) ? std::optional(removed) : std::nullopt;
     if (!removable(solution.steps[*failing])) return std::nullopt;
     mark_action(solution, *failing, removed);
   }

@@ -43,7 +43,7 @@ struct EliminationOptions {
 // The steps to remove with `action_step`'s action: both its snaps and every
 // later step (and its other snap) that loses its propositional support;
 // nullopt where a timed literal or the end of an action running before the
-// plan would have to go.
+// plan would have to go, or where the propositional goal is lost.
 std::optional<std::vector<bool>> removal_set(const GroundTask& task, const SearchState& start,
                                              const Solution& solution, std::uint32_t action_step);
 
@@ -51,7 +51,9 @@ std::optional<std::vector<bool>> removal_set(const GroundTask& task, const Searc
 Solution without_steps(const Solution& solution, const std::vector<bool>& removed);
 
 // The plan with every action removed that `accept` allows removing; nullopt
-// when none could be. `accept` judges a rescheduled candidate and says
+// when none could be. The result's times, steps and makespan are its own;
+// final_state and search_makespan are the given plan's (the search's
+// measure of it), not recomputed. `accept` judges a rescheduled candidate and says
 // whether it replaces the plan so far.
 std::optional<Solution> eliminate_actions(const DeorderingInput& input, const Solution& solution,
                                           const std::function<bool(const Solution&)>& accept,

@@ -3,7 +3,7 @@
 // their open lists and their pruning, and how they are combined.
 //
 //   configuration := engine
-//   engine        := ehc(HEURISTIC, expansions=N, time_share=F, goal_orders=B)
+//   engine        := ehc(HEURISTIC, expansions=N, time_share=F, goal_orders=B, children=makespan|listed)
 //                  | gbfs(HEURISTIC, queue=plain|typed, novelty=0|1|2, deferred=B, preferred=B, goal_orders=B)
 //                  | wastar(HEURISTIC, w=W, order=steps|metric, deferred=B, preferred=B)
 //                  | complete(ENGINE)               a gbfs or wastar that misses no plan
@@ -19,7 +19,8 @@
 // `gbfs(trpg)`); booleans are true/false. Named configurations (aliases):
 // `default` (EHC, falling back to a portfolio of greedy searches and
 // weighted A*, then a complete search), `anytime` (the default, then weighted
-// A* with falling weights under the best plan's value), `gbfs`, `wastar`,
+// A* with falling weights under the best plan's value), `quality` (what to
+// ask for when plan quality matters; today `anytime`), `gbfs`, `wastar`,
 // `ehc` (the default: EHC and its fallback, as `--search ehc` always meant),
 // `complete`, and `pddl3` (`preferences` around the default). On a task
 // without PDDL 3, `preferences(E)` is E; on a task with PDDL 3 any

@@ -566,6 +566,10 @@ PipelineOutcome run_pipeline(const SearchConfiguration& configuration, const Pip
     }
     const std::optional<SolutionValue> value = on_solution(*outcome.solution, outcome.engine);
     if (!value) return result;
+    // The printed plan's value may be below what the search can measure of
+    // its own plan (deordering and action elimination shortened it): later
+    // phases are bounded by it, so they look only for plans better than the
+    // one printed, not merely better than the search's.
     const double at_search = search_value(context, *outcome.solution);
     const double measured =
         value->objective

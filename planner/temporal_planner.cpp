@@ -348,19 +348,31 @@ class PlanChecker {
       found = std::move(candidate);
       return true;
     };
-    eliminate_actions(input, kept, accept, {deadline});
+    eliminate_actions(input, kept, accept, {elimination_deadline(deadline)});
     return found;
   }
 
  private:
+  // Elimination holds the plan back from the caller (and an anytime search
+  // from its next phase): at most a tenth of the time left, or a second.
+  static SearchDeadline elimination_deadline(const SearchDeadline& deadline) {
+    if (!deadline) return deadline;
+    const auto now = std::chrono::steady_clock::now();
+    const auto share = std::max<std::chrono::steady_clock::duration>(std::chrono::seconds(1), (*deadline - now) / 10);
+    return std::min(*deadline, now + share);
+  }
+
   // Whether a valid candidate replaces the plan: better under the metric's
   // own direction (a maximised one is larger), or at an equal value shorter
   // (a task without a metric counts steps); `fewer_actions`: at an equal
   // value and makespan too, since it has fewer actions.
   bool improves(const FoundPlan& plan, const FoundPlan& candidate, bool fewer_actions) const {
     if (!candidate.validation.valid) return false;
-    const double gain = minimised(*task_, plan.validation.value) - minimised(*task_, candidate.validation.value);
     const double shorter = plan.validation.makespan - candidate.validation.makespan;
+    // Without a metric the value counts steps, which a removal always
+    // lowers: an eliminated plan must not be longer either.
+    if (fewer_actions && !task_->metric && shorter < -1e-9) return false;
+    const double gain = minimised(*task_, plan.validation.value) - minimised(*task_, candidate.validation.value);
     if (gain > 1e-9) return true;
     if (gain < -1e-9) return false;
     return shorter > 1e-9 || (fewer_actions && shorter >= -1e-9);
@@ -559,7 +571,8 @@ PlannerResult TemporalPlanner::search_once(const PlanningStart& start, const std
   auto on_solution = [&](const Solution& solution, const std::string& engine) -> std::optional<SolutionValue> {
     const Clock::time_point validation_began = Clock::now();
     FoundPlan found = checker.check(solution, engine, limits.deadline);
-    found.seconds = std::chrono::duration<double>(validation_began - search_began).count();
+    // When the plan as printed existed: deordering and elimination count.
+    found.seconds = std::chrono::duration<double>(Clock::now() - search_began).count();
     result.times.validation += since(validation_began);
     if (!found.validation.valid) {
       result.status = PlannerResult::Status::InternalError;

@@ -300,6 +300,9 @@ std::optional<TestSetRun> open_test_set_run(const std::vector<SuiteProblem>& all
   return TestSetRun({*test_set, "bench planners", command_line(), options.out_dir}, options.test_set);
 }
 
+// The baseline's quality_ref.csv and the --reference files (quality_report.h).
+ReferenceValues reference_values(const PlannerBenchOptions& options);
+
 }  // namespace
 
 int run_planner_bench(const PlannerBenchOptions& options, std::ostream& out, std::ostream& progress) {
@@ -312,6 +315,9 @@ int run_planner_bench(const PlannerBenchOptions& options, std::ostream& out, std
     });
     if (suite.empty()) throw std::runtime_error("--domains: no domain of the suite begins with any of them");
   }
+  // A reference file that cannot be read fails here, not after the runs
+  // (a test-set run would be spent with nothing recorded).
+  reference_values(options);
   switch (options.array.role) {
     case ArrayRole::submit: {
       // The array's tasks and merge are one run: recorded when submitted,
@@ -430,12 +436,17 @@ RunRow run_row(const Run& run, std::size_t index, const std::vector<ExternalPlan
 
 // The quality of first and best plans against the baseline's quality_ref.csv
 // and the reference files given (quality_report.h).
-void report_quality(const std::vector<Run>& runs, const Baseline& baseline, const PlannerBenchOptions& options,
-                    std::ostream& out) {
+ReferenceValues reference_values(const PlannerBenchOptions& options) {
   ReferenceValues references;
   const std::string quality_ref = options.baseline + "/quality_ref.csv";
   if (!options.baseline.empty() && std::filesystem::exists(quality_ref)) add_reference_file(references, quality_ref);
   for (const std::string& file : options.references) add_reference_file(references, file);
+  return references;
+}
+
+void report_quality(const std::vector<Run>& runs, const Baseline& baseline, const PlannerBenchOptions& options,
+                    std::ostream& out) {
+  const ReferenceValues references = reference_values(options);
   std::vector<QualityRun> quality;
   for (const Run& run : runs) {
     quality.push_back({run.problem.domain, problem_key(run.problem.problem_file),

@@ -32,7 +32,7 @@ const char* const kKey2 = "ipc/ipc-2011/d/instances/instance-2.pddl";
 
 }  // namespace
 
-TEST_CASE("a reference file gives its value columns; times, the problem and best are not planners") {
+TEST_CASE("a reference file gives its value columns, not its times, its problem or its best") {
   const std::string dir = temp_folder("refs");
   // Lines end "\r\n", as quality_ref.csv's do.
   std::ofstream(dir + "/ref.csv") << "domain_file,problem_file,optic_first,optic_first_s,best\r\n"

@@ -12,14 +12,13 @@ using namespace alplan;
 
 namespace {
 
-PlannerResult plan_openstacks(int instance, const std::string& search, bool eliminate = true) {
+PlannerResult plan_openstacks(int instance, const std::string& search) {
   const std::string dir = test::benchmarks_dir() + "/ipc/ipc-2011/openstacks-temporal-satisficing/";
   const test::LoadedTask loaded = test::load_task(dir + "domains/domain-" + std::to_string(instance) + ".pddl",
                                                   dir + "instances/instance-" + std::to_string(instance) + ".pddl");
   PlannerOptions options;
   options.search = configuration_named(search);
   options.time_limit = 30.0;
-  options.eliminate_actions = eliminate;
   return Planner(ground(loaded.normalized), options).plan();
 }
 
