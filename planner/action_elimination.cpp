@@ -1,5 +1,6 @@
 #include "planner/action_elimination.h"
 
+#include <optional>
 #include <vector>
 
 namespace alplan {
@@ -33,53 +34,38 @@ bool holds(const GroundTask& task, const ConditionSet& c, const std::vector<bool
   return true;
 }
 
-// The first kept step, in the plan's order, whose propositional conditions
-// fail once the removed steps are gone; nullopt when none does.
-std::optional<std::uint32_t> first_unsupported(const GroundTask& task, const SearchState& start,
-                                               const Solution& solution, const std::vector<bool>& removed) {
-  std::vector<bool> facts(task.facts.size());
-  for (FactId f = 0; f < facts.size(); ++f) facts[f] = start.fact(f);
-  auto apply = [&](const HappeningEffects& e) {
-    for (FactId f : e.del) facts[f] = false;
-    for (FactId f : e.add) facts[f] = true;
-  };
-  for (std::uint32_t i = 0; i < solution.steps.size(); ++i) {
-    if (removed[i]) continue;
-    const StepRecord& r = solution.steps[i];
-    if (r.snap.kind == SnapKind::TimedLiteral) {
-      const GroundTimedLiteral& til = task.timed_literals[r.snap.index];
-      facts[til.fact] = til.positive;
-      continue;
-    }
-    const GroundAction& a = task.actions[r.snap.index];
-    const bool end = r.snap.kind == SnapKind::End;
-    // An end also needs its invariant still to hold (it is checked up to it).
-    if (!holds(task, end ? a.at_end : a.at_start, facts) || (end && !holds(task, a.over_all, facts))) return i;
-    apply(end ? a.end : a.start);
-  }
-  return std::nullopt;
-}
+// The kept steps replayed in the plan's order on their propositional
+// conditions and effects: the first whose condition fails, or the facts at
+// the end.
+struct Replay {
+  std::optional<std::uint32_t> failing;
+  std::vector<bool> facts;
+};
 
-// Whether the propositional goal still holds after the kept steps: a
-// removal that loses it would only be refused by the judge, at the price
-// of a rescheduling and two validations.
-bool goal_kept(const GroundTask& task, const SearchState& start, const Solution& solution,
-               const std::vector<bool>& removed) {
-  std::vector<bool> facts(task.facts.size());
-  for (FactId f = 0; f < facts.size(); ++f) facts[f] = start.fact(f);
+Replay replay(const GroundTask& task, const SearchState& start, const Solution& solution,
+              const std::vector<bool>& removed) {
+  Replay r{std::nullopt, std::vector<bool>(task.facts.size())};
+  for (FactId f = 0; f < r.facts.size(); ++f) r.facts[f] = start.fact(f);
   for (std::uint32_t i = 0; i < solution.steps.size(); ++i) {
     if (removed[i]) continue;
-    const StepRecord& r = solution.steps[i];
-    if (r.snap.kind == SnapKind::TimedLiteral) {
-      facts[task.timed_literals[r.snap.index].fact] = task.timed_literals[r.snap.index].positive;
+    const StepRecord& step = solution.steps[i];
+    if (step.snap.kind == SnapKind::TimedLiteral) {
+      const GroundTimedLiteral& til = task.timed_literals[step.snap.index];
+      r.facts[til.fact] = til.positive;
       continue;
     }
-    const HappeningEffects& e = r.snap.kind == SnapKind::End ? task.actions[r.snap.index].end
-                                                              : task.actions[r.snap.index].start;
-    for (FactId f : e.del) facts[f] = false;
-    for (FactId f : e.add) facts[f] = true;
+    const GroundAction& a = task.actions[step.snap.index];
+    const bool end = step.snap.kind == SnapKind::End;
+    // An end also needs its invariant still to hold (it is checked up to it).
+    if (!holds(task, end ? a.at_end : a.at_start, r.facts) || (end && !holds(task, a.over_all, r.facts))) {
+      r.failing = i;
+      return r;
+    }
+    const HappeningEffects& e = end ? a.end : a.start;
+    for (FactId f : e.del) r.facts[f] = false;
+    for (FactId f : e.add) r.facts[f] = true;
   }
-  return holds(task, task.goal, facts);
+  return r;
 }
 
 }  // namespace
@@ -90,12 +76,14 @@ std::optional<std::vector<bool>> removal_set(const GroundTask& task, const Searc
   if (action_step >= n || !removable(solution.steps[action_step])) return std::nullopt;
   std::vector<bool> removed(n, false);
   mark_action(solution, action_step, removed);
-  // Each round drops the first step left without support, until none is.
+  // Each round drops the first step left without support, until none is;
+  // a removal that loses the propositional goal would only be refused by
+  // the judge, at the price of a rescheduling and two validations.
   for (std::uint32_t round = 0; round < n; ++round) {
-    const std::optional<std::uint32_t> failing = first_unsupported(task, start, solution, removed);
-    if (!failing) return goal_kept(task, start, solution, removed) ? std::optional(removed) : std::nullopt;
-    if (!removable(solution.steps[*failing])) return std::nullopt;
-    mark_action(solution, *failing, removed);
+    const Replay r = replay(task, start, solution, removed);
+    if (!r.failing) return holds(task, task.goal, r.facts) ? std::optional(removed) : std::nullopt;
+    if (!removable(solution.steps[*r.failing])) return std::nullopt;
+    mark_action(solution, *r.failing, removed);
   }
   return removed;
 }

@@ -42,7 +42,7 @@ class EnforcedHillClimbing : public SearchEngine {
     const std::size_t helpful = static_cast<std::size_t>(helpful_end - successors.begin());
     std::vector<std::optional<Child>> scheduled = options_.makespan_first
                                                       ? shortest_first(id, plan, successors, helpful)
-                                                      : std::vector<std::optional<Child>>(helpful);
+                                                      : std::vector<std::optional<Child>>{};
     bool any_helpful = false;
     for (std::size_t i = 0; i < successors.size(); ++i) {
       if (options_.helpful_only && any_helpful && i >= helpful) break;

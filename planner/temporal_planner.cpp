@@ -316,10 +316,7 @@ class PlanChecker {
       : task_(std::move(task)), start_(start), index_(index), search_start_(search_start), options_(options),
         from_initial_(is_initial_start(*task_, start) && !options.validate_ground) {
     // The plan validator grounds the task again for itself: only from the start.
-    if (from_initial_) {
-      validator_.emplace(task_->lifted, ValidatorOptions{options.tolerance, false});
-      exact_validator_.emplace(task_->lifted, ValidatorOptions{options.tolerance, false, 0.0});
-    }
+    if (from_initial_) validator_.emplace(task_->lifted, ValidatorOptions{options.tolerance, false});
   }
 
   FoundPlan check(const Solution& solution, const std::string& engine, const SearchDeadline& deadline) {
@@ -339,12 +336,12 @@ class PlanChecker {
     // without the steps that raise `lit` passes it (match-cellar's mends
     // without their matches); the search never relies on the slack, and
     // neither may a removal.
-    if (!options_.eliminate_actions || !exact_validator_) return found;
+    if (!options_.eliminate_actions || !from_initial_) return found;
     const std::string eliminated = found.engine + ", actions eliminated";
     auto accept = [&](const Solution& fewer) {
       FoundPlan candidate = validated(fewer, eliminated);
       if (!improves(found, candidate, true)) return false;
-      if (!exact_validator_->validate(read_plan(candidate.text, "planner output").plan).valid) return false;
+      if (!validator_->validate_exactly(read_plan(candidate.text, "planner output").plan).valid) return false;
       found = std::move(candidate);
       return true;
     };
@@ -396,7 +393,6 @@ class PlanChecker {
   const PlannerOptions& options_;
   bool from_initial_;
   std::optional<PlanValidator> validator_;
-  std::optional<PlanValidator> exact_validator_;  // numbers compared without VAL's slack
 };
 
 }  // namespace

@@ -127,9 +127,20 @@ std::optional<std::size_t> PlanValidator::instantiate_step(const PlanStep& step,
   return world_->actions.size() - 1;
 }
 
-ValidationResult PlanValidator::validate(const Plan& plan) { return validate(plan, HappeningObserver{}); }
+ValidationResult PlanValidator::validate(const Plan& plan) { return run(plan, HappeningObserver{}, options_); }
 
 ValidationResult PlanValidator::validate(const Plan& plan, const HappeningObserver& observer) {
+  return run(plan, observer, options_);
+}
+
+ValidationResult PlanValidator::validate_exactly(const Plan& plan) {
+  ValidatorOptions exact = options_;
+  exact.numeric_slack = 0.0;
+  return run(plan, HappeningObserver{}, exact);
+}
+
+ValidationResult PlanValidator::run(const Plan& plan, const HappeningObserver& observer,
+                                    const ValidatorOptions& options) {
   ValidationResult result;
   if (!world_->lifted->unsupported.empty()) {
     Violation v;
@@ -147,7 +158,7 @@ ValidationResult PlanValidator::validate(const Plan& plan, const HappeningObserv
     std::optional<std::size_t> action = instantiate_step(step, i, error);
     if (!action) {
       result.violations.push_back(error);
-      if (!options_.report_all) break;
+      if (!options.report_all) break;
       continue;
     }
     const double start = step.time ? *step.time : (untimed_clock += 1.0);
@@ -157,7 +168,7 @@ ValidationResult PlanValidator::validate(const Plan& plan, const HappeningObserv
     result.violation = result.violations.front();
     return result;
   }
-  HappeningExecutor executor(*world_, options_);
+  HappeningExecutor executor(*world_, options);
   if (observer) executor.set_observer(observer);
   return executor.run(steps, plan.steps.size());
 }

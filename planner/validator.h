@@ -55,6 +55,10 @@ class PlanValidator {
   ValidationResult validate(const Plan& plan);
   // The same, with `observer` called after each happening (a state trace).
   ValidationResult validate(const Plan& plan, const HappeningObserver& observer);
+  // The same with numbers compared exactly (numeric_slack 0), whatever the
+  // options: the planner's own semantics, for a plan it changed after the
+  // search (planner/action_elimination.h), on the same grounded world.
+  ValidationResult validate_exactly(const Plan& plan);
   // The task as the validator grounds it (open: it grows with the plans).
   const GroundTask& world() const { return *world_; }
   // A snapshot of it, with every static condition kept (the planner's task
@@ -64,6 +68,7 @@ class PlanValidator {
  private:
   // The ground action of a step, instantiated once and cached.
   std::optional<std::size_t> instantiate_step(const PlanStep& step, std::size_t index, Violation& error);
+  ValidationResult run(const Plan& plan, const HappeningObserver& observer, const ValidatorOptions& options);
 
   std::shared_ptr<GroundTask> world_;
   StaticFacts statics_;

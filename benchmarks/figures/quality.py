@@ -61,6 +61,13 @@ def values(run):
     return plans[0]["value"], min(p["value"] for p in plans)
 
 
+def best_known(ours, q):
+    """The least of our values and quality_ref.csv's for the problem (None when there is none)."""
+    known = [v for v in list(ours) + ([q["best"], q["optic_first"], q["optic_anytime_60s"], q["popf"]] if q else [])
+             if v is not None]
+    return min(known) if known else None
+
+
 def score(value, best):
     if value is None or best is None:
         return 0.0
@@ -81,13 +88,11 @@ def first_plans_block(folder=QUALITY_FIRST):
         ours_score = optic_score = 0.0
         for r in by_domain[domain]:
             q = ref.get(r["problem"])
-            first, best = values(r)
-            known = [v for v in ([first] + ([q["best"], q["optic_first"], q["optic_anytime_60s"], q["popf"]]
-                                            if q else [])) if v is not None]
-            best_known = min(known) if known else None
-            ours_score += score(first, best_known)
+            first, _ = values(r)
+            known = best_known([first], q)
+            ours_score += score(first, known)
             optic = q["optic_first"] if q else None
-            optic_score += score(optic, best_known)
+            optic_score += score(optic, known)
             if first is None or optic is None:
                 continue
             if first < optic - TIE:
@@ -126,13 +131,11 @@ def anytime_block(folder=QUALITY_ANYTIME):
         for r in by_domain[domain]:
             q = ref.get(r["problem"])
             first, best = values(r)
-            known = [v for v in ([first, best] + ([q["best"], q["optic_first"], q["optic_anytime_60s"], q["popf"]]
-                                                  if q else [])) if v is not None]
-            best_known = min(known) if known else None
-            known_here += best_known is not None
+            known = best_known([first, best], q)
+            known_here += known is not None
             for i, v in enumerate((first, best, q["optic_first"] if q else None,
                                    q["optic_anytime_60s"] if q else None)):
-                sums[i] += score(v, best_known)
+                sums[i] += score(v, known)
         rows.append([domain, known_here] + [f"{s:.2f}" for s in sums])
         totals = [a + b for a, b in zip(totals, sums)]
         known_total += known_here

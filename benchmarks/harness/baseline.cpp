@@ -2,7 +2,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <vector>
 
 #include "benchmarks/harness/table.h"
@@ -11,13 +10,7 @@
 namespace alplan::bench {
 namespace {
 
-double number_or(const std::string& text, double fallback) {
-  try {
-    return text.empty() ? fallback : std::stod(text);
-  } catch (const std::exception&) {
-    return fallback;
-  }
-}
+double number_or(const std::string& text, double fallback) { return csv_number(text).value_or(fallback); }
 
 }  // namespace
 

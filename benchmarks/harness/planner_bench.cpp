@@ -39,6 +39,7 @@ struct Run {
   std::string message;
   std::string plan_file;  // where our plan went (relative to the results folder when there is one)
   std::vector<PlanFound> plans;  // every plan the run printed, in order (anytime: each better)
+  std::string engine;  // what found the best plan and what shortened it ("..., deordered, actions eliminated")
   std::map<std::string, ExternalRun> external;  // the other planners' runs, by name
 };
 
@@ -84,6 +85,7 @@ Run run_ours(const SuiteProblem& p, const PlannerBenchOptions& options, const st
   const nlohmann::json& best = j["best"];
   run.makespan = best["makespan"];
   run.value = best["value"];  // VAL's value: the metric, as the baseline reports it
+  run.engine = best["search"].get<std::string>();
   const nlohmann::json& plans = j["plans"];
   const double grounding = j["seconds"]["grounding"].get<double>();
   run.first_plan = plans.front()["found_after_seconds"].get<double>() + grounding;
@@ -117,7 +119,8 @@ nlohmann::json to_json(const Run& run) {
           {"domain", run.problem.domain}, {"number", run.problem.number}, {"status", run.status},
           {"seconds", run.seconds}, {"first_plan", run.first_plan}, {"max_rss_kib", run.max_rss_kib},
           {"makespan", run.makespan}, {"value", run.value}, {"message", run.message},
-          {"plan_file", run.plan_file}, {"plans", plans_json(run.plans)}, {"external", external}};
+          {"plan_file", run.plan_file}, {"plans", plans_json(run.plans)}, {"engine", run.engine},
+          {"external", external}};
 }
 
 Run run_from_json(const nlohmann::json& j) {
@@ -134,6 +137,7 @@ Run run_from_json(const nlohmann::json& j) {
   run.value = j.at("value");
   run.message = j.at("message");
   run.plan_file = j.value("plan_file", "");
+  run.engine = j.value("engine", "");
   for (const nlohmann::json& p : j.value("plans", nlohmann::json::array())) {
     run.plans.push_back({p.at("seconds").get<double>(), p.at("value").get<double>()});
   }
@@ -258,7 +262,8 @@ struct MetricSums {
   bool maximize = false;
 };
 
-int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions& options, std::ostream& out);
+int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions& options,
+                         const ReferenceValues& references, std::ostream& out);
 
 }  // namespace
 
@@ -317,7 +322,7 @@ int run_planner_bench(const PlannerBenchOptions& options, std::ostream& out, std
   }
   // A reference file that cannot be read fails here, not after the runs
   // (a test-set run would be spent with nothing recorded).
-  reference_values(options);
+  const ReferenceValues references = reference_values(options);
   switch (options.array.role) {
     case ArrayRole::submit: {
       // The array's tasks and merge are one run: recorded when submitted,
@@ -335,14 +340,14 @@ int run_planner_bench(const PlannerBenchOptions& options, std::ostream& out, std
       return 0;
     case ArrayRole::merge:
       check_array_build(options.out_dir, options.test_set);
-      return report_planner_bench(merged_runs(suite, options), options, out);
+      return report_planner_bench(merged_runs(suite, options), options, references, out);
     case ArrayRole::local:
       break;
   }
   std::optional<TestSetRun> ledger = open_test_set_run(all, suite, options);
   std::filesystem::create_directories(plans_dir(options));
   const std::vector<Run> runs = run_locally(suite, options, progress);
-  const int invalid = report_planner_bench(runs, options, out);
+  const int invalid = report_planner_bench(runs, options, references, out);
   if (ledger) {
     nlohmann::json result = status_counts(runs);
     result["invalid"] = invalid;
@@ -445,8 +450,7 @@ ReferenceValues reference_values(const PlannerBenchOptions& options) {
 }
 
 void report_quality(const std::vector<Run>& runs, const Baseline& baseline, const PlannerBenchOptions& options,
-                    std::ostream& out) {
-  const ReferenceValues references = reference_values(options);
+                    const ReferenceValues& references, std::ostream& out) {
   std::vector<QualityRun> quality;
   for (const Run& run : runs) {
     quality.push_back({run.problem.domain, problem_key(run.problem.problem_file),
@@ -459,7 +463,8 @@ void report_quality(const std::vector<Run>& runs, const Baseline& baseline, cons
   write_quality_report(quality, references, report, out);
 }
 
-int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions& options, std::ostream& out) {
+int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions& options,
+                         const ReferenceValues& references, std::ostream& out) {
   std::vector<ProblemRuns> others;
   for (const Run& run : runs) others.push_back({run.problem.problem_file, run.external});
   const Baseline baseline = compared_planners(options.baseline, options.external, others);
@@ -542,7 +547,7 @@ int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions
                     {"max_rss_kib", run.max_rss_kib}, {"makespan", run.makespan}, {"value", run.value},
                     {"reference", reference ? nlohmann::json(*reference) : nlohmann::json()},
                     {"message", run.message}, {"plan_file", run.plan_file}, {"plans", plans_json(run.plans)},
-                    {"external", external}});
+                    {"engine", run.engine}, {"external", external}});
   }
   const Table summary = summary_table(scores, baseline);
   summary.print(out);
@@ -551,7 +556,7 @@ int report_planner_bench(const std::vector<Run>& runs, const PlannerBenchOptions
     out << "\n";
     metric.print(out);
   }
-  report_quality(runs, baseline, options, out);
+  report_quality(runs, baseline, options, references, out);
   out << "\ninvalid plans: " << invalid << "\n";
   // How well the planner keeps its limit: the process's wall time beyond it
   // (the runner kills at the limit + 5 s, so no overrun shows more).

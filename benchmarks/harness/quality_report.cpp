@@ -6,7 +6,6 @@
 #include <fstream>
 #include <optional>
 #include <ostream>
-#include <sstream>
 #include <stdexcept>
 
 #include "benchmarks/harness/baseline.h"
@@ -15,18 +14,6 @@
 
 namespace alplan::bench {
 namespace {
-
-std::optional<double> number_in(const std::string& cell) {
-  if (cell.empty()) return std::nullopt;
-  try {
-    std::size_t used = 0;
-    const double v = std::stod(cell, &used);
-    if (used != cell.size() || !std::isfinite(v)) return std::nullopt;
-    return v;
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-}
 
 // Everything known of one problem: our plans, the references, the best.
 struct ProblemQuality {
@@ -198,7 +185,7 @@ void add_reference_file(ReferenceValues& references, const std::string& csv_file
     if (cells.size() <= problem_at) continue;
     const std::string problem = problem_key(cells[problem_at]);
     for (std::size_t c = 0; c < cells.size() && c < header.size(); ++c) {
-      const std::optional<double> v = number_in(cells[c]);
+      const std::optional<double> v = csv_number(cells[c]);
       if (!v) continue;
       if (best_at && c == *best_at) references.best[problem] = *v;
       else if (!names[c].empty()) references.values[problem][names[c]] = *v;
@@ -228,11 +215,8 @@ void write_quality_report(const std::vector<QualityRun>& runs, const ReferenceVa
   if (options.out_dir.empty()) return;
   const std::vector<double> grid = quality_time_grid(options.time_limit);
   const std::vector<Series> series = over_time(problems, references, grid);
-  std::ofstream(options.out_dir + "/quality.csv") << [&] {
-    std::ostringstream s;
-    problem_table(problems, references).write_csv(s);
-    return s.str();
-  }();
+  std::ofstream csv(options.out_dir + "/quality.csv");
+  problem_table(problems, references).write_csv(csv);
   std::ofstream md(options.out_dir + "/quality.md");
   domains.print_markdown(md);
   std::ofstream time_csv(options.out_dir + "/quality_over_time.csv");

@@ -1,9 +1,11 @@
 #include "benchmarks/harness/table.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <ostream>
 #include <sstream>
+#include <stdexcept>
 
 namespace alplan::bench {
 
@@ -70,6 +72,18 @@ std::vector<std::string> csv_cells(const std::string& text) {
   for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
   if (!line.empty() && line.back() == ',') cells.emplace_back();
   return cells;
+}
+
+std::optional<double> csv_number(const std::string& cell) {
+  if (cell.empty()) return std::nullopt;
+  try {
+    std::size_t used = 0;
+    const double v = std::stod(cell, &used);
+    if (used != cell.size() || !std::isfinite(v)) return std::nullopt;
+    return v;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
 }
 
 }  // namespace alplan::bench

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,9 @@ class Table {
 // The cells of one CSV line (no quoting: the harness's files have none); a
 // trailing comma is an empty last cell, a trailing carriage return is no part of it.
 std::vector<std::string> csv_cells(const std::string& line);
+
+// A CSV cell as a finite number; nullopt for an empty cell or anything else.
+std::optional<double> csv_number(const std::string& cell);
 
 // Fixed-point text with `decimals` digits.
 std::string fixed(double value, int decimals);
