@@ -13,11 +13,14 @@ namespace {
 struct Entry {
   double f;
   double h;
+  // The node's makespan bound with BestFirstOptions::makespan_ties, else 0.
+  double makespan;
   std::uint64_t order;  // first in, first out among equals
   NodeId node;
   bool operator>(const Entry& o) const {
     if (f != o.f) return f > o.f;
     if (h != o.h) return h > o.h;
+    if (makespan != o.makespan) return makespan > o.makespan;
     return order > o.order;
   }
 };
@@ -42,6 +45,7 @@ class BestFirstSearch : public SearchEngine {
     if (type_exploration_) traits += ", type-based";
     if (novelty_) traits += ", novelty";
     if (options_.complete) traits += ", complete";
+    if (options_.makespan_ties) traits += ", makespan ties";
     if (options_.weight == 0) return traits.empty() ? "gbfs" : "gbfs (" + traits.substr(2) + ")";
     std::ostringstream weight;  // 3, not 3.000000
     weight << options_.weight;
@@ -148,7 +152,7 @@ class BestFirstSearch : public SearchEngine {
     } else if (novelty_ && n.h != std::numeric_limits<double>::infinity()) {
       f = novelties_.novelty(n.h, n.state);
     }
-    const Entry entry{f, n.h, order_++, id};
+    const Entry entry{f, n.h, options_.makespan_ties ? n.makespan_bound : 0.0, order_++, id};
     open_.push(entry);
     if (preferred && options_.preferred_queue) preferred_.push(entry);
     if (type_exploration_ && n.h != std::numeric_limits<double>::infinity()) types_.push(n.h, n.depth, id);

@@ -4,12 +4,14 @@
 //
 //   configuration := engine
 //   engine        := ehc(HEURISTIC, expansions=N, time_share=F, goal_orders=B, children=makespan|listed)
-//                  | gbfs(HEURISTIC, queue=plain|typed, novelty=0|1|2, deferred=B, preferred=B, goal_orders=B)
-//                  | wastar(HEURISTIC, w=W, order=steps|metric, deferred=B, preferred=B)
+//                  | gbfs(HEURISTIC, queue=plain|typed, novelty=0|1|2, deferred=B, preferred=B, goal_orders=B,
+//                         ties=fifo|makespan)
+//                  | wastar(HEURISTIC, w=W, order=steps|metric, deferred=B, preferred=B, ties=fifo|makespan)
 //                  | complete(ENGINE)               a gbfs or wastar that misses no plan
 //                  | portfolio(ENGINE, ..., turns=expansions|evaluations)  leaf engines taking turns
 //                  | then(ENGINE, ENGINE, ...)      phases: the next runs when one gives up
-//                  | anytime(ENGINE, weights=[W, ...], expansions=N, order=steps|metric)
+//                  | anytime(ENGINE, weights=[W, ...], expansions=N, order=steps|metric, ties=fifo|makespan,
+//                            improve=neighbourhood(by=states|actions, depth=D, max_depth=M))
 //                  | preferences(ENGINE, rounds=B)  PDDL 3 (preference_search.h); outermost only
 //   HEURISTIC     := trpg(helpful=B, repetitions=B, balance=B) | blind | lmcut
 //
@@ -59,7 +61,9 @@ struct HeuristicSpec {
 };
 
 struct EngineSpec {
-  enum class Kind { Ehc, Gbfs, Wastar, Portfolio, Then, Anytime, Preferences };
+  // Neighbourhood is never written alone: anytime's improve= makes one
+  // (search_pipeline.cpp) from neighbourhood_depth.
+  enum class Kind { Ehc, Gbfs, Wastar, Portfolio, Then, Anytime, Preferences, Neighbourhood };
   Kind kind = Kind::Ehc;
   HeuristicSpec heuristic;
   // A phase's budget: past so many expansions (0: no bound), or this share
@@ -76,6 +80,7 @@ struct EngineSpec {
   double weight = 3.0;       // wastar
   bool metric_order = false; // wastar, anytime: order by the metric, not steps
   bool complete = false;     // gbfs, wastar: miss no plan
+  bool makespan_ties = false; // gbfs, wastar, anytime: ties in f and h to the smaller makespan bound (BestFirstOptions)
   // A portfolio member's turns (gbfs, wastar): after its first
   // `share_after` expansions it takes its turn only while its expansions are
   // under `share` times the portfolio's (1: an equal turn always). Counted
@@ -88,6 +93,12 @@ struct EngineSpec {
   // preferences: in anytime mode, rounds that enforce one more preference each
   bool rounds = true;
   std::vector<double> weights;           // anytime
+  // anytime: improve=neighbourhood(by=states|actions, depth=D, max_depth=M)
+  // searches around each new best plan (plan_neighbourhood_search.h) before
+  // the weighted A* phases, again while it improves; depth 0: none.
+  int neighbourhood_depth = 0;
+  int neighbourhood_max_depth = 4;
+  bool neighbourhood_actions = false;  // by=actions
   // anytime: its weights search with `heuristic` instead of the heuristic
   // of the first search's first engine (heuristic=H).
   bool own_heuristic = false;
@@ -130,6 +141,9 @@ struct DefaultSearchKnobs {
   double complete_share = 0.02;              // the complete member's share of the portfolio's expansions
   std::uint64_t complete_share_after = 1000;  // after its first expansions at an equal turn
   bool deferred = false;  // every greedy and weighted A* search evaluates when it expands
+  // The plain greedy search and weighted A* break ties in h by makespan
+  // (ties=makespan); the typed and novelty members keep first in, first out.
+  bool makespan_ties = true;
   HeuristicSpec heuristic;
 };
 std::string default_expression(const DefaultSearchKnobs& knobs = {});

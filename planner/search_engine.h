@@ -65,6 +65,14 @@ struct BestFirstOptions {
   // within the node's h (planner/novelty_table.h), instead of by h alone.
   bool novelty = false;
   int novelty_width = 1;
+  // Among nodes equal in f and h, the one whose plan can end soonest goes
+  // first: its makespan bound, the partial plan's makespan or the time the
+  // relaxation reaches the goals (the relaxed plan's critical path, which
+  // OPTIC and TFD read for makespan). With h a count of snaps, ties are
+  // the rule (a step that waits for a long action counts as one that does
+  // not), and first in, first out among them chains steps in the order they
+  // were generated, as EHC did before EhcOptions::makespan_first.
+  bool makespan_ties = false;
   // A search that must not miss a plan: every node is tested for the goal
   // (not only where h = 0, which a heuristic that is not goal-aware could
   // hide), and no queue draws at random. Its search space must keep what it

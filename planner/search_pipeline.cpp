@@ -7,6 +7,7 @@
 
 #include "planner/address_space.h"
 #include "planner/formula_evaluation.h"
+#include "planner/plan_neighbourhood_search.h"
 
 namespace alplan {
 namespace {
@@ -23,6 +24,8 @@ struct Phase {
   std::uint64_t expansions = 0;     // 0: no budget
   double time_share = 1.0;          // of the time limit; 1: no budget
   bool improving = false;           // an anytime phase, after a first plan
+  // Run again on each better plan it finds (plan-neighbourhood search).
+  bool repeat_while_improving = false;
 };
 
 const EngineSpec& first_leaf(const EngineSpec& e) { return e.children.empty() ? e : first_leaf(e.children.front()); }
@@ -38,6 +41,17 @@ void flatten(const EngineSpec& e, std::vector<Phase>& phases) {
     case K::Preferences: flatten(e.children.front(), phases); return;
     case K::Anytime: {
       flatten(e.children.front(), phases);
+      if (e.neighbourhood_depth > 0) {
+        EngineSpec neighbourhood;
+        neighbourhood.kind = K::Neighbourhood;
+        neighbourhood.heuristic = e.own_heuristic ? e.heuristic : first_leaf(e.children.front()).heuristic;
+        neighbourhood.neighbourhood_depth = e.neighbourhood_depth;
+        neighbourhood.neighbourhood_max_depth = e.neighbourhood_max_depth;
+        neighbourhood.neighbourhood_actions = e.neighbourhood_actions;
+        Phase phase{{neighbourhood}, false, 0, 1.0, true};
+        phase.repeat_while_improving = true;
+        phases.push_back(std::move(phase));
+      }
       for (double w : e.weights) {
         EngineSpec weighted;
         weighted.kind = K::Wastar;
@@ -45,6 +59,7 @@ void flatten(const EngineSpec& e, std::vector<Phase>& phases) {
         weighted.weight = w;
         weighted.metric_order = e.metric_order;
         weighted.deferred = e.deferred;
+        weighted.makespan_ties = e.makespan_ties;
         phases.push_back({{weighted}, false, e.expansions, 1.0, true});
       }
       return;
@@ -71,9 +86,19 @@ struct StoppedSearch {
 };
 
 std::unique_ptr<SearchEngine> make_engine(const EngineSpec& spec, SearchSpace& space, const PipelineContext& context,
-                                          const NodeBound& bound) {
+                                          const NodeBound& bound, const Solution* incumbent) {
   const bool metric_order = spec.kind == EngineSpec::Kind::Wastar && spec.metric_order && context.metric;
   Heuristic& heuristic = context.heuristic(spec.heuristic, metric_order);
+  if (spec.kind == EngineSpec::Kind::Neighbourhood) {
+    NeighbourhoodOptions options;
+    options.depth = spec.neighbourhood_depth;
+    options.max_depth = spec.neighbourhood_max_depth;
+    options.kind = spec.neighbourhood_actions ? NeighbourhoodOptions::Kind::Actions : NeighbourhoodOptions::Kind::States;
+    options.prune = bound;
+    options.deadline = context.limits.deadline;
+    return make_plan_neighbourhood_search(context.index, context.start, context.limits.epsilon, heuristic, *incumbent,
+                                          std::move(options));
+  }
   if (spec.kind == EngineSpec::Kind::Ehc) {
     return make_enforced_hill_climbing(space, heuristic, {true, spec.makespan_first, context.limits.deadline});
   }
@@ -89,6 +114,7 @@ std::unique_ptr<SearchEngine> make_engine(const EngineSpec& spec, SearchSpace& s
   options.novelty = spec.novelty > 0 && spec.kind == EngineSpec::Kind::Gbfs;
   options.novelty_width = std::max(1, spec.novelty);
   options.complete = spec.complete;
+  options.makespan_ties = spec.makespan_ties;
   options.prune = bound;
   options.deadline = context.limits.deadline;
   return make_best_first_search(space, heuristic, options);
@@ -125,7 +151,8 @@ std::size_t least_evaluated(const Phase& phase, const std::vector<std::unique_pt
   return best == engines.size() ? 0 : best;
 }
 
-PhaseOutcome run_phase(const Phase& phase, const PipelineContext& context, const NodeBound& bound) {
+PhaseOutcome run_phase(const Phase& phase, const PipelineContext& context, const NodeBound& bound,
+                       const Solution* incumbent) {
   std::vector<std::unique_ptr<SearchSpace>> spaces;
   std::vector<std::unique_ptr<SearchEngine>> engines;
   for (const EngineSpec& spec : phase.engines) {
@@ -133,7 +160,7 @@ PhaseOutcome run_phase(const Phase& phase, const PipelineContext& context, const
     if (spec.complete) space_options = {true, true, true, true};
     spaces.push_back(std::make_unique<SearchSpace>(context.index, context.start, context.limits.epsilon, space_options));
     if (spec.goal_orders && context.orders && !context.orders->empty()) spaces.back()->prune_by(context.orders);
-    engines.push_back(make_engine(spec, *spaces.back(), context, bound));
+    engines.push_back(make_engine(spec, *spaces.back(), context, bound, incumbent));
   }
   const double time_budget = phase.time_share < 1.0 && std::isfinite(context.limits.time_limit)
                                  ? phase.time_share * context.limits.time_limit
@@ -534,10 +561,16 @@ PipelineOutcome run_pipeline(const SearchConfiguration& configuration, const Pip
   result.not_proven = "no complete search ran to the end";
   double best_value = std::numeric_limits<double>::infinity();
   bool found = false;
-  for (const Phase& phase : phases) {
+  std::optional<Solution> incumbent;  // the best plan so far, as the search found it
+  for (std::size_t p = 0; p < phases.size(); ++p) {
+    const Phase& phase = phases[p];
     if (found && !phase.improving) continue;  // the first plan is in; anytime phases go on
+    const bool needs_incumbent = std::any_of(phase.engines.begin(), phase.engines.end(), [](const EngineSpec& e) {
+      return e.kind == EngineSpec::Kind::Neighbourhood;
+    });
+    if (needs_incumbent && !incumbent) continue;
     const NodeBound bound = found ? bound_by(context, best_value) : NodeBound{};
-    const PhaseOutcome outcome = run_phase(phase, context, bound);
+    const PhaseOutcome outcome = run_phase(phase, context, bound, incumbent ? &*incumbent : nullptr);
     result.statistics += outcome.statistics;
     if (outcome.budget_spent) continue;
     if (outcome.status == SearchStatus::InProgress) {
@@ -575,8 +608,15 @@ PipelineOutcome run_pipeline(const SearchConfiguration& configuration, const Pip
         value->objective
             ? value->value - (std::isfinite(at_search) ? std::max(0.0, value->printed - at_search) : 0.0)
             : std::min(value->value, at_search);
-    if (!found || measured < best_value) best_value = measured;
+    const bool improved = !found || measured < best_value;
+    if (improved) {
+      best_value = measured;
+      incumbent = outcome.solution;
+    }
     found = true;
+    // Plan-neighbourhood search goes on from its own better plan, as
+    // Nakhost & Müller's loop does, until a round finds nothing better.
+    if (improved && phase.repeat_while_improving) --p;
   }
   return result;
 }

@@ -53,6 +53,12 @@ TEST_CASE("the default configuration is EHC, then its fallback portfolio with a 
   CHECK(fallback.children[2].deferred);
   CHECK(fallback.children[3].kind == K::Wastar);
   CHECK(fallback.children[3].weight == 3.0);
+  // Ties in h by makespan in the plain greedy search and weighted A* only.
+  CHECK(fallback.children[0].makespan_ties);
+  CHECK(fallback.children[3].makespan_ties);
+  CHECK_FALSE(fallback.children[1].makespan_ties);
+  CHECK_FALSE(fallback.children[2].makespan_ties);
+  CHECK_FALSE(fallback.children[4].makespan_ties);
   CHECK_FALSE(fallback.children[3].complete);
   // The complete search is a member, not a phase after the portfolio: the
   // others may never exhaust (differential tester, task 4294967418).
@@ -118,7 +124,36 @@ TEST_CASE("components take their options by name") {
   CHECK(parse_search_configuration("ehc(trpg, children=makespan)").engine.makespan_first);
 }
 
+TEST_CASE("ties by makespan and the neighbourhood improvement are options that print back") {
+  const EngineSpec greedy = parse_search_configuration("gbfs(trpg, ties=makespan)").engine;
+  CHECK(greedy.makespan_ties);
+  CHECK(SearchConfiguration{greedy}.to_string() == "gbfs(trpg, ties=makespan)");
+  CHECK_FALSE(parse_search_configuration("wastar(trpg, ties=fifo)").engine.makespan_ties);
+  const EngineSpec improving =
+      parse_search_configuration("anytime(gbfs, weights=[2], ties=makespan, improve=neighbourhood(by=actions))").engine;
+  CHECK(improving.makespan_ties);
+  CHECK(improving.neighbourhood_depth == 1);
+  CHECK(improving.neighbourhood_actions);
+  CHECK(SearchConfiguration{improving}.to_string() ==
+        "anytime(gbfs(trpg), weights=[2], ties=makespan, improve=neighbourhood(by=actions, depth=1, max_depth=4))");
+  CHECK(parse_search_configuration(SearchConfiguration{improving}.to_string()).engine == improving);
+  const EngineSpec states =
+      parse_search_configuration("anytime(gbfs, improve=neighbourhood(depth=2, max_depth=8))").engine;
+  CHECK_FALSE(states.neighbourhood_actions);
+  CHECK(states.neighbourhood_depth == 2);
+  CHECK(states.neighbourhood_max_depth == 8);
+  CHECK(parse_search_configuration("anytime(gbfs)").engine.neighbourhood_depth == 0);
+}
+
 TEST_CASE("a malformed configuration is refused with its place and what was expected") {
+  CHECK(error_of("gbfs(trpg, ties=random)").find("ties is fifo or makespan") != std::string::npos);
+  CHECK(error_of("ehc(trpg, ties=makespan)").find("ehc has no option 'ties'") != std::string::npos);
+  CHECK(error_of("anytime(gbfs, improve=gbfs)").find("improve is neighbourhood") != std::string::npos);
+  CHECK(error_of("anytime(gbfs, improve=neighbourhood(by=plans))").find("by is states or actions") != std::string::npos);
+  CHECK(error_of("anytime(gbfs, improve=neighbourhood(depth=4, max_depth=2))").find("max_depth is below depth") !=
+        std::string::npos);
+  CHECK(error_of("anytime(gbfs, improve=neighbourhood(width=2))").find("neighbourhood has no option 'width'") !=
+        std::string::npos);
   CHECK(error_of("gbfs(trpg, queue=typed").find("character 23") != std::string::npos);
   CHECK(error_of("gbfs(trpg, queue=typed").find("expected ')'") != std::string::npos);
   CHECK(error_of("dfs").find("unknown engine 'dfs'") != std::string::npos);
