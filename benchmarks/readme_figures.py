@@ -34,8 +34,9 @@ from figures.common import HERE, check_nearest_rank
 from figures.differential import FUZZ_SEEDS, differential_block, oracle_against_val_block
 from figures.home_fleet import home_fleet_block
 from figures.ledger import test_set_ledger_block
-from figures.quality import (QUALITY_FIRST, QUALITY_FIRST_BEFORE, anytime_block, first_plans_block, openstacks_block,
-                             openstacks_test_block, suite_pair_block)
+from figures.quality import (OPENSTACKS_NEIGHBOURHOOD, QUALITY_FIRST, QUALITY_FIRST_BEFORE, TIES_ADOPTED, anytime_block,
+                             first_plans_block, openstacks_block, openstacks_test_block, suite_pair_block,
+                             variants_block)
 from figures.pddl3 import (PDDL3_ISSUE44_ANYTIME, PDDL3_ISSUE44_ANYTIME_D11691A, PDDL3_ISSUE44_FIRST,
                            pddl3_against_optic_block, pddl3_classical_block)
 from figures.repair_study import HELD_OUT, SCATTERED, camera_search, study_mix, study_switch, study_wins, tags_by_scatter
@@ -89,6 +90,9 @@ BLOCKS = {
     "quality-suite": suite_pair_block,
     "quality-anytime": anytime_block,
     "quality-openstacks": openstacks_block,
+    "quality-ties-variants": variants_block,
+    "quality-first-ties": lambda: first_plans_block(TIES_ADOPTED),
+    "quality-openstacks-neighbourhood": lambda: openstacks_block(anytime=OPENSTACKS_NEIGHBOURHOOD),
     "quality-openstacks-test": openstacks_test_block,
 }
 

@@ -1,5 +1,6 @@
 #include "planner/plan_neighbourhood_search.h"
 
+#include <algorithm>
 #include <deque>
 #include <unordered_set>
 #include <utility>
@@ -28,6 +29,10 @@ class PlanNeighbourhoodSearch : public SearchEngine {
     return std::string("neighbourhood (") + kind + ", depth " + std::to_string(depth_) + ")";
   }
 
+  std::size_t stored_elsewhere() const override {
+    return states_.size() + (explored_ ? explored_->size() : 0) + (searched_ ? searched_->size() : 0);
+  }
+
   SearchStatus step() override {
     switch (stage_) {
       case Stage::Replay: replay(); return SearchStatus::InProgress;
@@ -43,6 +48,7 @@ class PlanNeighbourhoodSearch : public SearchEngine {
   // The incumbent's steps again from the start, in a space of their own:
   // their states are the trajectory, and each is explored `depth_` deep.
   void replay() {
+    explored_nodes_ = 0;
     explored_ = std::make_unique<SearchSpace>(index_, start_, epsilon_);
     states_.clear();
     neighbourhood_.clear();
@@ -72,7 +78,9 @@ class PlanNeighbourhoodSearch : public SearchEngine {
 
   // One trajectory or neighbourhood node's children join the neighbourhood.
   void explore_one() {
-    if (frontier_.empty() || passed(options_.deadline)) {
+    // The exploration shares the round's budget: its breadth-first layers
+    // grow exponentially with the depth.
+    if (frontier_.empty() || passed(options_.deadline) || ++explored_nodes_ > round_budget()) {
       start_search();
       return;
     }
@@ -102,7 +110,6 @@ class PlanNeighbourhoodSearch : public SearchEngine {
     };
     inner_ = make_best_first_search(*searched_, heuristic_, std::move(best));
     inner_stats_ = {};
-    round_budget_ = std::max<std::uint64_t>(1000, options_.expansions_per_step * incumbent_.size());
     stage_ = Stage::Search;
   }
 
@@ -115,7 +122,7 @@ class PlanNeighbourhoodSearch : public SearchEngine {
       solution_ = inner_->solution();
       return status;
     }
-    if (status == SearchStatus::InProgress && now.expanded <= round_budget_) return status;
+    if (status == SearchStatus::InProgress && explored_nodes_ + now.expanded <= round_budget()) return status;
     // Nothing better within this depth: a wider neighbourhood, or the end.
     inner_.reset();
     searched_.reset();
@@ -125,6 +132,10 @@ class PlanNeighbourhoodSearch : public SearchEngine {
     depth_ = std::min(options_.max_depth, depth_ * 2);
     stage_ = Stage::Replay;
     return SearchStatus::InProgress;
+  }
+
+  std::uint64_t round_budget() const {
+    return std::max<std::uint64_t>(1000, options_.expansions_per_step * incumbent_.size());
   }
 
   static SearchStatistics difference(const SearchStatistics& a, const SearchStatistics& b) {
@@ -150,6 +161,8 @@ class PlanNeighbourhoodSearch : public SearchEngine {
   const SearchStart& start_;
   double epsilon_;
   Heuristic& heuristic_;
+  // Compared by value only: their `continuous` pointers belong to the
+  // space that found the plan, gone by now, and are never read.
   std::vector<StepRecord> incumbent_;
   std::unordered_set<std::uint32_t> actions_;
   NeighbourhoodOptions options_;
@@ -162,7 +175,7 @@ class PlanNeighbourhoodSearch : public SearchEngine {
   std::unique_ptr<SearchSpace> searched_;  // declared before the engine that refers to it
   std::unique_ptr<SearchEngine> inner_;
   SearchStatistics inner_stats_;
-  std::uint64_t round_budget_ = 0;
+  std::uint64_t explored_nodes_ = 0;  // this round's, before the search
 };
 
 }  // namespace

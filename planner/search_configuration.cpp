@@ -282,6 +282,7 @@ void neighbourhood_of(const Call::Argument& a, EngineSpec& e) {
     fail_at(a.at, "improve is neighbourhood(by=states|actions, depth=D, max_depth=M)");
   }
   e.neighbourhood_depth = 1;
+  bool max_given = false;
   for (const Call::Argument& o : a.call->arguments) {
     if (o.key == "by") {
       if (!o.call || (o.call->name != "states" && o.call->name != "actions")) fail_at(o.at, "by is states or actions");
@@ -289,10 +290,14 @@ void neighbourhood_of(const Call::Argument& a, EngineSpec& e) {
       continue;
     }
     if (o.key != "depth" && o.key != "max_depth") fail_at(o.at, "neighbourhood has no option '" + o.key + "'");
+    // A neighbourhood grows exponentially with its depth: past 8 one round
+    // would take any time limit whole.
     const double n = number(o, 1);
-    if (n != static_cast<int>(n) || n > 64) fail_at(o.at, o.key + " is a whole number from 1 to 64");
+    if (n > 8 || n != std::floor(n)) fail_at(o.at, o.key + " is a whole number from 1 to 8");
     (o.key == "depth" ? e.neighbourhood_depth : e.neighbourhood_max_depth) = static_cast<int>(n);
+    max_given = max_given || o.key == "max_depth";
   }
+  if (!max_given) e.neighbourhood_max_depth = std::max(e.neighbourhood_max_depth, e.neighbourhood_depth);
   if (e.neighbourhood_max_depth < e.neighbourhood_depth) fail_at(a.at, "max_depth is below depth");
 }
 
@@ -567,7 +572,16 @@ SearchConfiguration with_anytime(const SearchConfiguration& configuration, doubl
   const SearchConfiguration first{anytime ? e.children.front() : e};
   SearchConfiguration result =
       parse_search_configuration(anytime_expression(first.to_string(), min_weight, expansions, anytime && e.metric_order));
-  if (anytime) result.engine.deferred = e.deferred;
+  // The anytime's own options survive the new weights.
+  if (anytime) {
+    result.engine.deferred = e.deferred;
+    result.engine.makespan_ties = e.makespan_ties;
+    result.engine.neighbourhood_depth = e.neighbourhood_depth;
+    result.engine.neighbourhood_max_depth = e.neighbourhood_max_depth;
+    result.engine.neighbourhood_actions = e.neighbourhood_actions;
+    result.engine.own_heuristic = e.own_heuristic;
+    if (e.own_heuristic) result.engine.heuristic = e.heuristic;
+  }
   return result;
 }
 

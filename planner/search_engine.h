@@ -36,6 +36,9 @@ class SearchEngine {
   virtual std::string name() const = 0;
   const std::optional<Solution>& solution() const { return solution_; }
   const SearchStatistics& statistics() const { return stats_; }
+  // Nodes the engine stores in spaces of its own, beyond the space it was
+  // given (counted against the node limit).
+  virtual std::size_t stored_elsewhere() const { return 0; }
 
  protected:
   std::optional<Solution> solution_;

@@ -181,7 +181,7 @@ PhaseOutcome run_phase(const Phase& phase, const PipelineContext& context, const
       std::size_t nodes = 0;
       std::uint64_t expanded = 0;
       for (std::size_t e = 0; e < engines.size(); ++e) {
-        nodes += spaces[e]->size();
+        nodes += spaces[e]->size() + engines[e]->stored_elsewhere();
         expanded += engines[e]->statistics().expanded;
       }
       // A search stopped by a limit keeps its memory (freed when the
@@ -560,8 +560,9 @@ PipelineOutcome run_pipeline(const SearchConfiguration& configuration, const Pip
   PipelineOutcome result;
   result.not_proven = "no complete search ran to the end";
   double best_value = std::numeric_limits<double>::infinity();
+  double best_printed = std::numeric_limits<double>::infinity();
   bool found = false;
-  std::optional<Solution> incumbent;  // the best plan so far, as the search found it
+  std::optional<Solution> incumbent;  // the best plan printed so far, as the search found it
   for (std::size_t p = 0; p < phases.size(); ++p) {
     const Phase& phase = phases[p];
     if (found && !phase.improving) continue;  // the first plan is in; anytime phases go on
@@ -608,9 +609,12 @@ PipelineOutcome run_pipeline(const SearchConfiguration& configuration, const Pip
         value->objective
             ? value->value - (std::isfinite(at_search) ? std::max(0.0, value->printed - at_search) : 0.0)
             : std::min(value->value, at_search);
-    const bool improved = !found || measured < best_value;
+    if (!found || measured < best_value) best_value = measured;
+    // The bound may fall on a plan whose printed value does not (its search
+    // times were shorter): the incumbent is the best plan printed.
+    const bool improved = !found || value->value < best_printed;
     if (improved) {
-      best_value = measured;
+      best_printed = value->value;
       incumbent = outcome.solution;
     }
     found = true;

@@ -1,7 +1,8 @@
 // Runs a search configuration (search_configuration.h) on one task. The
 // configuration becomes a list of phases: the phases of a `then` in order,
-// then, in anytime mode, weighted A* with each weight under the best plan's
-// value. A phase is one leaf engine or a portfolio of them taking turns, one
+// then, in anytime mode, a search around the best plan when `improve=`
+// asks for one (plan_neighbourhood_search.h; again around each better plan
+// it finds), and weighted A* with each weight under the best plan's value. A phase is one leaf engine or a portfolio of them taking turns, one
 // expansion each, in a search space of its own. A phase ends with a plan, by
 // exhaustion, by its budget (the next phase runs) or at a limit (the run
 // stops). Once a plan is found the first phases stop; anytime phases go on.

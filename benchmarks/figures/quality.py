@@ -177,12 +177,9 @@ def openstacks_block(first=OPENSTACKS_FIRST, anytime=OPENSTACKS_ANYTIME):
     return table(["problem", "OPTIC first", "ours first", "ours / OPTIC", "ours anytime 60 s"], rows)
 
 
-def suite_pair_block(before=QUALITY_FIRST_BEFORE, after=QUALITY_FIRST):
-    """Two runs of the whole suite: coverage, invalid plans, problems whose
-    status changed, and first plans better or worse beyond a tie."""
-    a = {r["problem"]: r for r in all_runs_of(before)}
-    b = {r["problem"]: r for r in all_runs_of(after)}
-    changed = sorted(p for p in a if p in b and a[p]["status"] != b[p]["status"])
+def first_plan_changes(a, b):
+    """(better, equal, worse): problems both runs solve whose first plan in b
+    is better, within a tie, or worse than in a (runs by problem)."""
     better = worse = equal = 0
     for p in a:
         if p in b and a[p]["status"] == b[p]["status"] == "solved":
@@ -190,6 +187,16 @@ def suite_pair_block(before=QUALITY_FIRST_BEFORE, after=QUALITY_FIRST):
             better += d < -TIE
             worse += d > TIE
             equal += abs(d) <= TIE
+    return better, equal, worse
+
+
+def suite_pair_block(before=QUALITY_FIRST_BEFORE, after=QUALITY_FIRST):
+    """Two runs of the whole suite: coverage, invalid plans, problems whose
+    status changed, and first plans better or worse beyond a tie."""
+    a = {r["problem"]: r for r in all_runs_of(before)}
+    b = {r["problem"]: r for r in all_runs_of(after)}
+    changed = sorted(p for p in a if p in b and a[p]["status"] != b[p]["status"])
+    better, equal, worse = first_plan_changes(a, b)
     rows = [[before, f"{sum(r['status'] == 'solved' for r in a.values())}/{len(a)}",
              sum(r["status"] == "invalid" for r in a.values())],
             [after, f"{sum(r['status'] == 'solved' for r in b.values())}/{len(b)}",
@@ -217,3 +224,30 @@ def openstacks_test_block(first=OPENSTACKS_TEST_FIRST, anytime=OPENSTACKS_TEST_A
                      f"{f_value:.3f}" if f_value is not None else "-",
                      f"{a_value:.3f}" if a_value is not None else "-"])
     return table(["problem", "status", "ours first", "ours anytime 60 s"], rows)
+
+
+# Ties by makespan (2026-12-08): three variants of the default's fallback
+# on instances 1-5, each against the default of issue48 (tuning runs).
+TIES_VARIANTS = [("A: every member", "ipc-first5-60s-ties-A-2026-12-08"),
+                 ("B: all but the novelty member", "ipc-first5-60s-ties-B-2026-12-08"),
+                 ("C: plain GBFS and weighted A* (adopted)", "ipc-first5-60s-ties-C-2026-12-08")]
+TIES_ADOPTED = "ipc-first5-60s-ties-C-2026-12-08"
+OPENSTACKS_NEIGHBOURHOOD = "openstacks-1-5-anytime-neighbourhood-2026-12-08"
+
+
+def variants_block(before=QUALITY_FIRST, variants=TIES_VARIANTS):
+    """Runs of the whole suite against one before: coverage, problems that
+    changed status, and first plans better, equal or worse beyond a tie."""
+    a = {r["problem"]: r for r in all_runs_of(before)}
+    rows = [[f"before ({before})", f"{sum(r['status'] == 'solved' for r in a.values())}/{len(a)}", "", "", "", "", ""]]
+    for name, folder in variants:
+        b = {r["problem"]: r for r in all_runs_of(folder)}
+        lost = sorted(os.path.basename(os.path.dirname(os.path.dirname(p))).split("-")[0] + " " +
+                      os.path.basename(p).split(".")[0].replace("instance-", "")
+                      for p in a if p in b and a[p]["status"] == "solved" != b[p]["status"])
+        gained = sum(1 for p in a if p in b and b[p]["status"] == "solved" != a[p]["status"])
+        better, equal, worse = first_plan_changes(a, b)
+        rows.append([name, f"{sum(r['status'] == 'solved' for r in b.values())}/{len(b)}", gained,
+                     ", ".join(lost) or "-", better, equal, worse])
+    return table(["fallback with ties=makespan in", "coverage", "gained", "lost", "first plan better", "equal",
+                  "worse"], rows)

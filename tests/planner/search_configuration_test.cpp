@@ -143,6 +143,14 @@ TEST_CASE("ties by makespan and the neighbourhood improvement are options that p
   CHECK(states.neighbourhood_depth == 2);
   CHECK(states.neighbourhood_max_depth == 8);
   CHECK(parse_search_configuration("anytime(gbfs)").engine.neighbourhood_depth == 0);
+  // Without max_depth the rounds may go at least as deep as the first.
+  CHECK(parse_search_configuration("anytime(gbfs, improve=neighbourhood(depth=8))").engine.neighbourhood_max_depth == 8);
+  // New weights keep the anytime's own options.
+  const SearchConfiguration rewritten = with_anytime(SearchConfiguration{improving}, 2.0);
+  CHECK(rewritten.engine.makespan_ties);
+  CHECK(rewritten.engine.neighbourhood_actions);
+  CHECK(rewritten.engine.neighbourhood_depth == 1);
+  CHECK(rewritten.engine.weights == std::vector<double>{5, 3, 2});
 }
 
 TEST_CASE("a malformed configuration is refused with its place and what was expected") {
@@ -151,6 +159,11 @@ TEST_CASE("a malformed configuration is refused with its place and what was expe
   CHECK(error_of("anytime(gbfs, improve=gbfs)").find("improve is neighbourhood") != std::string::npos);
   CHECK(error_of("anytime(gbfs, improve=neighbourhood(by=plans))").find("by is states or actions") != std::string::npos);
   CHECK(error_of("anytime(gbfs, improve=neighbourhood(depth=4, max_depth=2))").find("max_depth is below depth") !=
+        std::string::npos);
+  CHECK(error_of("anytime(gbfs, improve=neighbourhood(depth=9))").find("a whole number from 1 to 8") != std::string::npos);
+  CHECK(error_of("anytime(gbfs, improve=neighbourhood(depth=1e30))").find("a whole number from 1 to 8") !=
+        std::string::npos);
+  CHECK(error_of("anytime(gbfs, improve=neighbourhood(depth=1.5))").find("a whole number from 1 to 8") !=
         std::string::npos);
   CHECK(error_of("anytime(gbfs, improve=neighbourhood(width=2))").find("neighbourhood has no option 'width'") !=
         std::string::npos);
