@@ -34,7 +34,7 @@ from figures.common import HERE, check_nearest_rank
 from figures.differential import FUZZ_SEEDS, differential_block, oracle_against_val_block
 from figures.home_fleet import home_fleet_block
 from figures.ledger import test_set_ledger_block
-from figures.quality import (OPENSTACKS_NEIGHBOURHOOD, QUALITY_FIRST, QUALITY_FIRST_BEFORE, TIES_ADOPTED, anytime_block,
+from figures.quality import (COVERAGE_6_10_AFTER, COVERAGE_6_10_BEFORE, OPENSTACKS_NEIGHBOURHOOD, QUALITY_FIRST, QUALITY_FIRST_BEFORE, TIES_ADOPTED, anytime_block,
                              first_plans_block, openstacks_block, openstacks_test_block, suite_pair_block,
                              variants_block)
 from figures.pddl3 import (PDDL3_ISSUE44_ANYTIME, PDDL3_ISSUE44_ANYTIME_D11691A, PDDL3_ISSUE44_FIRST,
@@ -91,6 +91,7 @@ BLOCKS = {
     "quality-anytime": anytime_block,
     "quality-openstacks": openstacks_block,
     "quality-ties-variants": variants_block,
+    "coverage-6-10-issue48": lambda: suite_pair_block(COVERAGE_6_10_BEFORE, COVERAGE_6_10_AFTER),
     "quality-first-ties": lambda: first_plans_block(TIES_ADOPTED),
     "quality-openstacks-neighbourhood": lambda: openstacks_block(anytime=OPENSTACKS_NEIGHBOURHOOD),
     "quality-openstacks-test": openstacks_test_block,

@@ -251,3 +251,9 @@ def variants_block(before=QUALITY_FIRST, variants=TIES_VARIANTS):
                      ", ".join(lost) or "-", better, equal, worse])
     return table(["fallback with ties=makespan in", "coverage", "gained", "lost", "first plan better", "equal",
                   "worse"], rows)
+
+
+# The test set's coverage check for issue 48 (instances 6-10, whole suite,
+# each run once: the planner before the issue and after its changes).
+COVERAGE_6_10_BEFORE = "ipc-6-10-60s-before48-66d37ef-2026-12-08"
+COVERAGE_6_10_AFTER = "ipc-6-10-60s-after48-42f053b-2026-12-08"
