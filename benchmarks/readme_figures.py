@@ -93,7 +93,7 @@ BLOCKS = {
     "quality-ties-variants": variants_block,
     "coverage-6-10-issue48": lambda: suite_pair_block(COVERAGE_6_10_BEFORE, COVERAGE_6_10_AFTER),
     "quality-first-ties": lambda: first_plans_block(TIES_ADOPTED),
-    "quality-openstacks-neighbourhood": lambda: openstacks_block(anytime=OPENSTACKS_NEIGHBOURHOOD),
+    "quality-openstacks-neighbourhood": lambda: openstacks_block(OPENSTACKS_NEIGHBOURHOOD, OPENSTACKS_NEIGHBOURHOOD),
     "quality-openstacks-test": openstacks_test_block,
 }
 

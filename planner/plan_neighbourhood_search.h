@@ -9,14 +9,15 @@
 //   literals) in any order and number, or within `depth` of its trajectory.
 //   In a temporal plan the makespan is mostly the order of the same actions
 //   (openstacks: which orders start before which ship), which no state near
-//   the trajectory holds: on openstacks 2011 instance 1 the state
-//   neighbourhood of a 294-long plan, 1,765 states at depth 1 and 10,138 at
-//   depth 2, holds nothing shorter, the actions' reorderings a 261 (measured).
+//   the trajectory holds: on openstacks 2011 instance 1 the states within
+//   depth 2 of a 294-long plan hold nothing shorter, the actions' reorderings
+//   a 261 (plan_neighbourhood_search_test.cpp).
 // The search inside is weighted A* by steps (g = snaps, h = trpg's count),
-// ties to the smaller makespan bound, pruned by the anytime bound; ordered
-// by the metric it found nothing in either neighbourhood on that instance:
-// with g the makespan so far and h only the relaxed time still to come, it
-// widens breadth-first. A round has a budget of expansions (a multiple of
+// ties to the smaller makespan bound, pruned by the anytime bound. Ordered
+// by the metric it found nothing in either neighbourhood on that instance
+// (tried once while it was written; no test keeps that): with g the
+// makespan so far and h only the relaxed time still to come, it widens
+// breadth-first. A round has a budget of expansions (a multiple of
 // the incumbent's length): an action neighbourhood is as large as the task
 // with the plan's actions. Past `max_depth` or a round with nothing better
 // the engine is exhausted.

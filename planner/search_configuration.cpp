@@ -572,17 +572,13 @@ SearchConfiguration with_anytime(const SearchConfiguration& configuration, doubl
   const SearchConfiguration first{anytime ? e.children.front() : e};
   SearchConfiguration result =
       parse_search_configuration(anytime_expression(first.to_string(), min_weight, expansions, anytime && e.metric_order));
-  // The anytime's own options survive the new weights.
-  if (anytime) {
-    result.engine.deferred = e.deferred;
-    result.engine.makespan_ties = e.makespan_ties;
-    result.engine.neighbourhood_depth = e.neighbourhood_depth;
-    result.engine.neighbourhood_max_depth = e.neighbourhood_max_depth;
-    result.engine.neighbourhood_actions = e.neighbourhood_actions;
-    result.engine.own_heuristic = e.own_heuristic;
-    if (e.own_heuristic) result.engine.heuristic = e.heuristic;
-  }
-  return result;
+  if (!anytime) return result;
+  // Only the weights and their budget change: the anytime's own options
+  // (order, deferred, ties, improve, heuristic) stay as given.
+  SearchConfiguration kept = configuration;
+  kept.engine.weights = result.engine.weights;
+  kept.engine.expansions = result.engine.expansions;
+  return kept;
 }
 
 PreferencePlan preference_plan(const SearchConfiguration& configuration) {
